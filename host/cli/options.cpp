@@ -1,0 +1,87 @@
+// Command-line parsing for `vkrt`.
+#include "cli/options.h"
+
+#include <charconv>
+
+namespace vkrt {
+
+const char* usageText() {
+  return "usage: vkrt [options] SCENE.test\n"
+         "\n"
+         "Renders a CSE167 scene file to a PNG image.\n"
+         "\n"
+         "options:\n"
+         "  -o, --output FILE      write the image to FILE (overrides the scene's 'output')\n"
+         "  --backend cpu          renderer: 'cpu' (the double-precision reference)\n"
+         "  --threads N            worker threads for the CPU backend (default: all cores)\n"
+         "  --stats                print a timing breakdown and ray counts on stderr\n"
+         "  -q, --quiet            print nothing but errors\n"
+         "  -h, --help             show this help\n"
+         "  --version              show the version\n"
+         "\n"
+         "exit status: 0 ok, 1 usage error, 2 scene error, 3 device error, 4 I/O error\n";
+}
+
+Options parseOptions(const std::vector<std::string>& args) {
+  Options o;
+  std::optional<std::string> scene;
+  bool endOfOptions = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](const std::string& name) -> const std::string& {
+      if (i + 1 >= args.size()) throw UsageError("option " + name + " needs a value");
+      return args[++i];
+    };
+    // --name=value is accepted as well as --name value.
+    std::string name = a, inlineValue;
+    bool hasInline = false;
+    if (!endOfOptions && a.rfind("--", 0) == 0) {
+      auto eq = a.find('=');
+      if (eq != std::string::npos) {
+        name = a.substr(0, eq);
+        inlineValue = a.substr(eq + 1);
+        hasInline = true;
+      }
+    }
+    auto take = [&](const std::string& n) -> std::string { return hasInline ? inlineValue : value(n); };
+    if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
+      if (scene) throw UsageError("more than one scene file given ('" + *scene + "' and '" + a + "')");
+      scene = a;
+    } else if (a == "--") {
+      endOfOptions = true;
+    } else if (name == "-o" || name == "--output") {
+      o.request.output = take(name);
+      if (o.request.output->empty()) throw UsageError("option " + name + " needs a non-empty file name");
+    } else if (name == "--backend") {
+      std::string b = take(name);
+      if (b == "cpu")
+        o.request.backend = Backend::Cpu;
+      else
+        throw UsageError("unknown backend '" + b + "' (expected: cpu)");
+    } else if (name == "--threads") {
+      std::string v = take(name);
+      int n = 0;
+      auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+      if (ec != std::errc() || end != v.data() + v.size() || n < 1 || n > 1024)
+        throw UsageError("--threads expects an integer from 1 to 1024, got '" + v + "'");
+      o.request.threads = n;
+    } else if (a == "--stats") {
+      o.stats = true;
+    } else if (a == "-q" || a == "--quiet") {
+      o.quiet = true;
+    } else if (a == "-h" || a == "--help") {
+      o.help = true;
+    } else if (a == "--version") {
+      o.version = true;
+    } else {
+      throw UsageError("unknown option '" + a + "'");
+    }
+  }
+  if (!o.help && !o.version) {
+    if (!scene) throw UsageError("no scene file given");
+    o.request.scenePath = *scene;
+  }
+  return o;
+}
+
+}  // namespace vkrt

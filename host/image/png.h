@@ -1,0 +1,28 @@
+// PNG files: atomic writing (temporary file + rename) and reading (for tests and diffs).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "image/image.h"
+
+namespace vkrt {
+
+// A problem with files on disk: exit status 4.
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws IoError unless `path` can be created or replaced: its directory exists and is
+// writable, and `path` itself is not a directory.
+void checkOutputWritable(const std::string& path);
+
+// Writes `image` to a temporary file beside `path` and renames it over `path`, so an existing
+// file is replaced whole or not at all. Throws IoError; no temporary file is left behind.
+void writePngAtomic(const Image& image, const std::string& path);
+
+// Reads a PNG or JPEG as 8-bit RGB. Throws IoError.
+Image readImage(const std::string& path);
+
+}  // namespace vkrt

@@ -1,0 +1,73 @@
+// vkrt command line: parse arguments, call renderSceneFile(), turn exceptions into exit codes.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "cli/options.h"
+#include "image/png.h"
+#include "render/render.h"
+#include "scene/diagnostic.h"
+
+namespace {
+
+constexpr int kExitOk = 0, kExitUsage = 1, kExitScene = 2, kExitIo = 4;
+
+void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
+  double ms = 1e3;
+  std::fprintf(stderr,
+               "vkrt: %s %dx%d maxdepth %d: %zu triangles, %zu spheres, %zu lights; backend cpu, %d threads\n",
+               req.scenePath.c_str(), r.width, r.height, r.maxDepth, r.triangles, r.spheres, r.lights, r.threads);
+  std::fprintf(stderr, "  parse   %9.1f ms\n", r.parseSeconds * ms);
+  std::fprintf(stderr, "  build   %9.1f ms  (BVH, %zu nodes)\n", r.buildSeconds * ms, r.bvhNodes);
+  std::fprintf(stderr, "  render  %9.1f ms\n", r.renderSeconds * ms);
+  std::fprintf(stderr, "  write   %9.1f ms\n", r.writeSeconds * ms);
+  double mrays = r.renderSeconds > 0 ? static_cast<double>(r.rays.total()) / r.renderSeconds / 1e6 : 0.0;
+  std::fprintf(stderr, "  rays    %llu = primary %llu + shadow %llu + reflection %llu; %.1f Mrays/s\n",
+               static_cast<unsigned long long>(r.rays.total()), static_cast<unsigned long long>(r.rays.primary),
+               static_cast<unsigned long long>(r.rays.shadow), static_cast<unsigned long long>(r.rays.reflection),
+               mrays);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  vkrt::Options options;
+  try {
+    options = vkrt::parseOptions(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const vkrt::UsageError& e) {
+    std::fprintf(stderr, "vkrt: error: %s\n\n%s", e.what(), vkrt::usageText());
+    return kExitUsage;
+  }
+  if (options.help) {
+    std::fputs(vkrt::usageText(), stdout);
+    return kExitOk;
+  }
+  if (options.version) {
+    std::printf("vkrt %s\n", VKRT_VERSION);
+    return kExitOk;
+  }
+  try {
+    vkrt::ProgressBar progress(!options.quiet);
+    vkrt::RenderReport report = vkrt::renderSceneFile(options.request, progress);
+    if (options.stats) printStats(options.request, report);
+    if (!options.quiet) {
+      double total = report.parseSeconds + report.buildSeconds + report.renderSeconds + report.writeSeconds;
+      std::fprintf(stderr, "vkrt: wrote %s (%dx%d) in %.2f s\n", report.outputPath.c_str(), report.width,
+                   report.height, total);
+    }
+    return kExitOk;
+  } catch (const vkrt::SceneError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return kExitScene;
+  } catch (const vkrt::IoError& e) {
+    std::fprintf(stderr, "vkrt: error: %s\n", e.what());
+    return kExitIo;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "vkrt: error: out of memory\n");
+    return kExitIo;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "vkrt: internal error: %s\n", e.what());
+    return 70;
+  }
+}

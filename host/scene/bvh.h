@@ -1,0 +1,29 @@
+// Bounding volume hierarchy over a scene's triangles and spheres, built on the host with a
+// binned surface-area heuristic. Both backends traverse it; neither shares intersection code.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gpu_types.h"
+#include "scene/scene_desc.h"
+
+namespace vkrt {
+
+// Traversal stacks of this many entries never overflow (the builder bounds the depth).
+inline constexpr int kMaxBvhDepth = 96;
+
+struct Bvh {
+  // nodes[0] is the root. An interior node's children are adjacent (left, left + 1).
+  std::vector<gpu::GpuBvhNode> nodes;
+  // Leaf contents: triangle index, or sphere index | kPrimSphereBit.
+  std::vector<std::uint32_t> primRefs;
+};
+
+// World-space bounds of a sphere under its transform (exact for the ellipsoid).
+void sphereBounds(const Sphere& s, dvec3& lo, dvec3& hi);
+
+// Builds the hierarchy. An empty scene gives one empty leaf whose box contains nothing.
+Bvh buildBvh(const SceneDesc& scene);
+
+}  // namespace vkrt

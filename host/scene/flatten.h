@@ -1,0 +1,24 @@
+// SceneDesc -> GpuScene: the arrays the GPU reads, in the layouts of gpu_types.h (float32).
+#pragma once
+
+#include <vector>
+
+#include "gpu_types.h"
+#include "scene/bvh.h"
+#include "scene/scene_desc.h"
+
+namespace vkrt {
+
+struct GpuScene {
+  std::vector<gpu::GpuTriangle> triangles;
+  std::vector<gpu::GpuTriangleNormals> triangleNormals;   // only for `trinormal` triangles
+  std::vector<gpu::GpuSphere> spheres;
+  std::vector<gpu::GpuLight> lights;
+  std::vector<gpu::GpuMaterial> materials;
+  Bvh bvh;
+};
+
+// Converts to float32 layouts and builds the BVH.
+GpuScene flatten(const SceneDesc& scene);
+
+}  // namespace vkrt

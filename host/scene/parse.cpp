@@ -1,0 +1,490 @@
+// Scene file parser: .test text -> SceneDesc (SPEC sections 1, 2, 4 and 8).
+// Parser-only state (transform stack, current material, vertex lists) stays in this file.
+#include "scene/parse.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include <sys/stat.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/number.h"
+
+namespace vkrt {
+namespace {
+
+constexpr std::size_t kMaxDiagnostics = 50;
+constexpr int kMaxArgs = 10;   // camera has the most
+
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// Bytes that never occur in a text scene file: NUL and the C0 controls other than blanks.
+bool isBinaryByte(unsigned char c) { return c < 0x20 && !isBlank(static_cast<char>(c)) && c != '\n'; }
+
+struct VertexWithNormal {
+  dvec3 position;
+  dvec3 normal;
+};
+
+// Transform of normals: inverse transpose of the linear part. For a singular matrix (a
+// `scale 0`, whose triangles are degenerate anyway) the cofactor matrix keeps a direction.
+glm::dmat3 normalMatrix(const dmat4& m) {
+  glm::dmat3 a(m);
+  double det = glm::determinant(a);
+  if (det != 0.0) return glm::transpose(glm::inverse(a));
+  return glm::dmat3(glm::cross(a[1], a[2]), glm::cross(a[2], a[0]), glm::cross(a[0], a[1]));
+}
+
+class Parser {
+ public:
+  Parser(std::string_view text, const std::string& fileName) : text_(text) {
+    scene_.sourcePath = fileName;
+  }
+
+  SceneDesc run() {
+    if (checkIsText()) parseLines();
+    if (!diagnostics_.empty()) throw SceneError(std::move(diagnostics_));
+    return std::move(scene_);
+  }
+
+ private:
+  // A binary file would give an error per line: say once that it is not text, and where.
+  // The same pass counts the lines that start with "tri" and "vertex", to size the arrays.
+  bool checkIsText() {
+    int line = 1;
+    std::size_t lineStart = 0, tris = 0, vertices = 0;
+    auto startsWith = [&](std::size_t at, std::string_view word) { return text_.substr(at, word.size()) == word; };
+    for (std::size_t k = 0; k < text_.size(); ++k) {
+      unsigned char c = static_cast<unsigned char>(text_[k]);
+      if (k == lineStart) {
+        tris += c == 't' && startsWith(k, "tri");
+        vertices += c == 'v' && startsWith(k, "vertex");
+      }
+      if (c == '\n') {
+        ++line;
+        lineStart = k + 1;
+      } else if (isBinaryByte(c)) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02X", c);
+        errorAt(line, std::string("file is not text (byte ") + hex + " in column " +
+                          std::to_string(k - lineStart + 1) + "); expected a CSE167 scene file");
+        return false;
+      }
+    }
+    scene_.triangles.reserve(tris);
+    vertices_.reserve(vertices);
+    return true;
+  }
+
+  void parseLines() {
+    std::size_t pos = 0;
+    while (pos < text_.size() && !tooMany()) {
+      std::size_t end = text_.find('\n', pos);
+      if (end == std::string_view::npos) end = text_.size();
+      ++line_;
+      parseLine(text_.substr(pos, end - pos));
+      pos = end + 1;
+    }
+    if (!tooMany()) finish();
+  }
+
+  // ---- diagnostics --------------------------------------------------------------------------
+  bool tooMany() const { return diagnostics_.size() >= kMaxDiagnostics; }
+
+  void error(std::string message) { errorAt(line_, std::move(message)); }
+  void errorAt(int line, std::string message) {
+    if (tooMany()) return;
+    diagnostics_.push_back({scene_.sourcePath, line, std::move(message)});
+    if (tooMany())
+      diagnostics_.push_back({scene_.sourcePath, line, "too many errors; stopping here"});
+  }
+
+  // ---- one line -------------------------------------------------------------------------------
+  void parseLine(std::string_view line) {
+    std::string_view tokens[kMaxArgs + 2];
+    int count = 0;
+    std::size_t i = 0;
+    while (i < line.size()) {
+      if (isBlank(line[i])) {
+        ++i;
+        continue;
+      }
+      if (line[i] == '#') break;   // a comment: the whole line, or the rest of it
+      std::size_t start = i;
+      while (i < line.size() && !isBlank(line[i]) && line[i] != '#') ++i;
+      if (count < kMaxArgs + 2) tokens[count] = line.substr(start, i - start);
+      ++count;
+    }
+    if (count == 0) return;
+    std::string_view command = tokens[0];
+    args_ = tokens + 1;
+    argCount_ = count - 1;
+    dispatch(command);
+  }
+
+  void dispatch(std::string_view cmd) {
+    if (!sawSize_ && !sizeErrorReported_ && cmd != "size") {
+      error("'" + std::string(cmd) + "' before 'size': the size command must come first");
+      sizeErrorReported_ = true;
+    }
+    // The commands of big meshes first.
+    if (cmd == "vertex") return cmdVertex();
+    if (cmd == "tri") return cmdTri();
+    if (cmd == "size") return cmdSize();
+    if (cmd == "maxdepth") return cmdMaxDepth();
+    if (cmd == "output") return cmdOutput();
+    if (cmd == "camera") return cmdCamera();
+    if (cmd == "sphere") return cmdSphere();
+    if (cmd == "maxverts" || cmd == "maxvertnorms") return cmdSizeHint(cmd);
+    if (cmd == "vertex") return cmdVertex();
+    if (cmd == "vertexnormal") return cmdVertexNormal();
+    if (cmd == "tri") return cmdTri();
+    if (cmd == "trinormal") return cmdTriNormal();
+    if (cmd == "translate") return cmdTranslate();
+    if (cmd == "rotate") return cmdRotate();
+    if (cmd == "scale") return cmdScale();
+    if (cmd == "pushTransform") return cmdPush();
+    if (cmd == "popTransform") return cmdPop();
+    if (cmd == "directional" || cmd == "point") return cmdLight(cmd == "point");
+    if (cmd == "attenuation") return cmdAttenuation();
+    if (cmd == "ambient") return cmdColor(cmd, material_.ambient);
+    if (cmd == "diffuse") return cmdColor(cmd, material_.diffuse);
+    if (cmd == "specular") return cmdColor(cmd, material_.specular);
+    if (cmd == "emission") return cmdColor(cmd, material_.emission);
+    if (cmd == "shininess") return cmdShininess();
+    error("unknown command '" + std::string(cmd) + "'");
+  }
+
+  // ---- arguments --------------------------------------------------------------------------
+  // Checks the argument count and parses every argument as a finite number.
+  bool numbers(std::string_view cmd, int n, const char* usage, double* out) {
+    if (argCount_ != n) {
+      error("'" + std::string(cmd) + "' expects " + std::to_string(n) + " argument" + (n == 1 ? "" : "s") +
+            " (" + usage + "), got " + std::to_string(argCount_));
+      return false;
+    }
+    bool ok = true;
+    for (int k = 0; k < n; ++k) {
+      switch (parseNumber(args_[k], out[k])) {
+        case NumberStatus::Ok: break;
+        case NumberStatus::NotANumber:
+          error("'" + std::string(cmd) + "' argument " + std::to_string(k + 1) + ": expected a number, got '" +
+                std::string(args_[k]) + "'");
+          ok = false;
+          break;
+        case NumberStatus::NotFinite:
+          error("'" + std::string(cmd) + "' argument " + std::to_string(k + 1) +
+                ": expected a finite number, got '" + std::string(args_[k]) + "'");
+          ok = false;
+          break;
+      }
+    }
+    return ok;
+  }
+
+  // An integer in [lo, hi], given as a number with no fractional part.
+  std::optional<long long> integer(std::string_view cmd, double v, int argIndex, const char* what, long long lo,
+                                   long long hi) {
+    if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi)) {
+      error("'" + std::string(cmd) + "' argument " + std::to_string(argIndex + 1) + ": expected " + what +
+            ", got '" + std::string(args_[argIndex]) + "'");
+      return std::nullopt;
+    }
+    return static_cast<long long>(v);
+  }
+
+  // ---- commands ---------------------------------------------------------------------------
+  void cmdSize() {
+    double a[2];
+    if (sawSize_) {
+      error("'size' given again (first at line " + std::to_string(sizeLine_) + ")");
+      return;
+    }
+    sawSize_ = true;
+    sizeLine_ = line_;
+    if (!numbers("size", 2, "width height", a)) return;
+    const std::string range = "an integer from 1 to " + std::to_string(kMaxImageEdge);
+    auto w = integer("size", a[0], 0, range.c_str(), 1, kMaxImageEdge);
+    auto h = integer("size", a[1], 1, range.c_str(), 1, kMaxImageEdge);
+    if (w && h) {
+      scene_.width = static_cast<int>(*w);
+      scene_.height = static_cast<int>(*h);
+    }
+  }
+
+  void cmdMaxDepth() {
+    double a[1];
+    if (!numbers("maxdepth", 1, "depth", a)) return;
+    if (auto d = integer("maxdepth", a[0], 0, "a non-negative integer", 0, 1'000'000))
+      scene_.maxDepth = static_cast<int>(*d);
+  }
+
+  void cmdOutput() {
+    if (argCount_ != 1) {
+      error("'output' expects 1 argument (a file name without spaces), got " + std::to_string(argCount_));
+      return;
+    }
+    scene_.output = std::string(args_[0]);
+    scene_.outputLine = line_;
+  }
+
+  void cmdCamera() {
+    double a[10];
+    if (!numbers("camera", 10, "fromx fromy fromz atx aty atz upx upy upz fovy", a)) return;
+    Camera c{{a[0], a[1], a[2]}, {a[3], a[4], a[5]}, {a[6], a[7], a[8]}, a[9]};
+    bool ok = true;
+    dvec3 view = c.from - c.at;
+    if (view == dvec3(0.0)) {
+      error("degenerate camera: look-from equals look-at");
+      ok = false;
+    } else if (c.up == dvec3(0.0)) {
+      error("degenerate camera: the up vector is zero");
+      ok = false;
+    } else if (glm::length(glm::cross(glm::normalize(c.up), glm::normalize(view))) <= 1e-12) {
+      error("degenerate camera: the up vector is parallel to the view direction");
+      ok = false;
+    }
+    if (!(c.fovyDegrees > 0.0 && c.fovyDegrees < 180.0)) {
+      error("camera field of view must be in (0, 180) degrees, got " + std::string(args_[9]));
+      ok = false;
+    }
+    if (ok) scene_.camera = c;
+    sawCamera_ = true;
+  }
+
+  std::uint32_t currentMaterial() {
+    if (scene_.materials.empty() || !(scene_.materials.back() == material_))
+      scene_.materials.push_back(material_);
+    return static_cast<std::uint32_t>(scene_.materials.size() - 1);
+  }
+
+  void cmdSphere() {
+    double a[4];
+    if (!numbers("sphere", 4, "x y z radius", a)) return;
+    if (a[3] < 0.0) {
+      error("sphere radius must not be negative, got " + std::string(args_[3]));
+      return;
+    }
+    if (glm::determinant(glm::dmat3(transform_)) == 0.0) {
+      error("sphere under a singular transform (a scale of 0): it has no volume and no normal");
+      return;
+    }
+    Sphere s;
+    s.worldFromObject = transform_;
+    s.objectFromWorld = glm::inverse(transform_);
+    s.center = {a[0], a[1], a[2]};
+    s.radius = a[3];
+    s.material = currentMaterial();
+    scene_.spheres.push_back(s);
+  }
+
+  void cmdSizeHint(std::string_view cmd) {
+    double a[1];
+    if (!numbers(cmd, 1, "count", a)) return;
+    integer(cmd, a[0], 0, "a non-negative integer", 0, 1LL << 40);
+  }
+
+  void cmdVertex() {
+    double a[3];
+    if (!numbers("vertex", 3, "x y z", a)) return;
+    vertices_.push_back({a[0], a[1], a[2]});
+  }
+
+  void cmdVertexNormal() {
+    double a[6];
+    if (!numbers("vertexnormal", 6, "x y z nx ny nz", a)) return;
+    dvec3 n{a[3], a[4], a[5]};
+    if (n == dvec3(0.0)) {
+      error("vertexnormal normal must not be zero");
+      n = dvec3(0.0, 0.0, 1.0);   // keeps later indices right; the scene is rejected anyway
+    }
+    vertexNormals_.push_back({{a[0], a[1], a[2]}, n});
+  }
+
+  // Reads three vertex indices into `idx`, each checked against `available`.
+  bool indices(std::string_view cmd, std::size_t available, const char* listName, std::uint32_t idx[3]) {
+    double a[3];
+    if (!numbers(cmd, 3, "i j k", a)) return false;
+    bool ok = true;
+    for (int k = 0; k < 3; ++k) {
+      if (a[k] != std::floor(a[k]) || a[k] < 0.0 || a[k] >= static_cast<double>(available)) {
+        error("'" + std::string(cmd) + "' index " + std::string(args_[k]) + " out of range (" +
+              std::to_string(available) + " " + listName + " defined so far)");
+        ok = false;
+      } else {
+        idx[k] = static_cast<std::uint32_t>(a[k]);
+      }
+    }
+    return ok;
+  }
+
+  dvec3 toWorldPoint(const dvec3& p) const { return dvec3(transform_ * glm::dvec4(p, 1.0)); }
+
+  void cmdTri() {
+    std::uint32_t idx[3];
+    if (!indices("tri", vertices_.size(), "vertices", idx)) return;
+    Triangle t;
+    for (int k = 0; k < 3; ++k) t.p[k] = toWorldPoint(vertices_[idx[k]]);
+    t.material = currentMaterial();
+    scene_.triangles.push_back(t);
+  }
+
+  void cmdTriNormal() {
+    std::uint32_t idx[3];
+    if (!indices("trinormal", vertexNormals_.size(), "vertexnormals", idx)) return;
+    glm::dmat3 nm = normalMatrix(transform_);
+    Triangle t;
+    t.smooth = true;
+    for (int k = 0; k < 3; ++k) {
+      t.p[k] = toWorldPoint(vertexNormals_[idx[k]].position);
+      dvec3 n = nm * vertexNormals_[idx[k]].normal;
+      double len = glm::length(n);
+      t.n[k] = len > 0.0 ? n / len : dvec3(0.0, 0.0, 1.0);
+    }
+    t.material = currentMaterial();
+    scene_.triangles.push_back(t);
+  }
+
+  void cmdTranslate() {
+    double a[3];
+    if (!numbers("translate", 3, "x y z", a)) return;
+    transform_ = glm::translate(transform_, dvec3(a[0], a[1], a[2]));
+  }
+
+  void cmdRotate() {
+    double a[4];
+    if (!numbers("rotate", 4, "axisx axisy axisz angle", a)) return;
+    dvec3 axis{a[0], a[1], a[2]};
+    if (axis == dvec3(0.0)) {
+      error("rotate axis must not be zero");
+      return;
+    }
+    transform_ = transform_ * rotation(glm::normalize(axis), glm::radians(a[3]));
+  }
+
+  // Rodrigues' rotation about a unit axis, right-handed, as a 4x4 matrix.
+  static dmat4 rotation(const dvec3& k, double angle) {
+    double c = std::cos(angle), s = std::sin(angle);
+    glm::dmat3 kk = glm::outerProduct(k, k);
+    glm::dmat3 cross(0.0, k.z, -k.y,   // columns of the cross-product matrix [k]x
+                     -k.z, 0.0, k.x,
+                     k.y, -k.x, 0.0);
+    glm::dmat3 r = c * glm::dmat3(1.0) + (1.0 - c) * kk + s * cross;
+    return dmat4(r);
+  }
+
+  void cmdScale() {
+    double a[3];
+    if (!numbers("scale", 3, "x y z", a)) return;
+    transform_ = glm::scale(transform_, dvec3(a[0], a[1], a[2]));
+  }
+
+  void cmdPush() {
+    if (argCount_ != 0) return error("'pushTransform' takes no arguments, got " + std::to_string(argCount_));
+    stack_.push_back(transform_);
+  }
+
+  void cmdPop() {
+    if (argCount_ != 0) return error("'popTransform' takes no arguments, got " + std::to_string(argCount_));
+    if (stack_.empty()) return error("popTransform with an empty transform stack (no matching pushTransform)");
+    transform_ = stack_.back();
+    stack_.pop_back();
+  }
+
+  void cmdLight(bool point) {
+    double a[6];
+    const char* cmd = point ? "point" : "directional";
+    if (!numbers(cmd, 6, "x y z r g b", a)) return;
+    Light l;
+    l.color = {a[3], a[4], a[5]};
+    if (point) {
+      l.type = LightType::Point;
+      l.vec = toWorldPoint({a[0], a[1], a[2]});
+      l.attenuation = attenuation_;
+    } else {
+      l.type = LightType::Directional;
+      dvec3 d{a[0], a[1], a[2]};
+      l.vec = dvec3(transform_ * glm::dvec4(d, 0.0));
+      if (l.vec == dvec3(0.0)) return error("directional light direction must not be zero");
+      l.vec = glm::normalize(l.vec);
+    }
+    scene_.lights.push_back(l);
+  }
+
+  void cmdAttenuation() {
+    double a[3];
+    if (!numbers("attenuation", 3, "constant linear quadratic", a)) return;
+    if (a[0] < 0 || a[1] < 0 || a[2] < 0 || (a[0] == 0 && a[1] == 0 && a[2] == 0)) {
+      error("attenuation terms must be non-negative and not all zero");
+      return;
+    }
+    attenuation_ = {a[0], a[1], a[2]};
+  }
+
+  void cmdColor(std::string_view cmd, dvec3& target) {
+    double a[3];
+    if (!numbers(cmd, 3, "r g b", a)) return;
+    target = {a[0], a[1], a[2]};
+  }
+
+  void cmdShininess() {
+    double a[1];
+    if (!numbers("shininess", 1, "s", a)) return;
+    if (a[0] < 0.0) return error("shininess must not be negative, got " + std::string(args_[0]));
+    material_.shininess = a[0];
+  }
+
+  // ---- end of file ------------------------------------------------------------------------
+  void finish() {
+    int last = line_ > 0 ? line_ : 1;
+    if (!sawSize_) errorAt(1, "no 'size' command: the file must start with 'size WIDTH HEIGHT'");
+    if (!sawCamera_) errorAt(last, "no 'camera' command in the scene");
+    // Unbalanced pushTransforms at the end are valid (SPEC section 8).
+  }
+
+  std::string_view text_;
+  SceneDesc scene_;
+  std::vector<Diagnostic> diagnostics_;
+  int line_ = 0;
+  bool sawSize_ = false, sizeErrorReported_ = false, sawCamera_ = false;
+  int sizeLine_ = 0;
+  const std::string_view* args_ = nullptr;
+  int argCount_ = 0;
+
+  dmat4 transform_{1.0};
+  std::vector<dmat4> stack_;
+  Material material_;
+  dvec3 attenuation_{1.0, 0.0, 0.0};
+  std::vector<dvec3> vertices_;
+  std::vector<VertexWithNormal> vertexNormals_;
+};
+
+}  // namespace
+
+SceneDesc parseScene(std::string_view text, const std::string& fileName) {
+  return Parser(text, fileName).run();
+}
+
+SceneDesc parseSceneFile(const std::string& path) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) throw SceneError({{path, 0, "cannot open scene file: " + std::string(std::strerror(errno))}});
+  // One read of the whole file into a buffer of its size (no regrowth, no copies).
+  std::string text;
+  struct stat st {};
+  if (::fstat(::fileno(f.get()), &st) == 0 && S_ISREG(st.st_mode)) text.resize(static_cast<std::size_t>(st.st_size));
+  std::size_t got = std::fread(text.data(), 1, text.size(), f.get());
+  text.resize(got);
+  char buf[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f.get())) > 0) text.append(buf, n);   // grew, or not a regular file
+  if (std::ferror(f.get()))
+    throw SceneError({{path, 0, "cannot read scene file: " + std::string(std::strerror(errno))}});
+  return parseScene(text, path);
+}
+
+}  // namespace vkrt

@@ -1,0 +1,126 @@
+// Flattening and the BVH: layouts, values carried over, every primitive in exactly one leaf,
+// and every box containing its contents.
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "scene/flatten.h"
+#include "scene/parse.h"
+
+using namespace vkrt;
+
+namespace {
+
+SceneDesc randomScene(int triangles, int spheres, unsigned seed) {
+  std::string text = "size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\n";
+  auto next = [&seed] {
+    seed = seed * 1664525u + 1013904223u;
+    return static_cast<double>(seed >> 8) / static_cast<double>(1u << 24) * 20.0 - 10.0;
+  };
+  for (int i = 0; i < triangles; ++i) {
+    double x = next(), y = next(), z = next();
+    for (int k = 0; k < 3; ++k)
+      text += "vertex " + std::to_string(x + next() * 0.05) + " " + std::to_string(y + next() * 0.05) + " " +
+              std::to_string(z + next() * 0.05) + "\n";
+    text += "tri " + std::to_string(3 * i) + " " + std::to_string(3 * i + 1) + " " + std::to_string(3 * i + 2) + "\n";
+  }
+  for (int i = 0; i < spheres; ++i) {
+    text += "pushTransform\nrotate 1 2 3 " + std::to_string(next() * 10) + "\nscale 1 2 0.5\n";
+    text += "sphere " + std::to_string(next()) + " " + std::to_string(next()) + " " + std::to_string(next()) +
+            " 0.3\npopTransform\n";
+  }
+  return parseScene(text, "random");
+}
+
+bool boxContains(const gpu::GpuBvhNode& n, const dvec3& lo, const dvec3& hi) {
+  return n.minX <= lo.x && n.minY <= lo.y && n.minZ <= lo.z && n.maxX >= hi.x && n.maxY >= hi.y && n.maxZ >= hi.z;
+}
+
+}  // namespace
+
+TEST(Flatten, CarriesValuesIntoGpuLayouts) {
+  SceneDesc s = parseScene(
+      "size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\nattenuation 1 2 3\npoint 1 2 3 0.1 0.2 0.3\n"
+      "directional 0 0 2 1 1 1\ndiffuse 0.5 0.25 0.125\nspecular 1 1 1\nshininess 12\n"
+      "vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\ntri 0 1 2\nvertexnormal 0 0 0 0 0 1\ntrinormal 0 0 0\n"
+      "translate 1 0 0\nsphere 0 0 0 2\n",
+      "t");
+  GpuScene g = flatten(s);
+  ASSERT_EQ(g.triangles.size(), 2u);
+  EXPECT_EQ(g.triangles[0].normalsIndex, gpu::kNoNormals);
+  EXPECT_EQ(g.triangles[1].normalsIndex, 0u);
+  ASSERT_EQ(g.triangleNormals.size(), 1u);
+  EXPECT_EQ(g.triangleNormals[0].n2.z, 1.0f);
+  EXPECT_EQ(g.triangles[0].p1.x, 1.0f);
+  ASSERT_EQ(g.lights.size(), 2u);
+  EXPECT_EQ(g.lights[0].positionOrDirection.w, gpu::kPointLight);
+  EXPECT_EQ(g.lights[0].attenuation.z, 3.0f);
+  EXPECT_EQ(g.lights[1].positionOrDirection.w, 0.0f);
+  EXPECT_EQ(g.lights[1].positionOrDirection.z, 1.0f);   // normalised
+  ASSERT_EQ(g.spheres.size(), 1u);
+  EXPECT_EQ(g.spheres[0].centerRadius.w, 2.0f);
+  EXPECT_EQ(g.spheres[0].objectFromWorld[3].x, -1.0f);   // inverse of translate 1 0 0
+  const gpu::GpuMaterial& m = g.materials[g.triangles[0].materialIndex];
+  EXPECT_EQ(m.diffuse.y, 0.25f);
+  EXPECT_EQ(m.specular.w, 12.0f);
+  EXPECT_EQ(m.ambient.x, 0.2f);
+}
+
+TEST(Bvh, EveryPrimitiveInExactlyOneLeafInsideEveryEnclosingBox) {
+  SceneDesc s = randomScene(3000, 200, 7);
+  Bvh bvh = buildBvh(s);
+  std::vector<int> seen(s.triangles.size() + s.spheres.size(), 0);
+  // Walk with the chain of ancestors, checking containment of each primitive in all of them.
+  struct Item {
+    std::uint32_t node;
+    int depth;
+  };
+  std::vector<Item> stack{{0, 1}};
+  std::vector<std::uint32_t> path(kMaxBvhDepth + 1);
+  int maxDepth = 0;
+  while (!stack.empty()) {
+    Item it = stack.back();
+    stack.pop_back();
+    ASSERT_LE(it.depth, kMaxBvhDepth);
+    maxDepth = std::max(maxDepth, it.depth);
+    path[it.depth - 1] = it.node;
+    const gpu::GpuBvhNode& n = bvh.nodes[it.node];
+    if (n.primCount == 0) {
+      stack.push_back({n.leftOrFirst, it.depth + 1});
+      stack.push_back({n.leftOrFirst + 1, it.depth + 1});
+      continue;
+    }
+    EXPECT_LE(n.primCount, 4u);
+    for (std::uint32_t i = 0; i < n.primCount; ++i) {
+      std::uint32_t ref = bvh.primRefs[n.leftOrFirst + i];
+      dvec3 lo, hi;
+      std::size_t index;
+      if (ref & gpu::kPrimSphereBit) {
+        index = s.triangles.size() + (ref & ~gpu::kPrimSphereBit);
+        sphereBounds(s.spheres[ref & ~gpu::kPrimSphereBit], lo, hi);
+      } else {
+        index = ref;
+        lo = glm::min(s.triangles[ref].p[0], glm::min(s.triangles[ref].p[1], s.triangles[ref].p[2]));
+        hi = glm::max(s.triangles[ref].p[0], glm::max(s.triangles[ref].p[1], s.triangles[ref].p[2]));
+      }
+      ++seen[index];
+      for (int d = 0; d < it.depth; ++d) ASSERT_TRUE(boxContains(bvh.nodes[path[d]], lo, hi)) << "prim " << ref;
+    }
+  }
+  for (std::size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << "primitive " << i;
+  EXPECT_LT(maxDepth, 40);   // a balanced-ish tree for 3200 scattered primitives
+}
+
+TEST(Bvh, IdenticalPrimitivesStillSplit) {
+  std::string text = "size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n";
+  for (int i = 0; i < 1000; ++i) text += "tri 0 1 2\n";
+  Bvh bvh = buildBvh(parseScene(text, "same"));
+  for (const auto& n : bvh.nodes) EXPECT_LE(n.primCount, 4u);
+}
+
+TEST(Bvh, EmptySceneHasOneEmptyLeaf) {
+  Bvh bvh = buildBvh(parseScene("size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\n", "empty"));
+  ASSERT_EQ(bvh.nodes.size(), 1u);
+  EXPECT_EQ(bvh.nodes[0].primCount, 0u);
+  EXPECT_GT(bvh.nodes[0].minX, bvh.nodes[0].maxX);   // inverted box: nothing enters
+}

@@ -1,0 +1,150 @@
+// Every kind of bad input of SPEC section 8: the parser's located message, and through the
+// CLI: exit status 2, the message on stderr, no image written, an existing image untouched.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "render/render.h"
+#include "scene/parse.h"
+#include "test_support.h"
+
+using namespace vkrt;
+using namespace vkrt::test;
+
+namespace {
+
+struct BadInput {
+  const char* name;
+  std::string text;
+  int line;              // expected line of the (first) diagnostic
+  const char* message;   // expected part of its message
+};
+
+const std::string kOk = "size 64 48\ncamera 0 0 5 0 0 0 0 1 0 45\n";   // lines 1-2
+
+std::vector<BadInput> badInputs() {
+  return {
+      {"UnparsableNumber", kOk + "vertex 1 x 0\n", 3, "argument 2: expected a number, got 'x'"},
+      {"TrailingGarbageInNumber", kOk + "vertex 1 2z 0\n", 3, "expected a number, got '2z'"},
+      {"NaN", kOk + "vertex nan 0 0\n", 3, "expected a finite number, got 'nan'"},
+      {"Infinity", kOk + "sphere 0 0 0 inf\n", 3, "expected a finite number, got 'inf'"},
+      {"Overflow", kOk + "translate 1e999 0 0\n", 3, "expected a finite number, got '1e999'"},
+      {"MissingArgument", kOk + "vertex 1 2\n", 3, "'vertex' expects 3 arguments (x y z), got 2"},
+      {"ExtraArgument", kOk + "sphere 0 0 0 1 2\n", 3, "'sphere' expects 4 arguments (x y z radius), got 5"},
+      {"ArgumentToPush", kOk + "pushTransform 1\n", 3, "'pushTransform' takes no arguments"},
+      {"UnknownCommand", kOk + "spheres 0 0 0 1\n", 3, "unknown command 'spheres'"},
+      {"SizeAbsent", "camera 0 0 5 0 0 0 0 1 0 45\n", 1, "'camera' before 'size'"},
+      {"SizeAbsentEmptyFile", "", 1, "no 'size' command"},
+      {"SizeZero", "size 0 48\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1, "expected an integer from 1 to 16384, got '0'"},
+      {"SizeNegative", "size 64 -1\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1, "got '-1'"},
+      {"SizeTooLarge", "size 100000 100000\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1, "from 1 to 16384, got '100000'"},
+      {"SizeNotInteger", "size 64.5 48\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1, "got '64.5'"},
+      {"SizeNotFirst", "camera 0 0 5 0 0 0 0 1 0 45\nsize 64 48\n", 1, "the size command must come first"},
+      {"NegativeMaxDepth", kOk + "maxdepth -1\n", 3, "expected a non-negative integer, got '-1'"},
+      {"IndexOutOfRange", kOk + "vertex 0 0 0\nvertex 1 0 0\ntri 0 1 2\n", 5,
+       "'tri' index 2 out of range (2 vertices defined so far)"},
+      {"NegativeIndex", kOk + "vertex 0 0 0\ntri 0 -1 0\n", 4, "'tri' index -1 out of range"},
+      {"TriNormalIndexOutOfRange", kOk + "vertex 0 0 0\ntrinormal 0 0 0\n", 4,
+       "'trinormal' index 0 out of range (0 vertexnormals defined so far)"},
+      {"PopEmptyStack", kOk + "pushTransform\npopTransform\npopTransform\n", 5,
+       "popTransform with an empty transform stack"},
+      {"ZeroRotateAxis", kOk + "rotate 0 0 0 45\n", 3, "rotate axis must not be zero"},
+      {"CameraFromEqualsAt", "size 64 48\ncamera 1 2 3 1 2 3 0 1 0 45\n", 2, "look-from equals look-at"},
+      {"CameraUpParallel", "size 64 48\ncamera 0 0 5 0 0 0 0 0 2 45\n", 2, "up vector is parallel"},
+      {"CameraUpZero", "size 64 48\ncamera 0 0 5 0 0 0 0 0 0 45\n", 2, "up vector is zero"},
+      {"CameraFovZero", "size 64 48\ncamera 0 0 5 0 0 0 0 1 0 0\n", 2, "field of view must be in (0, 180)"},
+      {"CameraFov180", "size 64 48\ncamera 0 0 5 0 0 0 0 1 0 180\n", 2, "field of view must be in (0, 180)"},
+      {"NegativeRadius", kOk + "sphere 0 0 0 -1\n", 3, "sphere radius must not be negative"},
+      {"MissingCamera", "size 64 48\nsphere 0 0 0 1\n\n", 3, "no 'camera' command"},
+      {"OutputDirectoryMissing", kOk + "output no-such-dir/x.png\n", 3,
+       "output directory 'no-such-dir' does not exist"},
+      {"OutputDirectoryNotWritable", kOk + "output /proc/vkrt-test.png\n", 3,
+       "output directory '/proc' is not writable"},
+      {"NotText", std::string("size 64 48\ncam\0era\n", 19), 2, "file is not text (byte 0x00 in column 4)"},
+      {"BinaryGarbage", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16), 2, "file is not text (byte 0x1A in column 1)"},
+      {"NegativeShininess", kOk + "shininess -2\n", 3, "shininess must not be negative"},
+      {"ZeroDirectional", kOk + "directional 0 0 0 1 1 1\n", 3, "directional light direction must not be zero"},
+      {"SingularSphere", kOk + "scale 1 0 1\nsphere 0 0 0 1\n", 4, "singular transform"},
+  };
+}
+
+// gtest prints this instead of the struct's bytes.
+void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
+
+class ParseError : public ::testing::TestWithParam<BadInput> {};
+
+}  // namespace
+
+TEST_P(ParseError, ParserReportsFileLineAndMessage) {
+  const BadInput& c = GetParam();
+  try {
+    SceneDesc s = parseScene(c.text, "bad.test");
+    // Output problems are found when the output is resolved, before rendering.
+    resolveOutput(s, std::nullopt);
+    FAIL() << "no error for " << c.name;
+  } catch (const SceneError& e) {
+    ASSERT_FALSE(e.diagnostics().empty());
+    const Diagnostic& d = e.diagnostics().front();
+    EXPECT_EQ(d.file, "bad.test");
+    EXPECT_EQ(d.line, c.line) << e.what();
+    EXPECT_NE(d.message.find(c.message), std::string::npos) << "message: " << d.message;
+  }
+}
+
+TEST_P(ParseError, CliExitsWithStatus2AndWritesNothing) {
+  const BadInput& c = GetParam();
+  std::string dir = freshDir(std::string("parse-errors/") + c.name);
+  std::string scene = dir + "/bad.test";
+  writeFile(scene, c.text);
+  // An image the user already had, under the name the render would write: it must survive.
+  std::string existing = dir + "/precious.png";
+  writeFile(existing, "precious");
+  RunResult r = runVkrt("-q '" + scene + "' -o '" + existing + "'");
+  if (std::string(c.name).rfind("Output", 0) == 0)   // the scene's own `output` is the target
+    r = runVkrt("-q '" + scene + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  std::string expected = scene + ":" + std::to_string(c.line) + ": error: ";
+  EXPECT_NE(r.output.find(expected), std::string::npos) << "expected '" << expected << "' in:\n" << r.output;
+  EXPECT_NE(r.output.find(c.message), std::string::npos) << r.output;
+  EXPECT_EQ(readFile(existing), "precious");
+  std::size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) (void)entry, ++files;
+  EXPECT_EQ(files, 2u) << "a file was written beside the scene";
+}
+
+INSTANTIATE_TEST_SUITE_P(Section8, ParseError, ::testing::ValuesIn(badInputs()),
+                         [](const auto& p) { return std::string(p.param.name); });
+
+TEST(ParseErrors, AllProblemsAreReportedInOneRun) {
+  try {
+    parseScene(kOk + "vertex 1 2\nfoo\nrotate 0 0 0 1\n", "multi.test");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    ASSERT_EQ(e.diagnostics().size(), 3u) << e.what();
+    EXPECT_EQ(e.diagnostics()[0].line, 3);
+    EXPECT_EQ(e.diagnostics()[1].line, 4);
+    EXPECT_EQ(e.diagnostics()[2].line, 5);
+    EXPECT_EQ(std::string(e.what()),
+              "multi.test:3: error: 'vertex' expects 3 arguments (x y z), got 2\n"
+              "multi.test:4: error: unknown command 'foo'\n"
+              "multi.test:5: error: rotate axis must not be zero");
+  }
+}
+
+TEST(ParseErrors, ManyErrorsStopAtALimit) {
+  std::string text = kOk;
+  for (int i = 0; i < 1000; ++i) text += "bogus\n";
+  try {
+    parseScene(text, "many.test");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_LE(e.diagnostics().size(), 51u);
+    EXPECT_NE(std::string(e.what()).find("too many errors"), std::string::npos);
+  }
+}
+
+TEST(ParseErrors, MissingSceneFile) {
+  RunResult r = runVkrt("-q no-such-scene.test");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("no-such-scene.test: error: cannot open scene file"), std::string::npos) << r.output;
+}

@@ -1,0 +1,99 @@
+// Test helpers.
+#include "test_support.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <sys/wait.h>
+
+#include "cpu/reference.h"
+#include "image/compare.h"
+#include "image/png.h"
+#include "scene/bvh.h"
+#include "scene/parse.h"
+
+namespace fs = std::filesystem;
+
+namespace vkrt::test {
+
+bool inCi() {
+  const char* ci = std::getenv("CI");
+  return ci && std::string(ci) == "true";
+}
+
+std::optional<std::string> cse167Dir() {
+  const char* env = std::getenv("VKRT_CSE167_DIR");
+  fs::path dir = env ? fs::path(env) : fs::path(VKRT_SOURCE_DIR) / ".." / "shared" / "cse167";
+  if (fs::is_directory(dir / "scenes")) return fs::canonical(dir).string();
+  return std::nullopt;
+}
+
+std::string sourcePath(const std::string& relative) { return (fs::path(VKRT_SOURCE_DIR) / relative).string(); }
+
+std::string freshDir(const std::string& name) {
+  const char* env = std::getenv("VKRT_TEST_OUTPUT");
+  fs::path dir = fs::path(env ? env : "test-output") / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return fs::absolute(dir).string();
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+bool fileExists(const std::string& path) { return fs::exists(path); }
+
+Image renderScene(const SceneDesc& scene) {
+  Bvh bvh = buildBvh(scene);
+  return renderReference(scene, bvh, CpuOptions{}, nullptr);
+}
+
+Image renderText(const std::string& sceneText, const std::string& name) {
+  return renderScene(parseScene(sceneText, name));
+}
+
+::testing::AssertionResult imagesClose(const std::string& name, const Image& actual, const Image& expected,
+                                       int stepTolerance, long long maxPixelsOver) {
+  if (actual.width != expected.width || actual.height != expected.height)
+    return ::testing::AssertionFailure() << name << ": sizes differ: " << actual.width << "x" << actual.height
+                                         << " vs " << expected.width << "x" << expected.height;
+  ImageDiff d = compare(actual, expected);
+  long long over = d.countOver(stepTolerance);
+  if (over <= maxPixelsOver) return ::testing::AssertionSuccess();
+  std::string dir = freshDir("failures/" + name);
+  std::string a = dir + "/actual.png", e = dir + "/expected.png", df = dir + "/diff.png";
+  writePngAtomic(actual, a);
+  writePngAtomic(expected, e);
+  writePngAtomic(amplifiedDifference(actual, expected, 16), df);
+  return ::testing::AssertionFailure()
+         << name << ": " << over << " pixels differ by more than " << stepTolerance << "/255 (allowed "
+         << maxPixelsOver << "); largest difference " << d.maxChannelDiff << "/255; worst: " << d.worst(5)
+         << "\n  actual:   " << a << "\n  expected: " << e << "\n  diff x16: " << df;
+}
+
+RunResult runVkrt(const std::string& args) {
+  std::string cmd = std::string("'") + VKRT_BINARY + "' " + args + " 2>&1";
+  RunResult r;
+  FILE* p = ::popen(cmd.c_str(), "r");
+  if (!p) return r;
+  char buf[4096];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
+  int status = ::pclose(p);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return r;
+}
+
+}  // namespace vkrt::test

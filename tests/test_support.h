@@ -1,0 +1,56 @@
+// Helpers shared by the tests: where the course data is, skipping (or failing in CI), rendering
+// a scene from text, and image comparison that saves evidence on failure.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "image/image.h"
+#include "scene/scene_desc.h"
+
+namespace vkrt::test {
+
+// True when the environment says CI=true: missing data or devices are failures there.
+bool inCi();
+
+// The course data folder (../shared/cse167 beside the source tree, or $VKRT_CSE167_DIR), if present.
+std::optional<std::string> cse167Dir();
+
+// Path of a file in the project's source tree.
+std::string sourcePath(const std::string& relative);
+
+// A fresh, empty directory for one test's files, under the build's test-output folder.
+std::string freshDir(const std::string& name);
+
+// Reads a whole file.
+std::string readFile(const std::string& path);
+void writeFile(const std::string& path, const std::string& text);
+bool fileExists(const std::string& path);
+
+// Parses scene text and renders it with the CPU reference.
+Image renderText(const std::string& sceneText, const std::string& name = "test.test");
+Image renderScene(const SceneDesc& scene);
+
+// Compares two images: passes when at most `maxPixelsOver` pixels differ by more than
+// `stepTolerance` 8-bit steps in some channel. On failure writes actual.png, expected.png and
+// an amplified diff.png under the test-output folder and names them in the message.
+::testing::AssertionResult imagesClose(const std::string& name, const Image& actual, const Image& expected,
+                                       int stepTolerance, long long maxPixelsOver);
+
+// Result of running the vkrt binary.
+struct RunResult {
+  int exitCode = -1;
+  std::string output;   // stdout and stderr together
+};
+RunResult runVkrt(const std::string& args);
+
+}  // namespace vkrt::test
+
+// Skips the current test (saying why), except in CI, where the same condition fails it.
+#define VKRT_SKIP_UNLESS_CI(why)                                   \
+  do {                                                             \
+    if (::vkrt::test::inCi()) FAIL() << "required in CI: " << why; \
+    GTEST_SKIP() << why;                                           \
+  } while (0)
