@@ -5,22 +5,35 @@
 #include <vector>
 
 #include "cli/options.h"
+#include "gpu/context.h"
+#include "gpu/device_error.h"
 #include "image/png.h"
 #include "render/render.h"
 #include "scene/diagnostic.h"
 
 namespace {
 
-constexpr int kExitOk = 0, kExitUsage = 1, kExitScene = 2, kExitIo = 4;
+constexpr int kExitOk = 0, kExitUsage = 1, kExitScene = 2, kExitDevice = 3, kExitIo = 4;
 
 void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
-  double ms = 1e3;
-  std::fprintf(stderr,
-               "vkrt: %s %dx%d maxdepth %d: %zu triangles, %zu spheres, %zu lights; backend cpu, %d threads\n",
-               req.scenePath.c_str(), r.width, r.height, r.maxDepth, r.triangles, r.spheres, r.lights, r.threads);
-  std::fprintf(stderr, "  parse   %9.1f ms\n", r.parseSeconds * ms);
+  const double ms = 1e3;
+  std::fprintf(stderr, "vkrt: %s %dx%d maxdepth %d: %zu triangles, %zu spheres, %zu lights; backend %s",
+               req.scenePath.c_str(), r.width, r.height, r.maxDepth, r.triangles, r.spheres, r.lights,
+               r.backend.c_str());
+  if (req.backend == vkrt::Backend::Cpu) std::fprintf(stderr, ", %d threads", r.threads);
+  std::fprintf(stderr, "\n  parse   %9.1f ms\n", r.parseSeconds * ms);
   std::fprintf(stderr, "  build   %9.1f ms  (BVH, %zu nodes)\n", r.buildSeconds * ms, r.bvhNodes);
   std::fprintf(stderr, "  render  %9.1f ms\n", r.renderSeconds * ms);
+  if (req.backend == vkrt::Backend::Vulkan) {
+    std::fprintf(stderr, "    instance  %9.1f ms\n", r.instanceSeconds * ms);
+    std::fprintf(stderr, "    device    %9.1f ms\n", r.deviceSeconds * ms);
+    std::fprintf(stderr, "    upload    %9.1f ms\n", r.uploadSeconds * ms);
+    std::fprintf(stderr, "    pipeline  %9.1f ms\n", r.pipelineSeconds * ms);
+    std::fprintf(stderr, "    first dispatch (with JIT) %9.1f ms\n", r.firstDispatchSeconds * ms);
+    std::fprintf(stderr, "    dispatch  %9.1f ms  (%u bands, %u dispatches, %llu pixel suspensions)\n",
+                 r.dispatchSeconds * ms, r.bands, r.dispatches, static_cast<unsigned long long>(r.suspensions));
+    std::fprintf(stderr, "    readback  %9.1f ms\n", r.readbackSeconds * ms);
+  }
   std::fprintf(stderr, "  write   %9.1f ms\n", r.writeSeconds * ms);
   double mrays = r.renderSeconds > 0 ? static_cast<double>(r.rays.total()) / r.renderSeconds / 1e6 : 0.0;
   std::fprintf(stderr, "  rays    %llu = primary %llu + shadow %llu + reflection %llu; %.1f Mrays/s\n",
@@ -48,6 +61,12 @@ int main(int argc, char** argv) {
     return kExitOk;
   }
   try {
+    if (options.listDevices) {
+      auto devices = vkrt::listDevices();
+      for (std::size_t i = 0; i < devices.size(); ++i)
+        std::printf("%zu: %s (%s)\n", i, devices[i].name.c_str(), devices[i].typeName());
+      return kExitOk;
+    }
     vkrt::ProgressBar progress(!options.quiet);
     vkrt::RenderReport report = vkrt::renderSceneFile(options.request, progress);
     if (options.stats) printStats(options.request, report);
@@ -60,6 +79,9 @@ int main(int argc, char** argv) {
   } catch (const vkrt::SceneError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return kExitScene;
+  } catch (const vkrt::DeviceError& e) {
+    std::fprintf(stderr, "vkrt: error: %s\n", e.what());
+    return kExitDevice;
   } catch (const vkrt::IoError& e) {
     std::fprintf(stderr, "vkrt: error: %s\n", e.what());
     return kExitIo;

@@ -49,7 +49,7 @@ TEST(Cli, RendersToTheScenesOutputRelativeToTheCurrentDirectory) {
 TEST(Cli, OutputOptionOverridesAndStatsArePrinted) {
   std::string dir = freshDir("cli/override");
   writeFile(dir + "/s.test", kScene + "output never.png\n");
-  RunResult r = runVkrt("--stats --threads 1 -o " + dir + "/o.png " + dir + "/s.test");
+  RunResult r = runVkrt("--backend cpu --stats --threads 1 -o " + dir + "/o.png " + dir + "/s.test");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_TRUE(fileExists(dir + "/o.png"));
   EXPECT_FALSE(fileExists("never.png"));

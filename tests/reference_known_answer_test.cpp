@@ -146,3 +146,8 @@ TEST(KnownAnswer, TriNormalInterpolatesBarycentrically) {
   EXPECT_GT(img.pixel(30, 30)[0], 63);
   EXPECT_EQ(img.pixel(20, 30)[0], 63);
 }
+
+TEST(KnownAnswer, EmptySceneIsBlack) {
+  Image img = renderText(kCentreCamera + "point 0 0 2 1 1 1\n");
+  for (std::uint8_t b : img.rgb) ASSERT_EQ(b, 0);
+}

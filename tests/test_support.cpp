@@ -14,6 +14,9 @@
 #include "image/png.h"
 #include "scene/bvh.h"
 #include "scene/parse.h"
+#include "scene/flatten.h"
+#include "gpu/device_error.h"
+#include <memory>
 
 namespace fs = std::filesystem;
 
@@ -83,8 +86,41 @@ Image renderText(const std::string& sceneText, const std::string& name) {
          << "\n  actual:   " << a << "\n  expected: " << e << "\n  diff x16: " << df;
 }
 
-RunResult runVkrt(const std::string& args) {
-  std::string cmd = std::string("'") + VKRT_BINARY + "' " + args + " 2>&1";
+Context* gpuContextOrSkip() {
+  static std::unique_ptr<Context> context;
+  static std::string failure;
+  if (!context && failure.empty()) {
+    try {
+      context = std::make_unique<Context>(ContextOptions{"", true});
+    } catch (const DeviceError& e) {
+      failure = e.what();
+    }
+  }
+  if (context) return context.get();
+  if (inCi()) {
+    ADD_FAILURE() << "no Vulkan device (required in CI): " << failure;
+  } else {
+    // What GTEST_SKIP() records, in a function that returns a value.
+    ::testing::internal::AssertHelper(::testing::TestPartResult::kSkip, __FILE__, __LINE__,
+                                      ("no Vulkan device, GPU test skipped: " + failure).c_str()) =
+        ::testing::Message();
+  }
+  return nullptr;
+}
+
+Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget, VulkanTimings* timings) {
+  Context* context = gpuContextOrSkip();
+  if (!context) return Image();
+  VulkanOptions options;
+  options.stepBudget = stepBudget;
+  int before = context->validationMessages();
+  Image image = renderVulkan(*context, flatten(scene), options, nullptr, timings);
+  EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";
+  return image;
+}
+
+RunResult runVkrt(const std::string& args, const std::string& env) {
+  std::string cmd = (env.empty() ? "" : "env " + env + " ") + "'" + VKRT_BINARY + "' " + args + " 2>&1";
   RunResult r;
   FILE* p = ::popen(cmd.c_str(), "r");
   if (!p) return r;

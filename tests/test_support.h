@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "image/image.h"
+#include "gpu/context.h"
+#include "gpu/vulkan_renderer.h"
 #include "scene/scene_desc.h"
 
 namespace vkrt::test {
@@ -39,14 +41,27 @@ Image renderScene(const SceneDesc& scene);
 ::testing::AssertionResult imagesClose(const std::string& name, const Image& actual, const Image& expected,
                                        int stepTolerance, long long maxPixelsOver);
 
+// A Vulkan context with the validation layer on, shared by the tests of this process; null
+// (after skipping the test, or failing it in CI) when no Vulkan device can be had.
+Context* gpuContextOrSkip();
+
+// Renders with the Vulkan backend; `stepBudget` 0 is the default.
+Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget = 0, VulkanTimings* timings = nullptr);
+
 // Result of running the vkrt binary.
 struct RunResult {
   int exitCode = -1;
   std::string output;   // stdout and stderr together
 };
-RunResult runVkrt(const std::string& args);
+// `env` is prepended to the command line (VAR=value ...).
+RunResult runVkrt(const std::string& args, const std::string& env = "");
 
 }  // namespace vkrt::test
+
+// Gets the shared Vulkan context into `ctx`, or returns from the test (skipped, or failed in CI).
+#define VKRT_REQUIRE_GPU(ctx)                        \
+  ::vkrt::Context* ctx = ::vkrt::test::gpuContextOrSkip(); \
+  if (!ctx) return
 
 // Skips the current test (saying why), except in CI, where the same condition fails it.
 #define VKRT_SKIP_UNLESS_CI(why)                                   \

@@ -2,6 +2,7 @@
 #include "cli/options.h"
 
 #include <charconv>
+#include <cstdlib>
 
 namespace vkrt {
 
@@ -12,7 +13,12 @@ const char* usageText() {
          "\n"
          "options:\n"
          "  -o, --output FILE      write the image to FILE (overrides the scene's 'output')\n"
-         "  --backend cpu          renderer: 'cpu' (the double-precision reference)\n"
+         "  --backend vulkan|cpu   renderer: 'vulkan' (default: a compute shader on a GPU, or on\n"
+         "                         the CPU through lavapipe) or 'cpu' (the double-precision reference)\n"
+         "  --device N|NAME        Vulkan device by index or part of its name (see --list-devices);\n"
+         "                         default: a discrete or integrated GPU if present, else the CPU\n"
+         "  --list-devices         list the Vulkan devices and exit\n"
+         "  --validation           enable the Vulkan validation layer (also VKRT_VALIDATION=1)\n"
          "  --threads N            worker threads for the CPU backend (default: all cores)\n"
          "  --stats                print a timing breakdown and ray counts on stderr\n"
          "  -q, --quiet            print nothing but errors\n"
@@ -56,8 +62,24 @@ Options parseOptions(const std::vector<std::string>& args) {
       std::string b = take(name);
       if (b == "cpu")
         o.request.backend = Backend::Cpu;
+      else if (b == "vulkan")
+        o.request.backend = Backend::Vulkan;
       else
-        throw UsageError("unknown backend '" + b + "' (expected: cpu)");
+        throw UsageError("unknown backend '" + b + "' (expected: vulkan or cpu)");
+    } else if (name == "--device") {
+      o.request.device = take(name);
+      if (o.request.device.empty()) throw UsageError("--device needs an index or a name");
+    } else if (a == "--list-devices") {
+      o.listDevices = true;
+    } else if (a == "--validation") {
+      o.request.validation = true;
+    } else if (name == "--step-budget") {   // for tests of the loop budget; not in --help
+      std::string v = take(name);
+      int n = 0;
+      auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+      if (ec != std::errc() || end != v.data() + v.size() || n < 1 || n > 8192)
+        throw UsageError("--step-budget expects an integer from 1 to 8192, got '" + v + "'");
+      o.request.stepBudget = static_cast<std::uint32_t>(n);
     } else if (name == "--threads") {
       std::string v = take(name);
       int n = 0;
@@ -77,7 +99,8 @@ Options parseOptions(const std::vector<std::string>& args) {
       throw UsageError("unknown option '" + a + "'");
     }
   }
-  if (!o.help && !o.version) {
+  if (const char* v = std::getenv("VKRT_VALIDATION"); v && std::string(v) == "1") o.request.validation = true;
+  if (!o.help && !o.version && !o.listDevices) {
     if (!scene) throw UsageError("no scene file given");
     o.request.scenePath = *scene;
   }

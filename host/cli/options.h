@@ -22,6 +22,7 @@ struct Options {
   bool quiet = false;
   bool help = false;
   bool version = false;
+  bool listDevices = false;
 };
 
 // Throws UsageError.

@@ -88,6 +88,7 @@ class Tracer {
 
   // Nearest hit with t in (tMin, tMax), or the first one found when anyHit.
   bool intersect(const Ray& ray, double tMin, double tMax, bool anyHit, Hit& hit) const {
+    if (bvh_.primRefs.empty()) return false;   // the root is then an empty leaf
     dvec3 invDir(1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z);
     std::uint32_t stack[kMaxBvhDepth];
     int top = 0;

@@ -1,9 +1,11 @@
-// parse -> flatten -> render -> PNG, with a timer per stage.
+// parse -> build -> render (CPU reference or Vulkan) -> PNG, with a timer per stage.
 #include "render/render.h"
 
 #include <chrono>
+#include <memory>
 #include <thread>
 
+#include "gpu/vulkan_renderer.h"
 #include "image/png.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
@@ -13,6 +15,58 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Image renderWithCpu(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress,
+                    RenderReport& report) {
+  auto t0 = std::chrono::steady_clock::now();
+  Bvh bvh = buildBvh(scene);
+  report.buildSeconds = secondsSince(t0);
+  report.bvhNodes = bvh.nodes.size();
+
+  t0 = std::chrono::steady_clock::now();
+  CpuOptions options;
+  options.threads = request.threads;
+  options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
+  report.backend = "cpu";
+  report.threads = request.threads > 0 ? request.threads : static_cast<int>(std::thread::hardware_concurrency());
+  Image image = renderReference(scene, bvh, options, &report.rays);
+  report.renderSeconds = secondsSince(t0);
+  return image;
+}
+
+Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress,
+                       RenderReport& report) {
+  auto t0 = std::chrono::steady_clock::now();
+  // The device first: without one there is nothing to build for.
+  Context context(ContextOptions{request.device, request.validation});
+  report.instanceSeconds = context.instanceSeconds();
+  report.deviceSeconds = context.deviceSeconds();
+  report.backend = std::string("vulkan (") + context.properties().deviceName + ")";
+  double setup = secondsSince(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  GpuScene gpuScene = flatten(scene);
+  report.buildSeconds = secondsSince(t0);
+  report.bvhNodes = gpuScene.bvh.nodes.size();
+
+  t0 = std::chrono::steady_clock::now();
+  VulkanOptions options;
+  options.stepBudget = request.stepBudget;
+  options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
+  VulkanTimings timings;
+  Image image = renderVulkan(context, gpuScene, options, &report.rays, &timings);
+  report.renderSeconds = setup + secondsSince(t0);
+  report.uploadSeconds = timings.uploadSeconds;
+  report.pipelineSeconds = timings.pipelineSeconds;
+  report.firstDispatchSeconds = timings.firstDispatchSeconds;
+  report.dispatchSeconds = timings.dispatchSeconds;
+  report.readbackSeconds = timings.readbackSeconds;
+  report.bands = timings.bands;
+  report.dispatches = timings.dispatches;
+  report.suspensions = timings.suspensions;
+  report.validationMessages = context.validationMessages();
+  return image;
 }
 
 }  // namespace
@@ -44,19 +98,9 @@ RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress
   report.spheres = scene.spheres.size();
   report.lights = scene.lights.size();
 
-  t0 = std::chrono::steady_clock::now();
-  Bvh bvh = buildBvh(scene);
-  report.buildSeconds = secondsSince(t0);
-  report.bvhNodes = bvh.nodes.size();
-
-  t0 = std::chrono::steady_clock::now();
-  CpuOptions options;
-  options.threads = request.threads;
-  report.threads = request.threads > 0 ? request.threads : static_cast<int>(std::thread::hardware_concurrency());
-  options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
-  Image image = renderReference(scene, bvh, options, &report.rays);
+  Image image = request.backend == Backend::Cpu ? renderWithCpu(request, scene, progress, report)
+                                                : renderWithVulkan(request, scene, progress, report);
   progress.finish();
-  report.renderSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
   writePngAtomic(image, report.outputPath);

@@ -1,33 +1,46 @@
-// The whole pipeline for one scene file: parse -> flatten -> render (a backend) -> PNG.
-// Knows nothing of the command line; main() turns its exceptions into exit codes.
+// The whole pipeline for one scene file: parse -> build (BVH, GPU layouts) -> render with a
+// backend -> PNG. Knows nothing of the command line; main() turns its exceptions into exit codes.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
 #include "cpu/reference.h"
 #include "render/progress.h"
+#include "scene/scene_desc.h"
 
 namespace vkrt {
 
-enum class Backend { Cpu };
+enum class Backend { Vulkan, Cpu };
 
 struct RenderRequest {
   std::string scenePath;
   std::optional<std::string> output;   // overrides the scene's `output`
-  Backend backend = Backend::Cpu;
-  int threads = 0;                     // 0: every hardware thread
+  Backend backend = Backend::Vulkan;
+  int threads = 0;                     // CPU backend: 0 = every hardware thread
+  std::string device;                  // Vulkan: "" (choose), an index or part of a name
+  bool validation = false;             // Vulkan: enable the validation layer
+  std::uint32_t stepBudget = 0;        // Vulkan: steps per pixel per dispatch (0: default)
 };
 
 struct RenderReport {
   std::string outputPath;
+  std::string backend;                 // "cpu" or "vulkan (DEVICE NAME)"
   int width = 0, height = 0, maxDepth = 0, threads = 0;
   std::size_t triangles = 0, spheres = 0, lights = 0, bvhNodes = 0;
   double parseSeconds = 0, buildSeconds = 0, renderSeconds = 0, writeSeconds = 0;
+  // Vulkan only: the parts of renderSeconds.
+  double instanceSeconds = 0, deviceSeconds = 0, uploadSeconds = 0, pipelineSeconds = 0, firstDispatchSeconds = 0,
+         dispatchSeconds = 0, readbackSeconds = 0;
+  std::uint32_t bands = 0, dispatches = 0;
+  std::uint64_t suspensions = 0;
+  int validationMessages = 0;
   RayCounts rays;
 };
 
-// Throws SceneError (bad scene, including an unwritable `output`), IoError (files).
+// Throws SceneError (bad scene, including an unwritable `output`), IoError (files),
+// DeviceError (Vulkan).
 RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress);
 
 // The output path for a parsed scene, checked before rendering. A bad `output` line in the

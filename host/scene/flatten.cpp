@@ -1,6 +1,8 @@
 // SceneDesc -> GpuScene. The only place where double-precision scene data becomes float32.
 #include "scene/flatten.h"
 
+#include <cmath>
+
 namespace vkrt {
 namespace {
 
@@ -8,10 +10,30 @@ gpu::vec4 f4(const dvec3& v, float w = 0.0f) {
   return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), w};
 }
 
+// The camera basis in double, then float: a per-pixel step right and up, and the back vector.
+gpu::GpuPushConstants cameraConstants(const SceneDesc& scene) {
+  const Camera& c = scene.camera;
+  dvec3 w = glm::normalize(c.from - c.at);
+  dvec3 u = glm::normalize(glm::cross(c.up, w));
+  dvec3 v = glm::cross(w, u);
+  double tanY = std::tan(glm::radians(c.fovyDegrees) / 2.0);
+  double tanX = tanY * scene.width / scene.height;
+  gpu::GpuPushConstants p{};
+  p.cameraOrigin = f4(c.from);
+  p.cameraRight = f4(u * (tanX / (scene.width / 2.0)));
+  p.cameraUp = f4(v * (tanY / (scene.height / 2.0)));
+  p.cameraBack = f4(w);
+  return p;
+}
+
 }  // namespace
 
 GpuScene flatten(const SceneDesc& scene) {
   GpuScene g;
+  g.width = static_cast<std::uint32_t>(scene.width);
+  g.height = static_cast<std::uint32_t>(scene.height);
+  g.maxDepth = static_cast<std::uint32_t>(scene.maxDepth);
+  g.camera = cameraConstants(scene);
   g.triangles.reserve(scene.triangles.size());
   for (const Triangle& t : scene.triangles) {
     gpu::GpuTriangle gt{};

@@ -1,6 +1,7 @@
 // SceneDesc -> GpuScene: the arrays the GPU reads, in the layouts of gpu_types.h (float32).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "gpu_types.h"
@@ -10,6 +11,8 @@
 namespace vkrt {
 
 struct GpuScene {
+  std::uint32_t width = 0, height = 0, maxDepth = 0;
+  gpu::GpuPushConstants camera{};   // the camera part of the push constants (SPEC section 3)
   std::vector<gpu::GpuTriangle> triangles;
   std::vector<gpu::GpuTriangleNormals> triangleNormals;   // only for `trinormal` triangles
   std::vector<gpu::GpuSphere> spheres;

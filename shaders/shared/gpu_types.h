@@ -90,6 +90,96 @@ GPU_ASSERT_SIZE(GpuBvhNode, 32)
 GPU_ASSERT_OFFSET(GpuBvhNode, leftOrFirst, 12)
 GPU_ASSERT_OFFSET(GpuBvhNode, primCount, 28)
 
+// ---- The compute shader's interface ------------------------------------------------------------
+
+// Descriptor bindings of raytrace.comp (set 0).
+GPU_CONST uint kBindingTriangles = 0u;
+GPU_CONST uint kBindingTriangleNormals = 1u;
+GPU_CONST uint kBindingSpheres = 2u;
+GPU_CONST uint kBindingLights = 3u;
+GPU_CONST uint kBindingMaterials = 4u;
+GPU_CONST uint kBindingBvhNodes = 5u;
+GPU_CONST uint kBindingPrimRefs = 6u;
+GPU_CONST uint kBindingPixels = 7u;       // output: one packed RGBA8 uint per pixel of the band
+GPU_CONST uint kBindingPathStates = 8u;   // suspended pixels' state, one GpuPathState per pixel of the band
+GPU_CONST uint kBindingCounters = 9u;     // GpuCounters
+GPU_CONST uint kBindingCount = 10u;
+
+// Specialization constant ids: sizes and loop bounds are compile-time constants for the
+// driver (lavapipe re-JITs on every submit when they come from a buffer).
+GPU_CONST uint kSpecWidth = 0u;
+GPU_CONST uint kSpecHeight = 1u;
+GPU_CONST uint kSpecMaxDepth = 2u;
+GPU_CONST uint kSpecLightCount = 3u;
+GPU_CONST uint kSpecStepBudget = 4u;
+GPU_CONST uint kSpecBandHeight = 5u;
+GPU_CONST uint kSpecTilesX = 6u;
+GPU_CONST uint kSpecTileOrderStride = 7u;
+GPU_CONST uint kSpecPrimCount = 8u;       // 0: no geometry (the BVH root is then an empty leaf)
+GPU_CONST uint kSpecCount = 9u;
+
+GPU_CONST uint kWorkgroupSize = 8u;       // 8x8 pixels per workgroup (lavapipe: 8 wide or more)
+
+// llvmpipe ends a shader invocation silently after 65,535 loop iterations in all. One step
+// of the shader's state machine runs at most 1 + kMaxLeafPrims loop iterations, so a budget
+// of this many steps per dispatch stays well inside the limit; a pixel that needs more is
+// suspended (its GpuPathState saved) and resumed by the next dispatch.
+GPU_CONST uint kDefaultStepBudget = 8192u;
+GPU_CONST uint kMaxLeafPrims = 4u;
+// Entries in a traversal stack (the BVH builder bounds the depth below this).
+GPU_CONST uint kTraversalStackSize = 96u;
+
+// Phases of a pixel's state machine.
+GPU_CONST uint kPhaseTrace = 0u;     // nearest hit of the current ray (camera or mirror)
+GPU_CONST uint kPhaseLight = 1u;     // start the next light's shadow ray
+GPU_CONST uint kPhaseShadow = 2u;    // any hit of the shadow ray
+GPU_CONST uint kPhaseDone = 3u;
+
+struct GpuPushConstants {
+  vec4 cameraOrigin;        // xyz = look-from, w unused
+  vec4 cameraRight;         // xyz = u * tan(fovx/2) / (W/2): one pixel to the right
+  vec4 cameraUp;            // xyz = v * tan(fovy/2) / (H/2): one pixel up
+  vec4 cameraBack;          // xyz = w = normalize(from - at)
+  uint bandY0;              // first image row of this band
+  uint resume;              // 0: every pixel starts fresh; 1: continue suspended pixels
+  uint pad0, pad1;          // size 80 (push constants: at most 128 bytes)
+};
+GPU_ASSERT_SIZE(GpuPushConstants, 80)
+GPU_ASSERT_OFFSET(GpuPushConstants, bandY0, 64)
+
+struct GpuCounters {
+  uint suspended;           // pixels of this dispatch that ran out of steps
+  uint shadowRays;
+  uint reflectionRays;
+  uint pad0;                // size 16
+};
+GPU_ASSERT_SIZE(GpuCounters, 16)
+
+// Everything a suspended pixel needs to continue where it stopped.
+struct GpuPathState {
+  vec4 origin;              // current ray (camera or mirror): xyz origin, w = tMin
+  vec4 direction;           // xyz unit direction, w = nearest t so far
+  vec4 throughput;          // rgb weight of the current segment, w = barycentric b1 of the nearest hit
+  vec4 radiance;            // rgb sum so far, w = barycentric b2 of the nearest hit
+  vec4 hitPoint;            // xyz of the shaded hit, w unused
+  vec4 hitNormal;           // xyz unit shading normal, w unused
+  vec4 shadowDir;           // xyz shadow ray direction, w = its tMax
+  vec4 lightColor;          // rgb light colour / attenuation, w = N.L
+  uint phase;
+  uint depth;               // mirror reflections so far
+  uint lightIndex;
+  uint stackSize;
+  uint hitPrim;             // primRef of the nearest hit so far, or kNoHit
+  uint hitMaterial;
+  uint pad0, pad1;          // size 160
+  uint stack[kTraversalStackSize];
+};
+GPU_ASSERT_SIZE(GpuPathState, 160 + 4 * 96)
+GPU_ASSERT_OFFSET(GpuPathState, phase, 128)
+GPU_ASSERT_OFFSET(GpuPathState, stack, 160)
+
+GPU_CONST uint kNoHit = 0xFFFFFFFFu;
+
 #ifdef __cplusplus
 }  // namespace gpu
 #endif

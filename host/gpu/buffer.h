@@ -1,0 +1,41 @@
+// A storage buffer in host-visible memory, mapped for its whole life: uploads are a memcpy
+// into the mapping (no staging copy), readback a read from it.
+#pragma once
+
+#include <cstddef>
+#include <cstring>
+#include <vector>
+
+#include "gpu/context.h"
+
+namespace vkrt {
+
+class Buffer {
+ public:
+  // `bytes` of 0 still makes a small buffer: Vulkan binds no empty buffer.
+  Buffer(const Context& context, std::size_t bytes, bool readback = false);
+  ~Buffer();
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+
+  template <class T>
+  static Buffer withContents(const Context& context, const std::vector<T>& items) {
+    Buffer b(context, items.size() * sizeof(T));
+    if (!items.empty()) std::memcpy(b.mapped(), items.data(), items.size() * sizeof(T));
+    return b;
+  }
+  Buffer(Buffer&& other) noexcept;
+
+  VkBuffer handle() const { return buffer_; }
+  std::size_t size() const { return size_; }
+  void* mapped() const { return mapped_; }
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  std::size_t size_ = 0;
+  void* mapped_ = nullptr;
+};
+
+}  // namespace vkrt

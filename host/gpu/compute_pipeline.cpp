@@ -1,0 +1,147 @@
+// Compute pipeline creation and synchronous dispatch.
+#include "gpu/compute_pipeline.h"
+
+#include <cstdint>
+
+namespace vkrt {
+
+ComputePipeline::ComputePipeline(const Context& context, const std::uint32_t* spirv, std::size_t spirvBytes,
+                                 std::uint32_t bindingCount, const std::vector<std::uint32_t>& specConstants,
+                                 std::uint32_t pushConstantBytes)
+    : context_(context), device_(context.device()), pushConstantBytes_(pushConstantBytes) {
+  try {
+    std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
+    for (std::uint32_t i = 0; i < bindingCount; ++i)
+      bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    setInfo.bindingCount = bindingCount;
+    setInfo.pBindings = bindings.data();
+    VK_CHECK(vk::vkCreateDescriptorSetLayout(device_, &setInfo, nullptr, &setLayout_));
+
+    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &setLayout_;
+    layoutInfo.pushConstantRangeCount = pushConstantBytes ? 1 : 0;
+    layoutInfo.pPushConstantRanges = &range;
+    VK_CHECK(vk::vkCreatePipelineLayout(device_, &layoutInfo, nullptr, &layout_));
+
+    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    moduleInfo.codeSize = spirvBytes;
+    moduleInfo.pCode = spirv;
+    VkShaderModule module = VK_NULL_HANDLE;
+    VK_CHECK(vk::vkCreateShaderModule(device_, &moduleInfo, nullptr, &module));
+    std::vector<VkSpecializationMapEntry> entries(specConstants.size());
+    for (std::uint32_t i = 0; i < entries.size(); ++i)
+      entries[i] = {i, i * static_cast<std::uint32_t>(sizeof(std::uint32_t)), sizeof(std::uint32_t)};
+    VkSpecializationInfo spec{static_cast<std::uint32_t>(entries.size()), entries.data(),
+                              specConstants.size() * sizeof(std::uint32_t), specConstants.data()};
+    VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipelineInfo.stage.module = module;
+    pipelineInfo.stage.pName = "main";
+    pipelineInfo.stage.pSpecializationInfo = specConstants.empty() ? nullptr : &spec;
+    pipelineInfo.layout = layout_;
+    VkResult r = vk::vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline_);
+    vk::vkDestroyShaderModule(device_, module, nullptr);
+    VK_CHECK(r);
+
+    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, bindingCount};
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &poolSize;
+    VK_CHECK(vk::vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
+    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocInfo.descriptorPool = pool_;
+    allocInfo.descriptorSetCount = 1;
+    allocInfo.pSetLayouts = &setLayout_;
+    VK_CHECK(vk::vkAllocateDescriptorSets(device_, &allocInfo, &set_));
+
+    VkCommandPoolCreateInfo cmdPoolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    cmdPoolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    cmdPoolInfo.queueFamilyIndex = context.queueFamily();
+    VK_CHECK(vk::vkCreateCommandPool(device_, &cmdPoolInfo, nullptr, &commandPool_));
+    VkCommandBufferAllocateInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    cmdInfo.commandPool = commandPool_;
+    cmdInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cmdInfo.commandBufferCount = 1;
+    VK_CHECK(vk::vkAllocateCommandBuffers(device_, &cmdInfo, &commands_));
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VK_CHECK(vk::vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
+  } catch (...) {
+    this->~ComputePipeline();
+    throw;
+  }
+}
+
+ComputePipeline::~ComputePipeline() {
+  if (fence_) vk::vkDestroyFence(device_, fence_, nullptr);
+  if (commandPool_) vk::vkDestroyCommandPool(device_, commandPool_, nullptr);
+  if (pool_) vk::vkDestroyDescriptorPool(device_, pool_, nullptr);
+  if (pipeline_) vk::vkDestroyPipeline(device_, pipeline_, nullptr);
+  if (layout_) vk::vkDestroyPipelineLayout(device_, layout_, nullptr);
+  if (setLayout_) vk::vkDestroyDescriptorSetLayout(device_, setLayout_, nullptr);
+  fence_ = VK_NULL_HANDLE;
+  commandPool_ = VK_NULL_HANDLE;
+  pool_ = VK_NULL_HANDLE;
+  pipeline_ = VK_NULL_HANDLE;
+  layout_ = VK_NULL_HANDLE;
+  setLayout_ = VK_NULL_HANDLE;
+}
+
+void ComputePipeline::bind(std::uint32_t binding, const Buffer& buffer) {
+  VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set_;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  write.pBufferInfo = &info;
+  vk::vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+}
+
+void ComputePipeline::run(const void* pushConstants, std::uint32_t groups, const Buffer* clear) {
+  VK_CHECK(vk::vkResetCommandBuffer(commands_, 0));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(vk::vkBeginCommandBuffer(commands_, &begin));
+  // Earlier dispatches' writes (a suspended pixel's state) and the host's writes to the
+  // mappings must be visible to this dispatch's reads.
+  VkMemoryBarrier earlier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  earlier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_WRITE_BIT;
+  earlier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  vk::vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &earlier, 0,
+                           nullptr, 0, nullptr);
+  if (clear) {
+    vk::vkCmdFillBuffer(commands_, clear->handle(), 0, 4, 0);
+    // The cleared counter must be in place before the shader increments it.
+    VkMemoryBarrier fill{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    fill.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    fill.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vk::vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
+                             &fill, 0, nullptr, 0, nullptr);
+  }
+  vk::vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  vk::vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0, nullptr);
+  if (pushConstantBytes_)
+    vk::vkCmdPushConstants(commands_, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes_, pushConstants);
+  vk::vkCmdDispatch(commands_, groups, 1, 1);
+  // The host reads the shader's writes (pixels, counters) through the mapping after the fence.
+  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vk::vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost,
+                           0, nullptr, 0, nullptr);
+  VK_CHECK(vk::vkEndCommandBuffer(commands_));
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &commands_;
+  VK_CHECK(vk::vkQueueSubmit(context_.queue(), 1, &submit, fence_));
+  VK_CHECK(vk::vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
+  VK_CHECK(vk::vkResetFences(device_, 1, &fence_));
+}
+
+}  // namespace vkrt

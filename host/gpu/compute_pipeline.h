@@ -1,0 +1,44 @@
+// A compute pipeline over N storage buffers (bindings 0..N-1 of set 0), with uint
+// specialization constants (ids 0..) and a push-constant block, plus the command buffer and
+// fence to run it synchronously.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "gpu/buffer.h"
+
+namespace vkrt {
+
+class ComputePipeline {
+ public:
+  ComputePipeline(const Context& context, const std::uint32_t* spirv, std::size_t spirvBytes,
+                  std::uint32_t bindingCount, const std::vector<std::uint32_t>& specConstants,
+                  std::uint32_t pushConstantBytes);
+  ~ComputePipeline();
+  ComputePipeline(const ComputePipeline&) = delete;
+  ComputePipeline& operator=(const ComputePipeline&) = delete;
+
+  void bind(std::uint32_t binding, const Buffer& buffer);
+
+  // Records: an optional fill of `clear` (first 4 bytes to 0), push constants, one dispatch of
+  // `groups` workgroups (x), and a barrier that makes the shader's writes visible to the host;
+  // then submits and waits.
+  void run(const void* pushConstants, std::uint32_t groups, const Buffer* clear = nullptr);
+
+ private:
+  const Context& context_;
+  VkDevice device_;
+  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  VkCommandPool commandPool_ = VK_NULL_HANDLE;
+  VkCommandBuffer commands_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  std::uint32_t pushConstantBytes_;
+};
+
+}  // namespace vkrt

@@ -1,0 +1,125 @@
+// The Vulkan backend's host side: upload, pipeline, band-by-band dispatch, readback.
+#include "gpu/vulkan_renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+#include "gpu/compute_pipeline.h"
+#include "gpu/device_error.h"
+#include "raytrace.comp.h"   // kRaytraceSpirv: the shader, compiled at build time
+
+namespace vkrt {
+namespace {
+
+constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// A stride coprime with `n`, near n times the golden ratio's fraction, so that consecutive
+// workgroups land on tiles far apart.
+std::uint32_t scatterStride(std::uint32_t n) {
+  if (n <= 2) return 1;
+  std::uint32_t s = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(n * 0.6180339887));
+  while (std::gcd(s, n) != 1) ++s;
+  return s;
+}
+
+}  // namespace
+
+Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options, RayCounts* rays,
+                   VulkanTimings* timings) {
+  VulkanTimings t;
+  const std::uint32_t width = scene.width, height = scene.height;
+  const std::uint32_t tile = gpu::kWorkgroupSize;
+
+  // Band height: a multiple of the tile, and a state buffer within maxStateBytes.
+  std::size_t rowsByMemory = options.maxStateBytes / (sizeof(gpu::GpuPathState) * width);
+  std::uint32_t bandHeight = static_cast<std::uint32_t>(std::max<std::size_t>(tile, rowsByMemory / tile * tile));
+  bandHeight = std::min(bandHeight, (height + tile - 1) / tile * tile);
+  const std::uint32_t tilesX = (width + tile - 1) / tile;
+  const std::uint32_t tilesInBand = tilesX * (bandHeight / tile);
+
+  auto t0 = std::chrono::steady_clock::now();
+  Buffer triangles = Buffer::withContents(context, scene.triangles);
+  Buffer normals = Buffer::withContents(context, scene.triangleNormals);
+  Buffer spheres = Buffer::withContents(context, scene.spheres);
+  Buffer lights = Buffer::withContents(context, scene.lights);
+  Buffer materials = Buffer::withContents(context, scene.materials);
+  Buffer nodes = Buffer::withContents(context, scene.bvh.nodes);
+  Buffer primRefs = Buffer::withContents(context, scene.bvh.primRefs);
+  Buffer pixels(context, std::size_t{width} * bandHeight * sizeof(std::uint32_t), true);
+  Buffer states(context, std::size_t{width} * bandHeight * sizeof(gpu::GpuPathState));
+  Buffer counters(context, sizeof(gpu::GpuCounters), true);
+  std::memset(counters.mapped(), 0, sizeof(gpu::GpuCounters));
+  t.uploadSeconds = secondsSince(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  std::vector<std::uint32_t> spec(gpu::kSpecCount);
+  spec[gpu::kSpecWidth] = width;
+  spec[gpu::kSpecHeight] = height;
+  spec[gpu::kSpecMaxDepth] = scene.maxDepth;
+  spec[gpu::kSpecLightCount] = static_cast<std::uint32_t>(scene.lights.size());
+  spec[gpu::kSpecStepBudget] = options.stepBudget ? options.stepBudget : gpu::kDefaultStepBudget;
+  spec[gpu::kSpecBandHeight] = bandHeight;
+  spec[gpu::kSpecTilesX] = tilesX;
+  spec[gpu::kSpecTileOrderStride] = scatterStride(tilesInBand);
+  spec[gpu::kSpecPrimCount] = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
+  ComputePipeline pipeline(context, kRaytraceSpirv, sizeof(kRaytraceSpirv), gpu::kBindingCount, spec,
+                           sizeof(gpu::GpuPushConstants));
+  const Buffer* bound[gpu::kBindingCount] = {&triangles, &normals, &spheres, &lights, &materials,
+                                             &nodes,     &primRefs, &pixels, &states, &counters};
+  for (std::uint32_t b = 0; b < gpu::kBindingCount; ++b) pipeline.bind(b, *bound[b]);
+  t.pipelineSeconds = secondsSince(t0);
+
+  Image image(static_cast<int>(width), static_cast<int>(height));
+  gpu::GpuPushConstants push = scene.camera;
+  auto* counter = static_cast<volatile gpu::GpuCounters*>(counters.mapped());
+  for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
+    push.bandY0 = y0;
+    push.resume = 0;
+    std::uint64_t rounds = 0;
+    do {
+      // Each round advances every unfinished pixel by the full step budget, and no pixel's
+      // work is unbounded (maxdepth, lights and the BVH are finite): this is a bug guard.
+      if (++rounds > kMaxRoundsPerBand)
+        throw DeviceError("internal error: pixels of rows " + std::to_string(y0) + "+ still unfinished after " +
+                          std::to_string(kMaxRoundsPerBand) + " dispatches");
+      t0 = std::chrono::steady_clock::now();
+      pipeline.run(&push, tilesInBand, &counters);
+      double s = secondsSince(t0);
+      if (t.dispatches == 0) t.firstDispatchSeconds = s;
+      else t.dispatchSeconds += s;
+      ++t.dispatches;
+      t.suspensions += counter->suspended;
+      push.resume = 1;
+    } while (counter->suspended > 0);
+    ++t.bands;
+
+    t0 = std::chrono::steady_clock::now();
+    std::uint32_t rows = std::min(bandHeight, height - y0);
+    const auto* packed = static_cast<const std::uint32_t*>(pixels.mapped());
+    for (std::uint32_t y = 0; y < rows; ++y) {
+      std::uint8_t* out = image.pixel(0, static_cast<int>(y0 + y));
+      const std::uint32_t* in = packed + std::size_t{y} * width;
+      for (std::uint32_t x = 0; x < width; ++x) {
+        out[3 * x] = static_cast<std::uint8_t>(in[x]);
+        out[3 * x + 1] = static_cast<std::uint8_t>(in[x] >> 8);
+        out[3 * x + 2] = static_cast<std::uint8_t>(in[x] >> 16);
+      }
+    }
+    t.readbackSeconds += secondsSince(t0);
+    if (options.progress) options.progress(std::uint64_t{y0 + rows} * width, std::uint64_t{height} * width);
+  }
+  if (rays) {
+    rays->primary = std::uint64_t{width} * height;
+    rays->shadow = counter->shadowRays;
+    rays->reflection = counter->reflectionRays;
+  }
+  if (timings) *timings = t;
+  return image;
+}
+
+}  // namespace vkrt

@@ -1,0 +1,33 @@
+// The Vulkan backend: GpuScene -> Image through raytrace.comp. The image is traced in bands
+// of rows (bounded memory, a moving progress bar); each band is dispatched again until no
+// pixel is left suspended (the loop budget of llvmpipe, see gpu_types.h).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "cpu/reference.h"
+#include "gpu/context.h"
+#include "image/image.h"
+#include "scene/flatten.h"
+
+namespace vkrt {
+
+struct VulkanOptions {
+  std::uint32_t stepBudget = 0;           // steps per pixel per dispatch; 0: kDefaultStepBudget
+  std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
+  std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixels done, pixels total)
+};
+
+struct VulkanTimings {
+  double uploadSeconds = 0, pipelineSeconds = 0, firstDispatchSeconds = 0, dispatchSeconds = 0,
+         readbackSeconds = 0;
+  std::uint32_t bands = 0, dispatches = 0;
+  std::uint64_t suspensions = 0;   // pixel-dispatches that ran out of steps
+};
+
+// Throws DeviceError.
+Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options, RayCounts* rays,
+                   VulkanTimings* timings);
+
+}  // namespace vkrt

@@ -1,0 +1,363 @@
+// raytrace.comp: one invocation per pixel of a band. Camera ray, nearest hit through the BVH,
+// shading with shadow rays, and an iterative mirror loop carrying a throughput weight, bounded
+// by maxdepth. Written as a state machine of bounded steps so that no invocation exceeds
+// llvmpipe's loop budget: a pixel that runs out of steps saves its state and the host
+// dispatches again (see kDefaultStepBudget in gpu_types.h).
+// Its math is float32 and written independently of the CPU reference (host/cpu/).
+#version 450
+#extension GL_GOOGLE_include_directive : require
+
+#include "gpu_types.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;   // kWorkgroupSize
+
+layout(constant_id = 0) const uint kWidth = 1u;
+layout(constant_id = 1) const uint kHeight = 1u;
+layout(constant_id = 2) const uint kMaxDepth = 5u;
+layout(constant_id = 3) const uint kLightCount = 0u;
+layout(constant_id = 4) const uint kStepBudget = 8192u;
+layout(constant_id = 5) const uint kBandHeight = 1u;
+layout(constant_id = 6) const uint kTilesX = 1u;
+layout(constant_id = 7) const uint kTileOrderStride = 1u;
+layout(constant_id = 8) const uint kPrimCount = 0u;
+
+layout(std430, binding = 0) readonly buffer Triangles { GpuTriangle triangles[]; };
+layout(std430, binding = 1) readonly buffer TriangleNormals { GpuTriangleNormals triangleNormals[]; };
+layout(std430, binding = 2) readonly buffer Spheres { GpuSphere spheres[]; };
+layout(std430, binding = 3) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, binding = 4) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, binding = 5) readonly buffer BvhNodes { GpuBvhNode nodes[]; };
+layout(std430, binding = 6) readonly buffer PrimRefs { uint primRefs[]; };
+layout(std430, binding = 7) buffer Pixels { uint pixels[]; };   // alpha 0: suspended
+layout(std430, binding = 8) buffer PathStates { GpuPathState states[]; };
+layout(std430, binding = 9) buffer Counters { GpuCounters counters; };
+
+layout(push_constant) uniform Push { GpuPushConstants pc; };
+
+const float kInfinity = 3.402823466e38;
+
+// ---- per-pixel state (registers; saved to states[] only on suspension) ----------------------
+vec3 rayOrigin, rayDir;
+float rayTMin, bestT, bestB1, bestB2;
+vec3 throughput, radiance, hitPoint, hitNormal, shadowDir, lightColor;
+float shadowTMax, nDotL;
+uint phase, depth, lightIndex, sp, hitPrim, hitMaterial;
+uint stack[kTraversalStackSize];
+uint shadowRays = 0u, reflectionRays = 0u;
+
+// ---- intersection (float32) ------------------------------------------------------------------
+
+// A reciprocal that is never infinite: a zero component becomes a huge finite value, so the
+// slab products are never 0 * inf.
+vec3 safeInverse(vec3 d) {
+  const float tiny = 1e-30;
+  return 1.0 / vec3(abs(d.x) > tiny ? d.x : (d.x < 0.0 ? -tiny : tiny),
+                    abs(d.y) > tiny ? d.y : (d.y < 0.0 ? -tiny : tiny),
+                    abs(d.z) > tiny ? d.z : (d.z < 0.0 ? -tiny : tiny));
+}
+
+// Entry distance of the ray into a node's box within (tMin, tMax), or kInfinity when missed.
+float boxEntry(GpuBvhNode n, vec3 origin, vec3 invDir, float tMin, float tMax) {
+  vec3 t0 = (vec3(n.minX, n.minY, n.minZ) - origin) * invDir;
+  vec3 t1 = (vec3(n.maxX, n.maxY, n.maxZ) - origin) * invDir;
+  vec3 tNear = min(t0, t1), tFar = max(t0, t1);
+  float enter = max(max(tNear.x, tNear.y), max(tNear.z, tMin));
+  float leave = min(min(tFar.x, tFar.y), min(tFar.z, tMax));
+  return enter <= leave ? enter : kInfinity;
+}
+
+// Moller-Trumbore. Returns t in (tMin, tMax) or -1; b = weights of p1 and p2.
+float hitTriangle(uint index, vec3 origin, vec3 dir, float tMin, float tMax, out vec2 b) {
+  GpuTriangle tri = triangles[index];
+  vec3 e1 = tri.p1.xyz - tri.p0.xyz, e2 = tri.p2.xyz - tri.p0.xyz;
+  vec3 pv = cross(dir, e2);
+  float det = dot(e1, pv);
+  b = vec2(0.0);
+  if (det == 0.0) return -1.0;   // degenerate, or the ray lies in its plane
+  float invDet = 1.0 / det;
+  vec3 tv = origin - tri.p0.xyz;
+  float u = dot(tv, pv) * invDet;
+  if (!(u >= 0.0 && u <= 1.0)) return -1.0;
+  vec3 qv = cross(tv, e1);
+  float v = dot(dir, qv) * invDet;
+  if (!(v >= 0.0 && u + v <= 1.0)) return -1.0;
+  float t = dot(e2, qv) * invDet;
+  b = vec2(u, v);
+  return (t > tMin && t < tMax) ? t : -1.0;
+}
+
+// The ray goes into object space unnormalised, so t is the world t. The discriminant is
+// formed as a * (r^2 - |l|^2) with l the offset of the closest point, not as b^2 - ac, which
+// loses the hit to cancellation when the ray starts far away.
+float hitSphere(uint index, vec3 origin, vec3 dir, float tMin, float tMax) {
+  GpuSphere s = spheres[index];
+  vec3 o = (s.objectFromWorld * vec4(origin, 1.0)).xyz - s.centerRadius.xyz;
+  vec3 d = (s.objectFromWorld * vec4(dir, 0.0)).xyz;
+  float a = dot(d, d);
+  float b = dot(o, d);
+  float r = s.centerRadius.w;
+  vec3 l = o - (b / a) * d;
+  float disc = a * (r * r - dot(l, l));
+  if (disc < 0.0 || a == 0.0) return -1.0;
+  float q = -b - (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc);
+  float c = dot(o, o) - r * r;
+  float t0 = q / a, t1 = q != 0.0 ? c / q : t0;
+  float tNear = min(t0, t1), tFar = max(t0, t1);
+  float t = tNear > tMin ? tNear : tFar;
+  return (t > tMin && t < tMax) ? t : -1.0;
+}
+
+// ---- the state machine's steps -----------------------------------------------------------------
+
+void startRay(vec3 origin, vec3 dir, float tMin) {
+  rayOrigin = origin;
+  rayDir = dir;
+  rayTMin = tMin;
+  bestT = kInfinity;
+  hitPrim = kNoHit;
+  sp = kPrimCount > 0u ? 1u : 0u;   // an empty scene's root is an empty leaf: nothing to visit
+  stack[0] = 0u;
+  phase = kPhaseTrace;
+}
+
+// One node of the nearest-hit traversal.
+void traceStep() {
+  uint nodeIndex = stack[--sp];
+  vec3 invDir = safeInverse(rayDir);
+  GpuBvhNode node = nodes[nodeIndex];
+  if (boxEntry(node, rayOrigin, invDir, rayTMin, bestT) == kInfinity) return;
+  if (node.primCount > 0u) {
+    for (uint i = 0u; i < node.primCount; ++i) {
+      uint ref = primRefs[node.leftOrFirst + i];
+      vec2 b;
+      float t = (ref & kPrimSphereBit) != 0u
+                    ? hitSphere(ref & ~kPrimSphereBit, rayOrigin, rayDir, rayTMin, bestT)
+                    : hitTriangle(ref, rayOrigin, rayDir, rayTMin, bestT, b);
+      if (t > 0.0) {
+        bestT = t;
+        hitPrim = ref;
+        bestB1 = b.x;
+        bestB2 = b.y;
+      }
+    }
+    return;
+  }
+  // Push the children that the ray enters, the nearer one last (popped first).
+  uint left = node.leftOrFirst;
+  float tl = boxEntry(nodes[left], rayOrigin, invDir, rayTMin, bestT);
+  float tr = boxEntry(nodes[left + 1u], rayOrigin, invDir, rayTMin, bestT);
+  bool leftFirst = tl <= tr;
+  float tFar = leftFirst ? tr : tl, tNear = leftFirst ? tl : tr;
+  if (tFar != kInfinity) stack[sp++] = leftFirst ? left + 1u : left;
+  if (tNear != kInfinity) stack[sp++] = leftFirst ? left : left + 1u;
+}
+
+// The nearest hit is known: ambient and emission, then the lights one by one.
+void beginShading() {
+  hitPoint = rayOrigin + bestT * rayDir;
+  if ((hitPrim & kPrimSphereBit) != 0u) {
+    GpuSphere s = spheres[hitPrim & ~kPrimSphereBit];
+    vec3 pObject = (s.objectFromWorld * vec4(rayOrigin, 1.0)).xyz + bestT * (s.objectFromWorld * vec4(rayDir, 0.0)).xyz;
+    hitNormal = normalize(transpose(mat3(s.objectFromWorld)) * (pObject - s.centerRadius.xyz));
+    hitMaterial = s.materialIndex;
+  } else {
+    GpuTriangle tri = triangles[hitPrim];
+    if (tri.normalsIndex != kNoNormals) {
+      GpuTriangleNormals n = triangleNormals[tri.normalsIndex];
+      hitNormal = normalize((1.0 - bestB1 - bestB2) * n.n0.xyz + bestB1 * n.n1.xyz + bestB2 * n.n2.xyz);
+    } else {
+      hitNormal = normalize(cross(tri.p1.xyz - tri.p0.xyz, tri.p2.xyz - tri.p0.xyz));
+    }
+    hitMaterial = tri.materialIndex;
+  }
+  GpuMaterial m = materials[hitMaterial];
+  radiance += throughput * (m.ambient.rgb + m.emission.rgb);
+  lightIndex = 0u;
+  phase = kPhaseLight;
+}
+
+// After the last light: the mirror ray, or the end of the path.
+void reflectOrFinish() {
+  vec3 specular = materials[hitMaterial].specular.rgb;
+  if (depth < kMaxDepth && any(greaterThan(specular, vec3(0.0)))) {
+    ++depth;
+    ++reflectionRays;
+    throughput *= specular;
+    startRay(hitPoint, normalize(rayDir - 2.0 * dot(rayDir, hitNormal) * hitNormal), kSecondaryRayTMin);
+  } else {
+    phase = kPhaseDone;
+  }
+}
+
+// Prepares light `lightIndex`: its shadow ray, or skips a light that cannot contribute.
+void lightStep() {
+  if (lightIndex >= kLightCount) {
+    reflectOrFinish();
+    return;
+  }
+  GpuLight light = lights[lightIndex];
+  vec3 toLight;
+  float divisor = 1.0;
+  shadowTMax = kInfinity;
+  if (light.positionOrDirection.w == kPointLight) {
+    vec3 v = light.positionOrDirection.xyz - hitPoint;
+    float distance = length(v);
+    toLight = v / distance;
+    shadowTMax = distance;
+    divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
+  } else {
+    toLight = light.positionOrDirection.xyz;
+  }
+  nDotL = dot(hitNormal, toLight);
+  if (!(nDotL > 0.0)) {   // a light behind the surface adds nothing (SPEC section 7)
+    ++lightIndex;
+    return;
+  }
+  ++shadowRays;
+  shadowDir = toLight;
+  lightColor = light.color.rgb / divisor;
+  sp = kPrimCount > 0u ? 1u : 0u;
+  stack[0] = 0u;
+  phase = kPhaseShadow;
+}
+
+void addLightContribution() {
+  GpuMaterial m = materials[hitMaterial];
+  vec3 halfVector = normalize(shadowDir - rayDir);
+  float nDotH = max(dot(hitNormal, halfVector), 0.0);
+  float shininess = m.specular.w;
+  // pow(0, s) is undefined in GLSL: define it as C does (1 for s = 0, else 0).
+  float highlight = nDotH > 0.0 ? pow(nDotH, shininess) : (shininess == 0.0 ? 1.0 : 0.0);
+  radiance += throughput * lightColor * (m.diffuse.rgb * nDotL + m.specular.rgb * highlight);
+}
+
+// One node of the any-hit traversal of the shadow ray.
+void shadowStep() {
+  if (sp == 0u) {   // nothing in the way
+    addLightContribution();
+    ++lightIndex;
+    phase = kPhaseLight;
+    return;
+  }
+  uint nodeIndex = stack[--sp];
+  vec3 invDir = safeInverse(shadowDir);
+  GpuBvhNode node = nodes[nodeIndex];
+  if (boxEntry(node, hitPoint, invDir, kSecondaryRayTMin, shadowTMax) == kInfinity) return;
+  if (node.primCount > 0u) {
+    for (uint i = 0u; i < node.primCount; ++i) {
+      uint ref = primRefs[node.leftOrFirst + i];
+      vec2 b;
+      float t = (ref & kPrimSphereBit) != 0u
+                    ? hitSphere(ref & ~kPrimSphereBit, hitPoint, shadowDir, kSecondaryRayTMin, shadowTMax)
+                    : hitTriangle(ref, hitPoint, shadowDir, kSecondaryRayTMin, shadowTMax, b);
+      if (t > 0.0) {   // blocked
+        ++lightIndex;
+        phase = kPhaseLight;
+        return;
+      }
+    }
+    return;
+  }
+  stack[sp++] = node.leftOrFirst;
+  stack[sp++] = node.leftOrFirst + 1u;
+}
+
+// ---- suspension ----------------------------------------------------------------------------------
+
+void saveState(uint slot) {
+  states[slot].origin = vec4(rayOrigin, rayTMin);
+  states[slot].direction = vec4(rayDir, bestT);
+  states[slot].throughput = vec4(throughput, bestB1);
+  states[slot].radiance = vec4(radiance, bestB2);
+  states[slot].hitPoint = vec4(hitPoint, 0.0);
+  states[slot].hitNormal = vec4(hitNormal, 0.0);
+  states[slot].shadowDir = vec4(shadowDir, shadowTMax);
+  states[slot].lightColor = vec4(lightColor, nDotL);
+  states[slot].phase = phase;
+  states[slot].depth = depth;
+  states[slot].lightIndex = lightIndex;
+  states[slot].stackSize = sp;
+  states[slot].hitPrim = hitPrim;
+  states[slot].hitMaterial = hitMaterial;
+  for (uint i = 0u; i < sp; ++i) states[slot].stack[i] = stack[i];
+}
+
+void loadState(uint slot) {
+  rayOrigin = states[slot].origin.xyz;
+  rayTMin = states[slot].origin.w;
+  rayDir = states[slot].direction.xyz;
+  bestT = states[slot].direction.w;
+  throughput = states[slot].throughput.rgb;
+  bestB1 = states[slot].throughput.w;
+  radiance = states[slot].radiance.rgb;
+  bestB2 = states[slot].radiance.w;
+  hitPoint = states[slot].hitPoint.xyz;
+  hitNormal = states[slot].hitNormal.xyz;
+  shadowDir = states[slot].shadowDir.xyz;
+  shadowTMax = states[slot].shadowDir.w;
+  lightColor = states[slot].lightColor.rgb;
+  nDotL = states[slot].lightColor.w;
+  phase = states[slot].phase;
+  depth = states[slot].depth;
+  lightIndex = states[slot].lightIndex;
+  sp = states[slot].stackSize;
+  hitPrim = states[slot].hitPrim;
+  hitMaterial = states[slot].hitMaterial;
+  for (uint i = 0u; i < sp; ++i) stack[i] = states[slot].stack[i];
+}
+
+// SPEC section 7: floor(clamp(c, 0, 1) * 255); NaN becomes 0.
+uint toByte(float c) { return c > 0.0 ? uint(floor(min(c, 1.0) * 255.0)) : 0u; }
+
+void main() {
+  // Workgroups visit the band's tiles in a scattered order, so that each of lavapipe's threads
+  // (which take contiguous runs of workgroups) gets a share of every part of the image.
+  const uint tilesInBand = kTilesX * ((kBandHeight + kWorkgroupSize - 1u) / kWorkgroupSize);
+  uint tile = (gl_WorkGroupID.x * kTileOrderStride) % tilesInBand;
+  uint x = (tile % kTilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
+  uint yInBand = (tile / kTilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
+  uint y = pc.bandY0 + yInBand;
+  if (x >= kWidth || yInBand >= kBandHeight || y >= kHeight) return;
+  uint slot = yInBand * kWidth + x;
+
+  if (pc.resume != 0u) {
+    if ((pixels[slot] >> 24) != 0u) return;   // finished in an earlier round
+    loadState(slot);
+  } else {
+    // Camera ray through the pixel centre (SPEC section 3).
+    float a = (float(x) + 0.5) - 0.5 * float(kWidth);
+    float b = 0.5 * float(kHeight) - (float(y) + 0.5);
+    vec3 dir = normalize(a * pc.cameraRight.xyz + b * pc.cameraUp.xyz - pc.cameraBack.xyz);
+    throughput = vec3(1.0);
+    radiance = vec3(0.0);
+    depth = 0u;
+    startRay(pc.cameraOrigin.xyz, dir, 0.0);
+  }
+
+  for (uint step = 0u; step < kStepBudget && phase != kPhaseDone; ++step) {
+    if (phase == kPhaseTrace) {
+      if (sp > 0u)
+        traceStep();
+      else if (hitPrim != kNoHit)
+        beginShading();
+      else
+        phase = kPhaseDone;   // a miss is black
+    } else if (phase == kPhaseLight) {
+      lightStep();
+    } else {
+      shadowStep();
+    }
+  }
+
+  if (shadowRays + reflectionRays > 0u) {
+    atomicAdd(counters.shadowRays, shadowRays);
+    atomicAdd(counters.reflectionRays, reflectionRays);
+  }
+  if (phase != kPhaseDone) {
+    saveState(slot);
+    pixels[slot] = 0u;
+    atomicAdd(counters.suspended, 1u);
+    return;
+  }
+  pixels[slot] = toByte(radiance.r) | (toByte(radiance.g) << 8) | (toByte(radiance.b) << 16) | (255u << 24);
+}

@@ -1,0 +1,63 @@
+// The shader sees exactly the bytes the host wrote: every struct of gpu_types.h goes through
+// layout_probe.comp, which copies it out field by field.
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "gpu/compute_pipeline.h"
+#include "layout_probe.comp.h"
+#include "test_support.h"
+
+using namespace vkrt;
+
+namespace {
+
+// Two elements whose bytes are all distinct, so a wrong offset or stride shows.
+template <class T>
+std::vector<T> patterned(std::uint32_t seed) {
+  std::vector<T> v(2);
+  auto* words = reinterpret_cast<std::uint32_t*>(v.data());
+  for (std::size_t i = 0; i < sizeof(T) * 2 / 4; ++i) {
+    // Finite float bit patterns: exponent bits kept away from all-ones.
+    words[i] = 0x3F000000u + seed * 0x10000u + static_cast<std::uint32_t>(i);
+  }
+  return v;
+}
+
+template <class T>
+void appendSecond(std::vector<std::uint32_t>& expected, const std::vector<T>& v) {
+  const auto* words = reinterpret_cast<const std::uint32_t*>(&v[1]);
+  expected.insert(expected.end(), words, words + sizeof(T) / 4);
+}
+
+}  // namespace
+
+TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
+  VKRT_REQUIRE_GPU(context);
+  auto triangles = patterned<gpu::GpuTriangle>(1);
+  auto normals = patterned<gpu::GpuTriangleNormals>(2);
+  auto spheres = patterned<gpu::GpuSphere>(3);
+  auto lights = patterned<gpu::GpuLight>(4);
+  auto materials = patterned<gpu::GpuMaterial>(5);
+  auto nodes = patterned<gpu::GpuBvhNode>(6);
+  std::vector<std::uint32_t> expected;
+  appendSecond(expected, triangles);
+  appendSecond(expected, normals);
+  appendSecond(expected, spheres);
+  appendSecond(expected, lights);
+  appendSecond(expected, materials);
+  appendSecond(expected, nodes);
+
+  Buffer b0 = Buffer::withContents(*context, triangles), b1 = Buffer::withContents(*context, normals),
+         b2 = Buffer::withContents(*context, spheres), b3 = Buffer::withContents(*context, lights),
+         b4 = Buffer::withContents(*context, materials), b5 = Buffer::withContents(*context, nodes);
+  Buffer out(*context, expected.size() * 4, true);
+  ComputePipeline probe(*context, kLayoutProbeSpirv, sizeof(kLayoutProbeSpirv), 7, {}, 0);
+  const Buffer* all[] = {&b0, &b1, &b2, &b3, &b4, &b5, &out};
+  for (std::uint32_t i = 0; i < 7; ++i) probe.bind(i, *all[i]);
+  probe.run(nullptr, 1);
+  std::vector<std::uint32_t> got(expected.size());
+  std::memcpy(got.data(), out.mapped(), got.size() * 4);
+  for (std::size_t i = 0; i < expected.size(); ++i) ASSERT_EQ(got[i], expected[i]) << "word " << i;
+  EXPECT_EQ(context->validationMessages(), 0);
+}

@@ -1,0 +1,172 @@
+// The Vulkan backend against the CPU reference (the oracle) on every scene we have, against
+// the course references, and on a scene that exceeds llvmpipe's loop budget. The validation
+// layer is on for all of them (renderGpu checks that it stays silent).
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "image/compare.h"
+#include "image/png.h"
+#include "scene/parse.h"
+#include "test_support.h"
+
+using namespace vkrt;
+using namespace vkrt::test;
+
+namespace {
+
+// GPU (float32) against CPU (double): a silhouette or shadow-edge pixel may flip between hit
+// and miss where the two round differently; allow 0.1% of pixels (at least 3) off by more
+// than 2/255, and nothing else.
+long long allowedFlips(const Image& img) { return std::max<long long>(3, img.width * img.height / 1000); }
+
+std::vector<std::string> featureScenes() {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(sourcePath("scenes")))
+    if (e.path().extension() == ".test") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+class GpuFeatureScene : public ::testing::TestWithParam<std::string> {};
+class GpuCourseScene : public ::testing::TestWithParam<const char*> {};
+
+std::string courseTestName(const ::testing::TestParamInfo<const char*>& p) {
+  std::string n = p.param;
+  for (char& c : n)
+    if (c == '-') c = '_';
+  return n;
+}
+
+}  // namespace
+
+TEST_P(GpuFeatureScene, MatchesCpuReference) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc scene = parseSceneFile(sourcePath("scenes/" + GetParam() + ".test"));
+  Image gpu = renderGpu(scene);
+  Image cpu = renderScene(scene);
+  EXPECT_TRUE(imagesClose("gpu-vs-cpu/" + GetParam(), gpu, cpu, 2, allowedFlips(cpu)));
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, GpuFeatureScene, ::testing::ValuesIn(featureScenes()),
+                         [](const auto& p) { return p.param; });
+
+// Issue tolerance: at most 30 pixels per scene off by more than 2/255 from the course's
+// reference; and against the CPU reference, the same flip allowance as above.
+TEST_P(GpuCourseScene, MatchesReferenceAndCpu) {
+  auto dir = cse167Dir();
+  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse167 not found");
+  VKRT_REQUIRE_GPU(context);
+  std::string name = GetParam();
+  SceneDesc scene = parseScene(readFile(*dir + "/scenes/" + name + ".test"), name + ".test");
+  Image gpu = renderGpu(scene);
+  Image expected = readImage(*dir + "/verified-matches/" + name + ".png");
+  EXPECT_TRUE(imagesClose("course-gpu/" + name, gpu, expected, 2, 30));
+  ImageDiff d = compare(gpu, expected);
+  std::printf("[ stats    ] %s (vulkan): %zu pixels differ at all, %lld by more than 2/255, max %d/255\n",
+              name.c_str(), d.differing.size(), d.countOver(2), d.maxChannelDiff);
+  Image cpu = renderScene(scene);
+  EXPECT_TRUE(imagesClose("course-gpu-vs-cpu/" + name, gpu, cpu, 2, allowedFlips(cpu)));
+}
+
+INSTANTIATE_TEST_SUITE_P(Cse167, GpuCourseScene,
+                         ::testing::Values("scene4-ambient", "scene4-diffuse", "scene4-emission", "scene4-specular",
+                                           "scene5", "scene6", "scene7"),
+                         courseTestName);
+
+// A pixel whose work exceeds llvmpipe's 65,535 loop iterations: 300 point lights, each a
+// shadow ray through a BVH of 2000 triangles, on a pair of facing mirrors with maxdepth 8.
+// Rendered in one go it would come out wrong with no error; vkrt suspends and resumes it.
+std::string loopBudgetScene() {
+  std::string s = "size 32 24\ncamera 0 -1 0.5 0 1 0.5 0 0 1 60\nmaxdepth 8\n";
+  for (int i = 0; i < 300; ++i) {
+    double x = -2.5 + 5.0 * (i % 20) / 19.0, z = 0.2 + 3.0 * (i / 20) / 14.0;
+    s += "point " + std::to_string(x) + " 0 " + std::to_string(z) + " 0.004 0.004 0.004\n";
+  }
+  s += "ambient 0.01 0.01 0.01\ndiffuse 0.3 0.3 0.3\nspecular 0.7 0.7 0.7\nshininess 30\n";
+  s += "vertex -3 -2 -1\nvertex 3 -2 -1\nvertex 3 -2 4\nvertex -3 -2 4\ntri 0 1 2\ntri 0 2 3\n";
+  s += "pushTransform\ntranslate 0 4 0\ntri 0 2 1\ntri 0 3 2\npopTransform\n";
+  // A cloud of small triangles between the mirrors: many BVH nodes on every shadow ray.
+  int v = 4;
+  for (int i = 0; i < 2000; ++i) {
+    double x = -2.0 + 4.0 * ((i * 37) % 100) / 100.0, y = -1.5 + 3.0 * ((i * 53) % 97) / 97.0,
+           z = -0.5 + 4.0 * ((i * 71) % 89) / 89.0;
+    s += "vertex " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+    s += "vertex " + std::to_string(x + 0.02) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+    s += "vertex " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z + 0.02) + "\n";
+    s += "tri " + std::to_string(v) + " " + std::to_string(v + 1) + " " + std::to_string(v + 2) + "\n";
+    v += 3;
+  }
+  return s;
+}
+
+TEST(GpuLoopBudget, SceneBeyondTheBudgetMatchesCpu) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc scene = parseScene(loopBudgetScene(), "loop-budget.test");
+  VulkanTimings timings;
+  Image gpu = renderGpu(scene, 0, &timings);
+  EXPECT_GT(timings.suspensions, 0u) << "the scene no longer exceeds the step budget: make it harder";
+  EXPECT_GT(timings.dispatches, timings.bands);
+  Image cpu = renderScene(scene);
+  EXPECT_TRUE(imagesClose("gpu-loop-budget", gpu, cpu, 2, allowedFlips(cpu)));
+}
+
+TEST(GpuLoopBudget, SuspendingAfterEveryFewStepsChangesNoPixel) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc scene = parseSceneFile(sourcePath("scenes/deep_mirrors.test"));
+  VulkanTimings tiny;
+  Image whole = renderGpu(scene);
+  Image pieces = renderGpu(scene, 5, &tiny);
+  EXPECT_GT(tiny.suspensions, 1000u);
+  EXPECT_TRUE(imagesClose("gpu-step-budget", pieces, whole, 0, 0));
+}
+
+TEST(GpuCli, DefaultBackendIsVulkanAndStatsShowItsStages) {
+  VKRT_REQUIRE_GPU(context);
+  std::string dir = freshDir("gpu-cli/stats");
+  RunResult r = runVkrt("--stats --validation -o " + dir + "/o.png " + sourcePath("scenes/spheres.test"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* key : {"backend vulkan (", "instance", "device", "upload", "pipeline", "first dispatch (with JIT)",
+                          "dispatch", "readback", "rays"})
+    EXPECT_NE(r.output.find(key), std::string::npos) << key << "\n" << r.output;
+  EXPECT_EQ(r.output.find("validation:"), std::string::npos) << r.output;
+  Image gpu = readImage(dir + "/o.png");
+  Image cpu = renderScene(parseSceneFile(sourcePath("scenes/spheres.test")));
+  EXPECT_TRUE(imagesClose("gpu-cli", gpu, cpu, 2, allowedFlips(cpu)));
+}
+
+TEST(GpuCli, DeviceChoiceAndDeviceErrors) {
+  VKRT_REQUIRE_GPU(context);
+  std::string dir = freshDir("gpu-cli/devices");
+  RunResult list = runVkrt("--list-devices");
+  EXPECT_EQ(list.exitCode, 0) << list.output;
+  EXPECT_NE(list.output.find("0: "), std::string::npos) << list.output;
+  RunResult byIndex = runVkrt("-q --device 0 -o " + dir + "/a.png " + sourcePath("scenes/spheres.test"));
+  EXPECT_EQ(byIndex.exitCode, 0) << byIndex.output;
+  RunResult missing = runVkrt("--device 99 -o " + dir + "/b.png " + sourcePath("scenes/spheres.test"));
+  EXPECT_EQ(missing.exitCode, 3) << missing.output;
+  EXPECT_NE(missing.output.find("no Vulkan device 99; the devices are:"), std::string::npos) << missing.output;
+  RunResult noName = runVkrt("--device no-such-gpu -o " + dir + "/b.png " + sourcePath("scenes/spheres.test"));
+  EXPECT_EQ(noName.exitCode, 3) << noName.output;
+  // No driver at all: exit 3, and the message says what to install. No file written.
+  RunResult noDriver = runVkrt("-o " + dir + "/c.png " + sourcePath("scenes/spheres.test"),
+                               "VK_DRIVER_FILES=/nonexistent/icd.json VK_ICD_FILENAMES=/nonexistent/icd.json");
+  EXPECT_EQ(noDriver.exitCode, 3) << noDriver.output;
+  EXPECT_NE(noDriver.output.find("mesa-vulkan-drivers"), std::string::npos) << noDriver.output;
+  EXPECT_FALSE(fileExists(dir + "/b.png"));
+  EXPECT_FALSE(fileExists(dir + "/c.png"));
+  // The CPU backend needs no device.
+  RunResult cpu = runVkrt("-q --backend cpu -o " + dir + "/d.png " + sourcePath("scenes/spheres.test"),
+                          "VK_DRIVER_FILES=/nonexistent/icd.json VK_ICD_FILENAMES=/nonexistent/icd.json");
+  EXPECT_EQ(cpu.exitCode, 0) << cpu.output;
+}
+
+TEST(GpuEdgeCases, EmptySceneAndLightsOnlyAreBlack) {
+  VKRT_REQUIRE_GPU(context);
+  for (const char* text : {"size 16 8\ncamera 0 0 5 0 0 0 0 1 0 45\n",
+                           "size 16 8\ncamera 0 0 5 0 0 0 0 1 0 45\npoint 0 0 2 1 1 1\ndirectional 0 0 1 1 1 1\n"}) {
+    Image img = renderGpu(parseScene(text, "empty.test"));
+    ASSERT_EQ(img.width, 16);
+    for (std::uint8_t b : img.rgb) ASSERT_EQ(b, 0);
+  }
+}

@@ -1,0 +1,38 @@
+// layout_probe.comp: copies every struct of gpu_types.h, field by field, into a uint array, so
+// a test can check that the shader reads exactly the bytes the host wrote.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+
+#include "gpu_types.h"
+
+layout(local_size_x = 1) in;
+
+layout(std430, binding = 0) readonly buffer Triangles { GpuTriangle triangles[]; };
+layout(std430, binding = 1) readonly buffer TriangleNormals { GpuTriangleNormals triangleNormals[]; };
+layout(std430, binding = 2) readonly buffer Spheres { GpuSphere spheres[]; };
+layout(std430, binding = 3) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, binding = 4) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, binding = 5) readonly buffer BvhNodes { GpuBvhNode nodes[]; };
+layout(std430, binding = 6) writeonly buffer Out { uint words[]; };
+
+uint n = 0u;
+void put(float f) { words[n++] = floatBitsToUint(f); }
+void put(uint u) { words[n++] = u; }
+void put(vec4 v) { put(v.x); put(v.y); put(v.z); put(v.w); }
+
+void main() {
+  // Element 1 of each array, so that the array stride is checked as well as the offsets.
+  GpuTriangle t = triangles[1];
+  put(t.p0); put(t.p1); put(t.p2); put(t.materialIndex); put(t.normalsIndex); put(t.pad0); put(t.pad1);
+  GpuTriangleNormals tn = triangleNormals[1];
+  put(tn.n0); put(tn.n1); put(tn.n2);
+  GpuSphere s = spheres[1];
+  put(s.objectFromWorld[0]); put(s.objectFromWorld[1]); put(s.objectFromWorld[2]); put(s.objectFromWorld[3]);
+  put(s.centerRadius); put(s.materialIndex); put(s.pad0); put(s.pad1); put(s.pad2);
+  GpuLight l = lights[1];
+  put(l.positionOrDirection); put(l.color); put(l.attenuation);
+  GpuMaterial m = materials[1];
+  put(m.ambient); put(m.diffuse); put(m.specular); put(m.emission);
+  GpuBvhNode b = nodes[1];
+  put(b.minX); put(b.minY); put(b.minZ); put(b.leftOrFirst); put(b.maxX); put(b.maxY); put(b.maxZ); put(b.primCount);
+}
