@@ -28,7 +28,8 @@ void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
     std::fprintf(stderr, "    instance  %9.1f ms\n", r.instanceSeconds * ms);
     std::fprintf(stderr, "    device    %9.1f ms\n", r.deviceSeconds * ms);
     std::fprintf(stderr, "    upload    %9.1f ms\n", r.uploadSeconds * ms);
-    std::fprintf(stderr, "    pipeline  %9.1f ms\n", r.pipelineSeconds * ms);
+    std::fprintf(stderr, "    pipeline  %9.1f ms  (%s reads)\n", r.pipelineSeconds * ms,
+                 r.texelReads ? "texel-buffer" : "storage-buffer");
     std::fprintf(stderr, "    first dispatch (with JIT) %9.1f ms\n", r.firstDispatchSeconds * ms);
     std::fprintf(stderr, "    dispatch  %9.1f ms  (%u bands, %u dispatches, %llu pixel suspensions)\n",
                  r.dispatchSeconds * ms, r.bands, r.dispatches, static_cast<unsigned long long>(r.suspensions));

@@ -109,6 +109,7 @@ TEST(Bvh, EveryPrimitiveInExactlyOneLeafInsideEveryEnclosingBox) {
   }
   for (std::size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << "primitive " << i;
   EXPECT_LT(maxDepth, 40);   // a balanced-ish tree for 3200 scattered primitives
+  EXPECT_EQ(bvh.depth, maxDepth);
 }
 
 TEST(Bvh, IdenticalPrimitivesStillSplit) {

@@ -52,7 +52,8 @@ TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
          b2 = Buffer::withContents(*context, spheres), b3 = Buffer::withContents(*context, lights),
          b4 = Buffer::withContents(*context, materials), b5 = Buffer::withContents(*context, nodes);
   Buffer out(*context, expected.size() * 4, true);
-  ComputePipeline probe(*context, kLayoutProbeSpirv, sizeof(kLayoutProbeSpirv), 7, {}, 0);
+  ComputePipeline probe(*context, kLayoutProbeSpirv, sizeof(kLayoutProbeSpirv),
+                        std::vector<VkDescriptorType>(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER), {}, 0);
   const Buffer* all[] = {&b0, &b1, &b2, &b3, &b4, &b5, &out};
   for (std::uint32_t i = 0; i < 7; ++i) probe.bind(i, *all[i]);
   probe.run(nullptr, 1);

@@ -48,6 +48,18 @@ TEST_P(GpuFeatureScene, MatchesCpuReference) {
   EXPECT_TRUE(imagesClose("gpu-vs-cpu/" + GetParam(), gpu, cpu, 2, allowedFlips(cpu)));
 }
 
+// The two ways of reading the scene differ only in their loads: the images must be identical.
+TEST_P(GpuFeatureScene, StorageAndTexelReadsAgreeExactly) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc scene = parseSceneFile(sourcePath("scenes/" + GetParam() + ".test"));
+  VulkanTimings storageRun, texelRun;
+  Image storage = renderGpu(scene, 0, &storageRun, SceneReads::Storage);
+  Image texel = renderGpu(scene, 0, &texelRun, SceneReads::Texel);
+  EXPECT_FALSE(storageRun.texelReads);
+  EXPECT_TRUE(texelRun.texelReads);
+  EXPECT_TRUE(imagesClose("gpu-reads/" + GetParam(), texel, storage, 0, 0));
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuFeatureScene, ::testing::ValuesIn(featureScenes()),
                          [](const auto& p) { return p.param; });
 

@@ -108,11 +108,12 @@ Context* gpuContextOrSkip() {
   return nullptr;
 }
 
-Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget, VulkanTimings* timings) {
+Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget, VulkanTimings* timings, SceneReads reads) {
   Context* context = gpuContextOrSkip();
   if (!context) return Image();
   VulkanOptions options;
   options.stepBudget = stepBudget;
+  options.reads = reads;
   int before = context->validationMessages();
   Image image = renderVulkan(*context, flatten(scene), options, nullptr, timings);
   EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";

@@ -46,7 +46,8 @@ Image renderScene(const SceneDesc& scene);
 Context* gpuContextOrSkip();
 
 // Renders with the Vulkan backend; `stepBudget` 0 is the default.
-Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget = 0, VulkanTimings* timings = nullptr);
+Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget = 0, VulkanTimings* timings = nullptr,
+                SceneReads reads = SceneReads::Auto);
 
 // Result of running the vkrt binary.
 struct RunResult {

@@ -19,6 +19,8 @@ const char* usageText() {
          "                         default: a discrete or integrated GPU if present, else the CPU\n"
          "  --list-devices         list the Vulkan devices and exit\n"
          "  --validation           enable the Vulkan validation layer (also VKRT_VALIDATION=1)\n"
+         "  --reads auto|texel|storage  how the shader reads the scene (default auto: texel\n"
+         "                         buffers, faster on lavapipe, where the device's limits allow)\n"
          "  --threads N            worker threads for the CPU backend (default: all cores)\n"
          "  --stats                print a timing breakdown and ray counts on stderr\n"
          "  -q, --quiet            print nothing but errors\n"
@@ -71,6 +73,16 @@ Options parseOptions(const std::vector<std::string>& args) {
       if (o.request.device.empty()) throw UsageError("--device needs an index or a name");
     } else if (a == "--list-devices") {
       o.listDevices = true;
+    } else if (name == "--reads") {
+      std::string r = take(name);
+      if (r == "auto")
+        o.request.reads = SceneReads::Auto;
+      else if (r == "texel")
+        o.request.reads = SceneReads::Texel;
+      else if (r == "storage")
+        o.request.reads = SceneReads::Storage;
+      else
+        throw UsageError("unknown --reads '" + r + "' (expected: auto, texel or storage)");
     } else if (a == "--validation") {
       o.request.validation = true;
     } else if (name == "--step-budget") {   // for tests of the loop budget; not in --help

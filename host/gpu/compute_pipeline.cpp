@@ -1,18 +1,20 @@
 // Compute pipeline creation and synchronous dispatch.
 #include "gpu/compute_pipeline.h"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace vkrt {
 
 ComputePipeline::ComputePipeline(const Context& context, const std::uint32_t* spirv, std::size_t spirvBytes,
-                                 std::uint32_t bindingCount, const std::vector<std::uint32_t>& specConstants,
-                                 std::uint32_t pushConstantBytes)
+                                 const std::vector<VkDescriptorType>& bindingTypes,
+                                 const std::vector<std::uint32_t>& specConstants, std::uint32_t pushConstantBytes)
     : context_(context), device_(context.device()), pushConstantBytes_(pushConstantBytes) {
+  const auto bindingCount = static_cast<std::uint32_t>(bindingTypes.size());
   try {
     std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
     for (std::uint32_t i = 0; i < bindingCount; ++i)
-      bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+      bindings[i] = {i, bindingTypes[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     setInfo.bindingCount = bindingCount;
     setInfo.pBindings = bindings.data();
@@ -47,11 +49,18 @@ ComputePipeline::ComputePipeline(const Context& context, const std::uint32_t* sp
     vk::vkDestroyShaderModule(device_, module, nullptr);
     VK_CHECK(r);
 
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, bindingCount};
+    std::vector<VkDescriptorPoolSize> poolSizes;
+    for (VkDescriptorType type : bindingTypes) {
+      auto it = std::find_if(poolSizes.begin(), poolSizes.end(), [&](const auto& p) { return p.type == type; });
+      if (it == poolSizes.end())
+        poolSizes.push_back({type, 1});
+      else
+        ++it->descriptorCount;
+    }
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &poolSize;
+    poolInfo.poolSizeCount = static_cast<std::uint32_t>(poolSizes.size());
+    poolInfo.pPoolSizes = poolSizes.data();
     VK_CHECK(vk::vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
     VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     allocInfo.descriptorPool = pool_;
@@ -77,6 +86,8 @@ ComputePipeline::ComputePipeline(const Context& context, const std::uint32_t* sp
 }
 
 ComputePipeline::~ComputePipeline() {
+  for (VkBufferView v : views_) vk::vkDestroyBufferView(device_, v, nullptr);
+  views_.clear();
   if (fence_) vk::vkDestroyFence(device_, fence_, nullptr);
   if (commandPool_) vk::vkDestroyCommandPool(device_, commandPool_, nullptr);
   if (pool_) vk::vkDestroyDescriptorPool(device_, pool_, nullptr);
@@ -99,6 +110,25 @@ void ComputePipeline::bind(std::uint32_t binding, const Buffer& buffer) {
   write.descriptorCount = 1;
   write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   write.pBufferInfo = &info;
+  vk::vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+}
+
+void ComputePipeline::bindTexels(std::uint32_t binding, const Buffer& buffer, VkFormat format,
+                                 std::size_t texelBytes) {
+  VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+  info.buffer = buffer.handle();
+  info.format = format;
+  info.offset = 0;
+  info.range = buffer.size() / texelBytes * texelBytes;
+  VkBufferView view = VK_NULL_HANDLE;
+  VK_CHECK(vk::vkCreateBufferView(device_, &info, nullptr, &view));
+  views_.push_back(view);
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set_;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+  write.pTexelBufferView = &view;
   vk::vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
 

@@ -1,6 +1,6 @@
-// A compute pipeline over N storage buffers (bindings 0..N-1 of set 0), with uint
-// specialization constants (ids 0..) and a push-constant block, plus the command buffer and
-// fence to run it synchronously.
+// A compute pipeline over buffers at bindings 0..N-1 of set 0 (storage buffers or uniform
+// texel buffers), with uint specialization constants (ids 0..) and a push-constant block,
+// plus the command buffer and fence to run it synchronously.
 #pragma once
 
 #include <cstdint>
@@ -14,13 +14,17 @@ namespace vkrt {
 class ComputePipeline {
  public:
   ComputePipeline(const Context& context, const std::uint32_t* spirv, std::size_t spirvBytes,
-                  std::uint32_t bindingCount, const std::vector<std::uint32_t>& specConstants,
+                  const std::vector<VkDescriptorType>& bindingTypes, const std::vector<std::uint32_t>& specConstants,
                   std::uint32_t pushConstantBytes);
   ~ComputePipeline();
   ComputePipeline(const ComputePipeline&) = delete;
   ComputePipeline& operator=(const ComputePipeline&) = delete;
 
+  // A storage buffer at `binding`.
   void bind(std::uint32_t binding, const Buffer& buffer);
+  // A uniform texel buffer at `binding`: a view of `buffer` as texels of `format`
+  // (`texelBytes` each). The pipeline owns the view.
+  void bindTexels(std::uint32_t binding, const Buffer& buffer, VkFormat format, std::size_t texelBytes);
 
   // Records: an optional fill of `clear` (first 4 bytes to 0), push constants, one dispatch of
   // `groups` workgroups (x), and a barrier that makes the shader's writes visible to the host;
@@ -38,6 +42,7 @@ class ComputePipeline {
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
+  std::vector<VkBufferView> views_;
   std::uint32_t pushConstantBytes_;
 };
 

@@ -57,7 +57,9 @@ namespace vkrt::vk {
   X(vkDestroyFence)                            \
   X(vkWaitForFences)                           \
   X(vkResetFences)                             \
-  X(vkDeviceWaitIdle)
+  X(vkDeviceWaitIdle)                          \
+  X(vkCreateBufferView)                        \
+  X(vkDestroyBufferView)
 
 #define VKRT_VK_DECLARE(name) inline PFN_##name name = nullptr;
 inline PFN_vkGetInstanceProcAddr vkGetInstanceProcAddr = nullptr;

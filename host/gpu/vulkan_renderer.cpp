@@ -7,7 +7,8 @@
 
 #include "gpu/compute_pipeline.h"
 #include "gpu/device_error.h"
-#include "raytrace.comp.h"   // kRaytraceSpirv: the shader, compiled at build time
+#include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
+#include "raytrace_texel.comp.h"   // kRaytraceTexelSpirv: the same with VKRT_TEXEL_READS
 
 namespace vkrt {
 namespace {
@@ -67,11 +68,32 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   spec[gpu::kSpecTilesX] = tilesX;
   spec[gpu::kSpecTileOrderStride] = scatterStride(tilesInBand);
   spec[gpu::kSpecPrimCount] = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
-  ComputePipeline pipeline(context, kRaytraceSpirv, sizeof(kRaytraceSpirv), gpu::kBindingCount, spec,
+  spec[gpu::kSpecStackSize] = static_cast<std::uint32_t>(scene.bvh.depth + 1);
+  // Texel reads where every scene buffer fits the device's texel-count limit.
+  const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
+  const Buffer* sceneBuffers[] = {&triangles, &normals, &spheres, &lights, &materials, &nodes};
+  bool texelsFit = primRefs.size() / 4 <= maxTexels;
+  for (const Buffer* b : sceneBuffers) texelsFit = texelsFit && b->size() / 16 <= maxTexels;
+  t.texelReads = options.reads == SceneReads::Texel || (options.reads == SceneReads::Auto && texelsFit);
+  if (t.texelReads && !texelsFit)
+    throw DeviceError("the scene is too large for texel-buffer reads on this device (limit " +
+                      std::to_string(maxTexels) + " texels); use storage-buffer reads");
+  std::vector<VkDescriptorType> types(gpu::kBindingCount, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  if (t.texelReads)
+    std::fill(types.begin(), types.begin() + gpu::kBindingPixels, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
+  ComputePipeline pipeline(context, t.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv,
+                           t.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv), types, spec,
                            sizeof(gpu::GpuPushConstants));
   const Buffer* bound[gpu::kBindingCount] = {&triangles, &normals, &spheres, &lights, &materials,
                                              &nodes,     &primRefs, &pixels, &states, &counters};
-  for (std::uint32_t b = 0; b < gpu::kBindingCount; ++b) pipeline.bind(b, *bound[b]);
+  for (std::uint32_t b = 0; b < gpu::kBindingCount; ++b) {
+    if (!t.texelReads || b >= gpu::kBindingPixels)
+      pipeline.bind(b, *bound[b]);
+    else if (b == gpu::kBindingPrimRefs)
+      pipeline.bindTexels(b, *bound[b], VK_FORMAT_R32_UINT, 4);
+    else
+      pipeline.bindTexels(b, *bound[b], VK_FORMAT_R32G32B32A32_UINT, 16);
+  }
   t.pipelineSeconds = secondsSince(t0);
 
   Image image(static_cast<int>(width), static_cast<int>(height));

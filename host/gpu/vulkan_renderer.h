@@ -13,7 +13,12 @@
 
 namespace vkrt {
 
+// How the shader reads the scene: storage buffers, or uniform texel buffers (faster on
+// lavapipe; limited to maxTexelBufferElements texels per buffer).
+enum class SceneReads { Auto, Storage, Texel };
+
 struct VulkanOptions {
+  SceneReads reads = SceneReads::Auto;    // Auto: texel buffers where the device's limits allow
   std::uint32_t stepBudget = 0;           // steps per pixel per dispatch; 0: kDefaultStepBudget
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
   std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixels done, pixels total)
@@ -24,6 +29,7 @@ struct VulkanTimings {
          readbackSeconds = 0;
   std::uint32_t bands = 0, dispatches = 0;
   std::uint64_t suspensions = 0;   // pixel-dispatches that ran out of steps
+  bool texelReads = false;         // which shader variant ran
 };
 
 // Throws DeviceError.

@@ -53,6 +53,7 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
   t0 = std::chrono::steady_clock::now();
   VulkanOptions options;
   options.stepBudget = request.stepBudget;
+  options.reads = request.reads;
   options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
   VulkanTimings timings;
   Image image = renderVulkan(context, gpuScene, options, &report.rays, &timings);
@@ -65,6 +66,7 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
   report.bands = timings.bands;
   report.dispatches = timings.dispatches;
   report.suspensions = timings.suspensions;
+  report.texelReads = timings.texelReads;
   report.validationMessages = context.validationMessages();
   return image;
 }

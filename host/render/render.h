@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cpu/reference.h"
+#include "gpu/vulkan_renderer.h"
 #include "render/progress.h"
 #include "scene/scene_desc.h"
 
@@ -22,6 +23,7 @@ struct RenderRequest {
   std::string device;                  // Vulkan: "" (choose), an index or part of a name
   bool validation = false;             // Vulkan: enable the validation layer
   std::uint32_t stepBudget = 0;        // Vulkan: steps per pixel per dispatch (0: default)
+  SceneReads reads = SceneReads::Auto; // Vulkan: how the shader reads the scene
 };
 
 struct RenderReport {
@@ -35,6 +37,7 @@ struct RenderReport {
          dispatchSeconds = 0, readbackSeconds = 0;
   std::uint32_t bands = 0, dispatches = 0;
   std::uint64_t suspensions = 0;
+  bool texelReads = false;
   int validationMessages = 0;
   RayCounts rays;
 };

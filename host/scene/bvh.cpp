@@ -75,6 +75,7 @@ class Builder {
   }
 
   void split(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth) {
+    out_.depth = std::max(out_.depth, depth + 1);
     Box bounds, centroids;
     for (std::uint32_t i = begin; i < end; ++i) {
       bounds.grow(prims_[i].box);

@@ -18,6 +18,8 @@ struct Bvh {
   std::vector<gpu::GpuBvhNode> nodes;
   // Leaf contents: triangle index, or sphere index | kPrimSphereBit.
   std::vector<std::uint32_t> primRefs;
+  // Levels of the tree (1 for a lone root); a traversal stack needs at most depth + 1 entries.
+  int depth = 1;
 };
 
 // World-space bounds of a sphere under its transform (exact for the ellipsoid).

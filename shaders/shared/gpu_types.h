@@ -116,7 +116,8 @@ GPU_CONST uint kSpecBandHeight = 5u;
 GPU_CONST uint kSpecTilesX = 6u;
 GPU_CONST uint kSpecTileOrderStride = 7u;
 GPU_CONST uint kSpecPrimCount = 8u;       // 0: no geometry (the BVH root is then an empty leaf)
-GPU_CONST uint kSpecCount = 9u;
+GPU_CONST uint kSpecStackSize = 9u;       // traversal stack entries: the BVH's depth + 1
+GPU_CONST uint kSpecCount = 10u;
 
 GPU_CONST uint kWorkgroupSize = 8u;       // 8x8 pixels per workgroup (lavapipe: 8 wide or more)
 
@@ -126,7 +127,8 @@ GPU_CONST uint kWorkgroupSize = 8u;       // 8x8 pixels per workgroup (lavapipe:
 // suspended (its GpuPathState saved) and resumed by the next dispatch.
 GPU_CONST uint kDefaultStepBudget = 8192u;
 GPU_CONST uint kMaxLeafPrims = 4u;
-// Entries in a traversal stack (the BVH builder bounds the depth below this).
+// Entries in a saved traversal stack (the BVH builder bounds the depth below this; the
+// shader's own stack is sized to the scene's BVH by kSpecStackSize).
 GPU_CONST uint kTraversalStackSize = 96u;
 
 // Phases of a pixel's state machine.
