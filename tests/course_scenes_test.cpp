@@ -50,12 +50,7 @@ TEST_P(CourseScene, MatchesVerifiedReference) {
 INSTANTIATE_TEST_SUITE_P(Cse167, CourseScene,
                          ::testing::Values("scene4-ambient", "scene4-diffuse", "scene4-emission", "scene4-specular",
                                            "scene5", "scene6", "scene7"),
-                         [](const auto& p) {
-                           std::string n = p.param;
-                           for (char& c : n)
-                             if (c == '-') c = '_';
-                           return n;
-                         });
+                         [](const auto& p) { return testName(p.param); });
 
 // scene1-3 have only JPEG previews (lossy: ringing at edges). Each preview is compared with a
 // render of the scene under the preview's camera (the file's commented-out camera lines).
@@ -128,9 +123,4 @@ INSTANTIATE_TEST_SUITE_P(Cse167, CoursePreview,
                                            Preview{"scene2-camera2", "scene2", "camera +2 +2 2 0 0 0 -1 -1 2 60"},
                                            Preview{"scene2-camera3", "scene2", "camera -2 -2 -2 0 0 0 -1 -1 2 60"},
                                            Preview{"scene3", "scene3", ""}),
-                         [](const auto& p) {
-                           std::string n = p.param.image;
-                           for (char& c : n)
-                             if (c == '-') c = '_';
-                           return n;
-                         });
+                         [](const auto& p) { return testName(p.param.image); });

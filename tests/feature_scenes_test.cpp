@@ -14,14 +14,6 @@ using namespace vkrt::test;
 
 namespace {
 
-std::vector<std::string> sceneNames() {
-  std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(sourcePath("scenes")))
-    if (e.path().extension() == ".test") names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 SceneDesc load(const std::string& name) { return parseSceneFile(sourcePath("scenes/" + name + ".test")); }
 
 Image render(const SceneDesc& s, int threads) {
@@ -36,7 +28,7 @@ class FeatureScene : public ::testing::TestWithParam<std::string> {};
 }  // namespace
 
 TEST(FeatureScenes, AllPresent) {
-  auto names = sceneNames();
+  auto names = projectSceneNames();
   for (const char* n : {"showcase", "spheres", "transformed_triangles", "trinormal", "shadows", "attenuation",
                         "deep_mirrors", "non_square"})
     EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
@@ -51,7 +43,7 @@ TEST_P(FeatureScene, RendersTheSameOnOneThreadAndOnMany) {
   EXPECT_GT(lit, static_cast<long long>(one.rgb.size() / 20)) << "mostly black";
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, FeatureScene, ::testing::ValuesIn(sceneNames()),
+INSTANTIATE_TEST_SUITE_P(Scenes, FeatureScene, ::testing::ValuesIn(projectSceneNames()),
                          [](const auto& p) { return p.param; });
 
 TEST(FeatureScenes, DeepMirrorsDependOnMaxDepth) {

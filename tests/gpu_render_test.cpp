@@ -20,23 +20,9 @@ namespace {
 // than 2/255, and nothing else.
 long long allowedFlips(const Image& img) { return std::max<long long>(3, img.width * img.height / 1000); }
 
-std::vector<std::string> featureScenes() {
-  std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(sourcePath("scenes")))
-    if (e.path().extension() == ".test") names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 class GpuFeatureScene : public ::testing::TestWithParam<std::string> {};
 class GpuCourseScene : public ::testing::TestWithParam<const char*> {};
 
-std::string courseTestName(const ::testing::TestParamInfo<const char*>& p) {
-  std::string n = p.param;
-  for (char& c : n)
-    if (c == '-') c = '_';
-  return n;
-}
 
 }  // namespace
 
@@ -60,7 +46,7 @@ TEST_P(GpuFeatureScene, StorageAndTexelReadsAgreeExactly) {
   EXPECT_TRUE(imagesClose("gpu-reads/" + GetParam(), texel, storage, 0, 0));
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, GpuFeatureScene, ::testing::ValuesIn(featureScenes()),
+INSTANTIATE_TEST_SUITE_P(Scenes, GpuFeatureScene, ::testing::ValuesIn(projectSceneNames()),
                          [](const auto& p) { return p.param; });
 
 // Issue tolerance: at most 30 pixels per scene off by more than 2/255 from the course's
@@ -84,7 +70,7 @@ TEST_P(GpuCourseScene, MatchesReferenceAndCpu) {
 INSTANTIATE_TEST_SUITE_P(Cse167, GpuCourseScene,
                          ::testing::Values("scene4-ambient", "scene4-diffuse", "scene4-emission", "scene4-specular",
                                            "scene5", "scene6", "scene7"),
-                         courseTestName);
+                         [](const auto& p) { return testName(p.param); });
 
 // A pixel whose work exceeds llvmpipe's 65,535 loop iterations: 300 point lights, each a
 // shadow ray through a BVH of 2000 triangles, on a pair of facing mirrors with maxdepth 8.

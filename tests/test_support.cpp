@@ -1,6 +1,7 @@
 // Test helpers.
 #include "test_support.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -32,6 +33,20 @@ std::optional<std::string> cse167Dir() {
   fs::path dir = env ? fs::path(env) : fs::path(VKRT_SOURCE_DIR) / ".." / "shared" / "cse167";
   if (fs::is_directory(dir / "scenes")) return fs::canonical(dir).string();
   return std::nullopt;
+}
+
+std::vector<std::string> projectSceneNames() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(fs::path(VKRT_SOURCE_DIR) / "scenes"))
+    if (e.path().extension() == ".test") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string testName(std::string name) {
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
 }
 
 std::string sourcePath(const std::string& relative) { return (fs::path(VKRT_SOURCE_DIR) / relative).string(); }

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,12 @@ bool inCi();
 
 // The course data folder (../shared/cse167 beside the source tree, or $VKRT_CSE167_DIR), if present.
 std::optional<std::string> cse167Dir();
+
+// The project's scenes (scenes/*.test), by stem, sorted.
+std::vector<std::string> projectSceneNames();
+
+// A test-name-safe version of a scene name ('-' becomes '_').
+std::string testName(std::string name);
 
 // Path of a file in the project's source tree.
 std::string sourcePath(const std::string& relative);

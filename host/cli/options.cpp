@@ -30,6 +30,20 @@ const char* usageText() {
          "exit status: 0 ok, 1 usage error, 2 scene error, 3 device error, 4 I/O error\n";
 }
 
+namespace {
+
+// An integer option value in [lo, hi].
+int integerValue(const std::string& option, const std::string& v, int lo, int hi) {
+  int n = 0;
+  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+  if (ec != std::errc() || end != v.data() + v.size() || n < lo || n > hi)
+    throw UsageError(option + " expects an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                     ", got '" + v + "'");
+  return n;
+}
+
+}  // namespace
+
 Options parseOptions(const std::vector<std::string>& args) {
   Options o;
   std::optional<std::string> scene;
@@ -86,19 +100,9 @@ Options parseOptions(const std::vector<std::string>& args) {
     } else if (a == "--validation") {
       o.request.validation = true;
     } else if (name == "--step-budget") {   // for tests of the loop budget; not in --help
-      std::string v = take(name);
-      int n = 0;
-      auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-      if (ec != std::errc() || end != v.data() + v.size() || n < 1 || n > 8192)
-        throw UsageError("--step-budget expects an integer from 1 to 8192, got '" + v + "'");
-      o.request.stepBudget = static_cast<std::uint32_t>(n);
+      o.request.stepBudget = static_cast<std::uint32_t>(integerValue(name, take(name), 1, 8192));
     } else if (name == "--threads") {
-      std::string v = take(name);
-      int n = 0;
-      auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-      if (ec != std::errc() || end != v.data() + v.size() || n < 1 || n > 1024)
-        throw UsageError("--threads expects an integer from 1 to 1024, got '" + v + "'");
-      o.request.threads = n;
+      o.request.threads = integerValue(name, take(name), 1, 1024);
     } else if (a == "--stats") {
       o.stats = true;
     } else if (a == "-q" || a == "--quiet") {

@@ -102,15 +102,21 @@ ComputePipeline::~ComputePipeline() {
   setLayout_ = VK_NULL_HANDLE;
 }
 
-void ComputePipeline::bind(std::uint32_t binding, const Buffer& buffer) {
-  VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
+void ComputePipeline::write(std::uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* buffer,
+                            const VkBufferView* view) {
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   write.dstSet = set_;
   write.dstBinding = binding;
   write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  write.pBufferInfo = &info;
+  write.descriptorType = type;
+  write.pBufferInfo = buffer;
+  write.pTexelBufferView = view;
   vk::vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+}
+
+void ComputePipeline::bind(std::uint32_t binding, const Buffer& buffer) {
+  VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
+  write(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &info, nullptr);
 }
 
 void ComputePipeline::bindTexels(std::uint32_t binding, const Buffer& buffer, VkFormat format,
@@ -123,13 +129,7 @@ void ComputePipeline::bindTexels(std::uint32_t binding, const Buffer& buffer, Vk
   VkBufferView view = VK_NULL_HANDLE;
   VK_CHECK(vk::vkCreateBufferView(device_, &info, nullptr, &view));
   views_.push_back(view);
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = set_;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-  write.pTexelBufferView = &view;
-  vk::vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+  write(binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, nullptr, &view);
 }
 
 void ComputePipeline::run(const void* pushConstants, std::uint32_t groups, const Buffer* clear) {

@@ -32,6 +32,8 @@ class ComputePipeline {
   void run(const void* pushConstants, std::uint32_t groups, const Buffer* clear = nullptr);
 
  private:
+  void write(std::uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* buffer,
+             const VkBufferView* view);
   const Context& context_;
   VkDevice device_;
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;

@@ -1,5 +1,6 @@
 // Headless Vulkan context: instance, device choice, compute queue, validation messages.
 #include "gpu/context.h"
+#include "timing.h"
 
 #include <algorithm>
 #include <charconv>
@@ -13,10 +14,6 @@ namespace vkrt {
 namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 bool hasLayer(const char* name) {
   std::uint32_t n = 0;

@@ -1,5 +1,6 @@
 // The Vulkan backend's host side: upload, pipeline, band-by-band dispatch, readback.
 #include "gpu/vulkan_renderer.h"
+#include "timing.h"
 
 #include <algorithm>
 #include <chrono>
@@ -14,10 +15,6 @@ namespace vkrt {
 namespace {
 
 constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
-
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // A stride coprime with `n`, near n times the golden ratio's fraction, so that consecutive
 // workgroups land on tiles far apart.

@@ -1,5 +1,6 @@
 // parse -> build -> render (CPU reference or Vulkan) -> PNG, with a timer per stage.
 #include "render/render.h"
+#include "timing.h"
 
 #include <chrono>
 #include <memory>
@@ -12,10 +13,6 @@
 
 namespace vkrt {
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 Image renderWithCpu(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress,
                     RenderReport& report) {
