@@ -1,39 +1,48 @@
-// Binned-SAH BVH build. Boxes are computed in double and rounded outward to float, so a
-// traversal in either precision never misses a primitive that the exact test would hit.
+// Binned-SAH BVH build. Each primitive's box is computed in double and rounded outward to
+// float once, so every node box (a union of them) is conservative for a traversal in either
+// precision. Large subtrees are built on separate threads and merged in a fixed order: the
+// tree is the same whatever the thread count.
 #include "scene/bvh.h"
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
+#include <thread>
 
 namespace vkrt {
 namespace {
 
 constexpr int kBins = 16;
 constexpr std::uint32_t kMaxLeafSize = 4;
-constexpr double kTraversalCost = 1.0;   // relative to one primitive test
+constexpr float kTraversalCost = 1.0f;   // relative to one primitive test
 // Below this depth, nodes are split at the object median: with at most 2^32 primitives the
 // tree is then at most kMedianDepth + 32 deep, and traversal stacks of kMaxBvhDepth suffice.
 constexpr int kMedianDepth = 48;
 static_assert(kMedianDepth + 34 <= kMaxBvhDepth);
+// Subtrees of at least this many primitives, in the top levels, are built in parallel.
+constexpr std::uint32_t kParallelMinPrims = 50000;
+constexpr int kParallelMaxDepth = 3;   // up to 2^3 concurrent subtrees
+
+using glm::vec3;
 
 struct Box {
-  dvec3 lo{std::numeric_limits<double>::infinity()};
-  dvec3 hi{-std::numeric_limits<double>::infinity()};
-  void grow(const dvec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+  vec3 lo{std::numeric_limits<float>::infinity()};
+  vec3 hi{-std::numeric_limits<float>::infinity()};
+  void grow(const vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
   void grow(const Box& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
   bool empty() const { return lo.x > hi.x; }
-  double area() const {
-    if (empty()) return 0.0;
-    dvec3 e = hi - lo;
-    return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
+  float area() const {
+    if (empty()) return 0.0f;
+    vec3 e = hi - lo;
+    return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
   }
 };
 
 struct BuildPrim {
   Box box;
-  dvec3 centroid;
   std::uint32_t ref;
+  vec3 centroid() const { return 0.5f * (box.lo + box.hi); }
 };
 
 float roundDown(double v) {
@@ -45,120 +54,160 @@ float roundUp(double v) {
   return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
+BuildPrim makePrim(const dvec3& lo, const dvec3& hi, std::uint32_t ref) {
+  BuildPrim p;
+  p.box.lo = {roundDown(lo.x), roundDown(lo.y), roundDown(lo.z)};
+  p.box.hi = {roundUp(hi.x), roundUp(hi.y), roundUp(hi.z)};
+  p.ref = ref;
+  return p;
+}
+
+using Nodes = std::vector<gpu::GpuBvhNode>;
+
+struct Split {
+  int axis = -1, plane = -1;
+  float cost = std::numeric_limits<float>::infinity();
+};
+
 class Builder {
  public:
-  Builder(std::vector<BuildPrim> prims, Bvh& out) : prims_(std::move(prims)), out_(out) {}
+  explicit Builder(std::vector<BuildPrim>& prims) : prims_(prims) {}
 
-  void build() {
-    out_.nodes.reserve(std::max<std::size_t>(1, 2 * prims_.size()));
-    out_.nodes.emplace_back();
-    split(0, 0, static_cast<std::uint32_t>(prims_.size()), 0);
-    out_.primRefs.reserve(prims_.size());
-    for (const auto& p : prims_) out_.primRefs.push_back(p.ref);
+  // Builds the subtree of prims_[begin, end) into `out`, its root at out[root].
+  void build(Nodes& out, std::uint32_t root, std::uint32_t begin, std::uint32_t end, int depth, int& maxDepth) {
+    maxDepth = std::max(maxDepth, depth + 1);
+    Box bounds, centroids;
+    for (std::uint32_t i = begin; i < end; ++i) {
+      bounds.grow(prims_[i].box);
+      centroids.grow(prims_[i].centroid());
+    }
+    setBox(out[root], bounds);
+    std::uint32_t count = end - begin;
+    std::uint32_t mid;
+    if (!chooseSplit(begin, end, depth, bounds, centroids, mid)) {
+      out[root].leftOrFirst = begin;
+      out[root].primCount = count;
+      return;
+    }
+    out[root].primCount = 0;
+    if (count >= kParallelMinPrims && depth < kParallelMaxDepth) {
+      // Both halves on their own (the right on another thread), then merged: root, left
+      // root, right root, the rest of the left subtree, the rest of the right.
+      Nodes left(1), right(1);
+      int leftDepth = 0, rightDepth = 0;
+      auto task = std::async(std::launch::async, [&] { build(right, 0, mid, end, depth + 1, rightDepth); });
+      build(left, 0, begin, mid, depth + 1, leftDepth);
+      task.get();
+      maxDepth = std::max({maxDepth, leftDepth, rightDepth});
+      std::uint32_t base = static_cast<std::uint32_t>(out.size());
+      out[root].leftOrFirst = base;
+      std::uint32_t leftRest = base + 2, rightRest = leftRest + static_cast<std::uint32_t>(left.size()) - 1;
+      auto relocate = [](gpu::GpuBvhNode n, std::uint32_t rootAt, std::uint32_t restAt) {
+        if (n.primCount == 0) n.leftOrFirst = n.leftOrFirst == 0 ? rootAt : restAt + n.leftOrFirst - 1;
+        return n;
+      };
+      out.push_back(relocate(left[0], base, leftRest));
+      out.push_back(relocate(right[0], base + 1, rightRest));
+      for (std::size_t i = 1; i < left.size(); ++i) out.push_back(relocate(left[i], base, leftRest));
+      for (std::size_t i = 1; i < right.size(); ++i) out.push_back(relocate(right[i], base + 1, rightRest));
+      return;
+    }
+    std::uint32_t left = static_cast<std::uint32_t>(out.size());
+    out.emplace_back();
+    out.emplace_back();
+    out[root].leftOrFirst = left;
+    build(out, left, begin, mid, depth + 1, maxDepth);
+    build(out, left + 1, mid, end, depth + 1, maxDepth);
   }
 
  private:
-  void setBox(std::uint32_t node, const Box& b) {
-    auto& n = out_.nodes[node];
-    if (b.empty()) {   // an inverted box: no ray enters it
+  static void setBox(gpu::GpuBvhNode& n, const Box& b) {
+    if (b.empty()) {   // an inverted box (only for the root of an empty scene)
       n.minX = n.minY = n.minZ = 1.0f;
       n.maxX = n.maxY = n.maxZ = -1.0f;
       return;
     }
-    n.minX = roundDown(b.lo.x); n.minY = roundDown(b.lo.y); n.minZ = roundDown(b.lo.z);
-    n.maxX = roundUp(b.hi.x);   n.maxY = roundUp(b.hi.y);   n.maxZ = roundUp(b.hi.z);
+    n.minX = b.lo.x; n.minY = b.lo.y; n.minZ = b.lo.z;
+    n.maxX = b.hi.x; n.maxY = b.hi.y; n.maxZ = b.hi.z;
   }
 
-  void makeLeaf(std::uint32_t node, std::uint32_t begin, std::uint32_t end) {
-    out_.nodes[node].leftOrFirst = begin;
-    out_.nodes[node].primCount = end - begin;
-  }
-
-  void split(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth) {
-    out_.depth = std::max(out_.depth, depth + 1);
-    Box bounds, centroids;
+  // The best of (kBins - 1) planes on each axis by SAH, binning all three axes in one pass.
+  Split bestSplit(std::uint32_t begin, std::uint32_t end, const Box& centroids) const {
+    Box binBox[3][kBins];
+    std::uint32_t binCount[3][kBins] = {};
+    vec3 lo = centroids.lo, extent = centroids.hi - centroids.lo;
+    vec3 scale(0.0f);
+    for (int a = 0; a < 3; ++a) scale[a] = extent[a] > 0.0f ? kBins / extent[a] : 0.0f;
     for (std::uint32_t i = begin; i < end; ++i) {
-      bounds.grow(prims_[i].box);
-      centroids.grow(prims_[i].centroid);
-    }
-    setBox(node, bounds);
-    std::uint32_t count = end - begin;
-    if (count <= 1) return makeLeaf(node, begin, end);
-
-    // Find the best of (kBins - 1) planes on each axis by SAH.
-    double bestCost = std::numeric_limits<double>::infinity();
-    int bestAxis = -1, bestPlane = -1;
-    for (int axis = 0; axis < 3; ++axis) {
-      double lo = centroids.lo[axis], extent = centroids.hi[axis] - lo;
-      if (!(extent > 0.0)) continue;
-      Box binBox[kBins];
-      std::uint32_t binCount[kBins] = {};
-      double scale = kBins / extent;
-      for (std::uint32_t i = begin; i < end; ++i) {
-        int b = std::min(kBins - 1, static_cast<int>((prims_[i].centroid[axis] - lo) * scale));
-        binBox[b].grow(prims_[i].box);
-        ++binCount[b];
+      const BuildPrim& p = prims_[i];
+      vec3 bin = (p.centroid() - lo) * scale;
+      for (int a = 0; a < 3; ++a) {
+        int b = std::min(kBins - 1, static_cast<int>(bin[a]));
+        binBox[a][b].grow(p.box);
+        ++binCount[a][b];
       }
-      double rightArea[kBins];
+    }
+    Split best;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(extent[axis] > 0.0f)) continue;
+      float rightArea[kBins];
       std::uint32_t rightCount[kBins];
       Box acc;
       std::uint32_t n = 0;
       for (int b = kBins - 1; b > 0; --b) {
-        acc.grow(binBox[b]);
-        n += binCount[b];
+        acc.grow(binBox[axis][b]);
+        n += binCount[axis][b];
         rightArea[b] = acc.area();
         rightCount[b] = n;
       }
       acc = Box();
       n = 0;
       for (int b = 0; b < kBins - 1; ++b) {
-        acc.grow(binBox[b]);
-        n += binCount[b];
+        acc.grow(binBox[axis][b]);
+        n += binCount[axis][b];
         if (n == 0 || rightCount[b + 1] == 0) continue;
-        double cost = acc.area() * n + rightArea[b + 1] * rightCount[b + 1];
-        if (cost < bestCost) {
-          bestCost = cost;
-          bestAxis = axis;
-          bestPlane = b;
-        }
+        float cost = acc.area() * static_cast<float>(n) + rightArea[b + 1] * static_cast<float>(rightCount[b + 1]);
+        if (cost < best.cost) best = {axis, b, cost};
       }
     }
+    return best;
+  }
 
-    double parentArea = bounds.area();
-    double leafCost = static_cast<double>(count);
-    double splitCost = parentArea > 0.0 ? kTraversalCost + bestCost / parentArea : leafCost;
-    std::uint32_t mid;
+  // Partitions prims_[begin, end) and returns true with `mid`, or false for a leaf.
+  bool chooseSplit(std::uint32_t begin, std::uint32_t end, int depth, const Box& bounds, const Box& centroids,
+                   std::uint32_t& mid) {
+    std::uint32_t count = end - begin;
+    if (count <= 1) return false;
     if (depth >= kMedianDepth && count > kMaxLeafSize) {
-      dvec3 e = centroids.hi - centroids.lo;
+      vec3 e = centroids.hi - centroids.lo;
       int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
       mid = begin + count / 2;
       std::nth_element(prims_.begin() + begin, prims_.begin() + mid, prims_.begin() + end,
-                       [&](const BuildPrim& a, const BuildPrim& b) { return a.centroid[axis] < b.centroid[axis]; });
-    } else if (bestAxis < 0) {
-      // All centroids coincide: split in the middle of the list if the leaf would be large.
-      if (count <= kMaxLeafSize) return makeLeaf(node, begin, end);
-      mid = begin + count / 2;
-    } else {
-      if (count <= kMaxLeafSize && leafCost <= splitCost) return makeLeaf(node, begin, end);
-      double lo = centroids.lo[bestAxis], scale = kBins / (centroids.hi[bestAxis] - lo);
-      auto it = std::partition(prims_.begin() + begin, prims_.begin() + end, [&](const BuildPrim& p) {
-        return std::min(kBins - 1, static_cast<int>((p.centroid[bestAxis] - lo) * scale)) <= bestPlane;
-      });
-      mid = static_cast<std::uint32_t>(it - prims_.begin());
-      if (mid == begin || mid == end) mid = begin + count / 2;
+                       [&](const BuildPrim& a, const BuildPrim& b) { return a.centroid()[axis] < b.centroid()[axis]; });
+      return true;
     }
-
-    std::uint32_t left = static_cast<std::uint32_t>(out_.nodes.size());
-    out_.nodes.emplace_back();
-    out_.nodes.emplace_back();
-    out_.nodes[node].leftOrFirst = left;
-    out_.nodes[node].primCount = 0;
-    split(left, begin, mid, depth + 1);
-    split(left + 1, mid, end, depth + 1);
+    Split s = bestSplit(begin, end, centroids);
+    if (s.axis < 0) {
+      // All centroids coincide: split in the middle of the list if the leaf would be large.
+      if (count <= kMaxLeafSize) return false;
+      mid = begin + count / 2;
+      return true;
+    }
+    float parentArea = bounds.area();
+    float leafCost = static_cast<float>(count);
+    float splitCost = parentArea > 0.0f ? kTraversalCost + s.cost / parentArea : leafCost;
+    if (count <= kMaxLeafSize && leafCost <= splitCost) return false;
+    // The same arithmetic as the binning, so each primitive goes to the side its bin was counted on.
+    float lo = centroids.lo[s.axis], scale = kBins / (centroids.hi[s.axis] - centroids.lo[s.axis]);
+    auto it = std::partition(prims_.begin() + begin, prims_.begin() + end, [&](const BuildPrim& p) {
+      return std::min(kBins - 1, static_cast<int>((p.centroid()[s.axis] - lo) * scale)) <= s.plane;
+    });
+    mid = static_cast<std::uint32_t>(it - prims_.begin());
+    if (mid == begin || mid == end) mid = begin + count / 2;
+    return true;
   }
 
-  std::vector<BuildPrim> prims_;
-  Bvh& out_;
+  std::vector<BuildPrim>& prims_;
 };
 
 }  // namespace
@@ -174,24 +223,35 @@ void sphereBounds(const Sphere& s, dvec3& lo, dvec3& hi) {
 }
 
 Bvh buildBvh(const SceneDesc& scene) {
-  std::vector<BuildPrim> prims;
-  prims.reserve(scene.triangles.size() + scene.spheres.size());
-  for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-    BuildPrim p;
-    for (const dvec3& v : scene.triangles[i].p) p.box.grow(v);
-    p.centroid = 0.5 * (p.box.lo + p.box.hi);
-    p.ref = static_cast<std::uint32_t>(i);
-    prims.push_back(p);
+  std::vector<BuildPrim> prims(scene.triangles.size() + scene.spheres.size());
+  const std::size_t triangles = scene.triangles.size();
+  auto makeRange = [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) {
+      if (i < triangles) {
+        const Triangle& t = scene.triangles[i];
+        prims[i] = makePrim(glm::min(t.p[0], glm::min(t.p[1], t.p[2])), glm::max(t.p[0], glm::max(t.p[1], t.p[2])),
+                            static_cast<std::uint32_t>(i));
+      } else {
+        dvec3 lo, hi;
+        sphereBounds(scene.spheres[i - triangles], lo, hi);
+        prims[i] = makePrim(lo, hi, static_cast<std::uint32_t>(i - triangles) | gpu::kPrimSphereBit);
+      }
+    }
+  };
+  if (prims.size() >= kParallelMinPrims) {
+    auto half = std::async(std::launch::async, makeRange, prims.size() / 2, prims.size());
+    makeRange(0, prims.size() / 2);
+    half.get();
+  } else {
+    makeRange(0, prims.size());
   }
-  for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-    BuildPrim p;
-    sphereBounds(scene.spheres[i], p.box.lo, p.box.hi);
-    p.centroid = 0.5 * (p.box.lo + p.box.hi);
-    p.ref = static_cast<std::uint32_t>(i) | gpu::kPrimSphereBit;
-    prims.push_back(p);
-  }
+
   Bvh bvh;
-  Builder(std::move(prims), bvh).build();
+  bvh.nodes.reserve(std::max<std::size_t>(1, 2 * prims.size()));
+  bvh.nodes.emplace_back();
+  Builder(prims).build(bvh.nodes, 0, 0, static_cast<std::uint32_t>(prims.size()), 0, bvh.depth);
+  bvh.primRefs.resize(prims.size());
+  for (std::size_t i = 0; i < prims.size(); ++i) bvh.primRefs[i] = prims[i].ref;
   return bvh;
 }
 
