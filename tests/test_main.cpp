@@ -11,5 +11,7 @@ int main(int argc, char** argv) {
   if (!dir)
     std::fprintf(stderr, "note: course data (../shared/cse167) not found: tests that need it %s\n",
                  vkrt::test::inCi() ? "FAIL (CI=true)" : "are skipped");
-  return RUN_ALL_TESTS();
+  int status = RUN_ALL_TESTS();
+  vkrt::test::releaseGpuContext();
+  return status;
 }

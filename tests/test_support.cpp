@@ -101,9 +101,16 @@ Image renderText(const std::string& sceneText, const std::string& name) {
          << "\n  actual:   " << a << "\n  expected: " << e << "\n  diff x16: " << df;
 }
 
+namespace {
+std::unique_ptr<Context> sharedContext;
+std::string sharedContextFailure;
+}  // namespace
+
+void releaseGpuContext() { sharedContext.reset(); }
+
 Context* gpuContextOrSkip() {
-  static std::unique_ptr<Context> context;
-  static std::string failure;
+  std::unique_ptr<Context>& context = sharedContext;
+  std::string& failure = sharedContextFailure;
   if (!context && failure.empty()) {
     try {
       context = std::make_unique<Context>(ContextOptions{"", true});

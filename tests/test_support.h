@@ -51,6 +51,10 @@ Image renderScene(const SceneDesc& scene);
 // A Vulkan context with the validation layer on, shared by the tests of this process; null
 // (after skipping the test, or failing it in CI) when no Vulkan device can be had.
 Context* gpuContextOrSkip();
+// Destroys the shared context. Called at the end of main(): left to static destruction, it
+// would run after the validation layer's own globals are gone (the layer is loaded later
+// than the static is registered), and the layer's allocations would leak.
+void releaseGpuContext();
 
 // Renders with the Vulkan backend; `stepBudget` 0 is the default.
 Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget = 0, VulkanTimings* timings = nullptr,
