@@ -118,7 +118,8 @@ float rayTMin, bestT, bestB1, bestB2;
 vec3 throughput, radiance, hitPoint, hitNormal, shadowDir, lightColor;
 float shadowTMax, nDotL;
 uint phase, depth, lightIndex, sp, hitPrim, hitMaterial;
-uint stack[kStackSize];
+uint stack[kStackSize];     // nodes whose boxes the ray enters (tested at their parent)
+float stackT[kStackSize];   // the entry distance of each, to skip it once a nearer hit is known
 uint shadowRays = 0u, reflectionRays = 0u;
 
 // ---- intersection (float32) ------------------------------------------------------------------
@@ -193,15 +194,33 @@ void startRay(vec3 origin, vec3 dir, float tMin) {
   hitPrim = kNoHit;
   sp = kPrimCount > 0u ? 1u : 0u;   // an empty scene's root is an empty leaf: nothing to visit
   stack[0] = 0u;
+  stackT[0] = 0.0;
   phase = kPhaseTrace;
 }
 
-// One node of the nearest-hit traversal.
+// Tests the children of interior node `node` (adjacent in the array: one 4-texel read) and
+// pushes those the ray enters within (tMin, tMax), the nearer one last (popped first).
+void pushChildren(GpuBvhNode node, vec3 origin, vec3 invDir, float tMin, float tMax) {
+  uint left = node.leftOrFirst;
+  float tl = boxEntry(loadNode(left), origin, invDir, tMin, tMax);
+  float tr = boxEntry(loadNode(left + 1u), origin, invDir, tMin, tMax);
+  bool leftFirst = tl <= tr;
+  float tNear = leftFirst ? tl : tr, tFar = leftFirst ? tr : tl;
+  if (tFar != kInfinity) {
+    stack[sp] = leftFirst ? left + 1u : left;
+    stackT[sp++] = tFar;
+  }
+  if (tNear != kInfinity) {
+    stack[sp] = leftFirst ? left : left + 1u;
+    stackT[sp++] = tNear;
+  }
+}
+
+// One node of the nearest-hit traversal: a leaf's primitives, or an interior node's children.
 void traceStep() {
-  uint nodeIndex = stack[--sp];
-  vec3 invDir = safeInverse(rayDir);
-  GpuBvhNode node = loadNode(nodeIndex);
-  if (boxEntry(node, rayOrigin, invDir, rayTMin, bestT) == kInfinity) return;
+  --sp;
+  if (stackT[sp] >= bestT) return;   // entered beyond the nearest hit so far
+  GpuBvhNode node = loadNode(stack[sp]);
   if (node.primCount > 0u) {
     for (uint i = 0u; i < node.primCount; ++i) {
       uint ref = loadPrimRef(node.leftOrFirst + i);
@@ -218,14 +237,7 @@ void traceStep() {
     }
     return;
   }
-  // Push the children that the ray enters, the nearer one last (popped first).
-  uint left = node.leftOrFirst;
-  float tl = boxEntry(loadNode(left), rayOrigin, invDir, rayTMin, bestT);
-  float tr = boxEntry(loadNode(left + 1u), rayOrigin, invDir, rayTMin, bestT);
-  bool leftFirst = tl <= tr;
-  float tFar = leftFirst ? tr : tl, tNear = leftFirst ? tl : tr;
-  if (tFar != kInfinity) stack[sp++] = leftFirst ? left + 1u : left;
-  if (tNear != kInfinity) stack[sp++] = leftFirst ? left : left + 1u;
+  pushChildren(node, rayOrigin, safeInverse(rayDir), rayTMin, bestT);
 }
 
 // The nearest hit is known: ambient and emission, then the lights one by one.
@@ -294,6 +306,7 @@ void lightStep() {
   lightColor = light.color.rgb / divisor;
   sp = kPrimCount > 0u ? 1u : 0u;
   stack[0] = 0u;
+  stackT[0] = 0.0;
   phase = kPhaseShadow;
 }
 
@@ -315,10 +328,7 @@ void shadowStep() {
     phase = kPhaseLight;
     return;
   }
-  uint nodeIndex = stack[--sp];
-  vec3 invDir = safeInverse(shadowDir);
-  GpuBvhNode node = loadNode(nodeIndex);
-  if (boxEntry(node, hitPoint, invDir, kSecondaryRayTMin, shadowTMax) == kInfinity) return;
+  GpuBvhNode node = loadNode(stack[--sp]);
   if (node.primCount > 0u) {
     for (uint i = 0u; i < node.primCount; ++i) {
       uint ref = loadPrimRef(node.leftOrFirst + i);
@@ -334,8 +344,7 @@ void shadowStep() {
     }
     return;
   }
-  stack[sp++] = node.leftOrFirst;
-  stack[sp++] = node.leftOrFirst + 1u;
+  pushChildren(node, hitPoint, safeInverse(shadowDir), kSecondaryRayTMin, shadowTMax);
 }
 
 // ---- suspension ----------------------------------------------------------------------------------
@@ -379,7 +388,10 @@ void loadState(uint slot) {
   sp = states[slot].stackSize;
   hitPrim = states[slot].hitPrim;
   hitMaterial = states[slot].hitMaterial;
-  for (uint i = 0u; i < sp; ++i) stack[i] = states[slot].stack[i];
+  for (uint i = 0u; i < sp; ++i) {
+    stack[i] = states[slot].stack[i];
+    stackT[i] = 0.0;   // entry distances are not saved: a resumed pixel only culls less
+  }
 }
 
 // SPEC section 7: floor(clamp(c, 0, 1) * 255); NaN becomes 0.
