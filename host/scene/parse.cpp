@@ -2,6 +2,7 @@
 // Parser-only state (transform stack, current material, vertex lists) stays in this file.
 #include "scene/parse.h"
 
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -21,10 +22,18 @@ namespace {
 constexpr std::size_t kMaxDiagnostics = 50;
 constexpr int kMaxArgs = 10;   // camera has the most
 
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-// Bytes that never occur in a text scene file: NUL and the C0 controls other than blanks.
-bool isBinaryByte(unsigned char c) { return c < 0x20 && !isBlank(static_cast<char>(c)) && c != '\n'; }
+// What each byte is to the tokenizer: one table lookup per byte.
+enum ByteClass : unsigned char { kToken, kBlank, kComment, kBinary };
+constexpr std::array<ByteClass, 256> makeByteClasses() {
+  std::array<ByteClass, 256> t{};
+  for (int c = 0; c < 0x20; ++c) t[c] = kBinary;   // NUL and C0 controls never occur in text...
+  for (int c : {' ', '\t', '\r', '\v', '\f'}) t[c] = kBlank;   // ...but for the blanks
+  t['#'] = kComment;
+  t[0x7F] = kBinary;
+  return t;
+}
+constexpr std::array<ByteClass, 256> kByteClass = makeByteClasses();
+ByteClass byteClass(char c) { return kByteClass[static_cast<unsigned char>(c)]; }
 
 struct VertexWithNormal {
   dvec3 position;
@@ -47,38 +56,37 @@ class Parser {
   }
 
   SceneDesc run() {
-    if (checkIsText()) parseLines();
+    reserveArrays();
+    parseLines();
     if (!diagnostics_.empty()) throw SceneError(std::move(diagnostics_));
     return std::move(scene_);
   }
 
  private:
-  // A binary file would give an error per line: say once that it is not text, and where.
-  // The same pass counts the lines that start with "tri" and "vertex", to size the arrays.
-  bool checkIsText() {
-    int line = 1;
-    std::size_t lineStart = 0, tris = 0, vertices = 0;
-    auto startsWith = [&](std::size_t at, std::string_view word) { return text_.substr(at, word.size()) == word; };
-    for (std::size_t k = 0; k < text_.size(); ++k) {
-      unsigned char c = static_cast<unsigned char>(text_[k]);
-      if (k == lineStart) {
-        tris += c == 't' && startsWith(k, "tri");
-        vertices += c == 'v' && startsWith(k, "vertex");
-      }
-      if (c == '\n') {
-        ++line;
-        lineStart = k + 1;
-      } else if (isBinaryByte(c)) {
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "0x%02X", c);
-        errorAt(line, std::string("file is not text (byte ") + hex + " in column " +
-                          std::to_string(k - lineStart + 1) + "); expected a CSE167 scene file");
-        return false;
-      }
+  // Sizes the big arrays from the lines that start with "tri" and "vertex" (memchr is fast).
+  void reserveArrays() {
+    std::size_t tris = 0, vertices = 0;
+    const char* p = text_.data();
+    const char* end = p + text_.size();
+    while (p < end) {
+      tris += *p == 't' && end - p > 3 && p[1] == 'r' && p[2] == 'i';
+      vertices += *p == 'v' && end - p > 6 && std::memcmp(p, "vertex", 6) == 0;
+      const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+      p = nl ? nl + 1 : end;
     }
     scene_.triangles.reserve(tris);
     vertices_.reserve(vertices);
-    return true;
+  }
+
+  // A binary file would give an error per line: drop what was found so far and say once
+  // that it is not text, and where.
+  void notText(std::size_t column, unsigned char c) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02X", c);
+    diagnostics_.clear();
+    error(std::string("file is not text (byte ") + hex + " in column " + std::to_string(column) +
+          "); expected a CSE167 scene file");
+    binary_ = true;
   }
 
   void parseLines() {
@@ -88,6 +96,7 @@ class Parser {
       if (end == std::string_view::npos) end = text_.size();
       ++line_;
       parseLine(text_.substr(pos, end - pos));
+      if (binary_) return;
       pos = end + 1;
     }
     if (!tooMany()) finish();
@@ -110,15 +119,20 @@ class Parser {
     int count = 0;
     std::size_t i = 0;
     while (i < line.size()) {
-      if (isBlank(line[i])) {
+      ByteClass k = byteClass(line[i]);
+      if (k == kBlank) {
         ++i;
-        continue;
+      } else if (k == kToken) {
+        std::size_t start = i;
+        while (i < line.size() && byteClass(line[i]) == kToken) ++i;
+        if (count < kMaxArgs + 2) tokens[count] = line.substr(start, i - start);
+        ++count;
+      } else if (k == kComment) {   // the whole line, or the rest of it; still text
+        for (; i < line.size(); ++i)
+          if (byteClass(line[i]) == kBinary) return notText(i + 1, static_cast<unsigned char>(line[i]));
+      } else {
+        return notText(i + 1, static_cast<unsigned char>(line[i]));
       }
-      if (line[i] == '#') break;   // a comment: the whole line, or the rest of it
-      std::size_t start = i;
-      while (i < line.size() && !isBlank(line[i]) && line[i] != '#') ++i;
-      if (count < kMaxArgs + 2) tokens[count] = line.substr(start, i - start);
-      ++count;
     }
     if (count == 0) return;
     std::string_view command = tokens[0];
@@ -451,6 +465,7 @@ class Parser {
   SceneDesc scene_;
   std::vector<Diagnostic> diagnostics_;
   int line_ = 0;
+  bool binary_ = false;
   bool sawSize_ = false, sizeErrorReported_ = false, sawCamera_ = false;
   int sizeLine_ = 0;
   const std::string_view* args_ = nullptr;
