@@ -22,6 +22,7 @@ layout(constant_id = 7) const uint kTileOrderStride = 1u;
 layout(constant_id = 8) const uint kPrimCount = 0u;
 // A local array is per-lane scratch memory in llvmpipe: size it to the BVH's depth.
 layout(constant_id = 9) const uint kStackSize = kTraversalStackSize;
+layout(constant_id = 10) const uint kRootEntry = 0u;
 
 // Scene reads: storage buffers, or (VKRT_TEXEL_READS) the same bytes through uint texel-buffer
 // views, which lavapipe reads 2.7-3x faster inside loops (bench/ measures both). Only uint
@@ -118,7 +119,7 @@ float rayTMin, bestT, bestB1, bestB2;
 vec3 throughput, radiance, hitPoint, hitNormal, shadowDir, lightColor;
 float shadowTMax, nDotL;
 uint phase, depth, lightIndex, sp, hitPrim, hitMaterial;
-uint stack[kStackSize];     // nodes whose boxes the ray enters (tested at their parent)
+uint stack[kStackSize];     // entries (kStackLeafBit) of nodes whose boxes the ray enters
 float stackT[kStackSize];   // the entry distance of each, to skip it once a nearer hit is known
 uint shadowRays = 0u, reflectionRays = 0u;
 
@@ -184,6 +185,13 @@ float hitSphere(uint index, vec3 origin, vec3 dir, float tMin, float tMax) {
   return (t > tMin && t < tMax) ? t : -1.0;
 }
 
+// A BVH leaf's primitive reference: a sphere or a triangle.
+float hitPrimitive(uint ref, vec3 origin, vec3 dir, float tMin, float tMax, out vec2 b) {
+  b = vec2(0.0);
+  return (ref & kPrimSphereBit) != 0u ? hitSphere(ref & ~kPrimSphereBit, origin, dir, tMin, tMax)
+                                      : hitTriangle(ref, origin, dir, tMin, tMax, b);
+}
+
 // ---- the state machine's steps -----------------------------------------------------------------
 
 void startRay(vec3 origin, vec3 dir, float tMin) {
@@ -193,25 +201,29 @@ void startRay(vec3 origin, vec3 dir, float tMin) {
   bestT = kInfinity;
   hitPrim = kNoHit;
   sp = kPrimCount > 0u ? 1u : 0u;   // an empty scene's root is an empty leaf: nothing to visit
-  stack[0] = 0u;
+  stack[0] = kRootEntry;
   stackT[0] = 0.0;
   phase = kPhaseTrace;
 }
 
-// Tests the children of interior node `node` (adjacent in the array: one 4-texel read) and
-// pushes those the ray enters within (tMin, tMax), the nearer one last (popped first).
-void pushChildren(GpuBvhNode node, vec3 origin, vec3 invDir, float tMin, float tMax) {
-  uint left = node.leftOrFirst;
-  float tl = boxEntry(loadNode(left), origin, invDir, tMin, tMax);
-  float tr = boxEntry(loadNode(left + 1u), origin, invDir, tMin, tMax);
+uint stackEntry(GpuBvhNode n) {
+  return n.primCount > 0u ? kStackLeafBit | (n.primCount << kStackCountShift) | n.leftOrFirst : n.leftOrFirst;
+}
+
+// Tests the two children of an interior node, which are adjacent in the array (one 4-texel
+// read), and pushes those the ray enters within (tMin, tMax), the nearer one last.
+void pushChildren(uint left, vec3 origin, vec3 invDir, float tMin, float tMax) {
+  GpuBvhNode l = loadNode(left), r = loadNode(left + 1u);
+  float tl = boxEntry(l, origin, invDir, tMin, tMax);
+  float tr = boxEntry(r, origin, invDir, tMin, tMax);
   bool leftFirst = tl <= tr;
   float tNear = leftFirst ? tl : tr, tFar = leftFirst ? tr : tl;
   if (tFar != kInfinity) {
-    stack[sp] = leftFirst ? left + 1u : left;
+    stack[sp] = stackEntry(leftFirst ? r : l);
     stackT[sp++] = tFar;
   }
   if (tNear != kInfinity) {
-    stack[sp] = leftFirst ? left : left + 1u;
+    stack[sp] = stackEntry(leftFirst ? l : r);
     stackT[sp++] = tNear;
   }
 }
@@ -220,24 +232,23 @@ void pushChildren(GpuBvhNode node, vec3 origin, vec3 invDir, float tMin, float t
 void traceStep() {
   --sp;
   if (stackT[sp] >= bestT) return;   // entered beyond the nearest hit so far
-  GpuBvhNode node = loadNode(stack[sp]);
-  if (node.primCount > 0u) {
-    for (uint i = 0u; i < node.primCount; ++i) {
-      uint ref = loadPrimRef(node.leftOrFirst + i);
-      vec2 b;
-      float t = (ref & kPrimSphereBit) != 0u
-                    ? hitSphere(ref & ~kPrimSphereBit, rayOrigin, rayDir, rayTMin, bestT)
-                    : hitTriangle(ref, rayOrigin, rayDir, rayTMin, bestT, b);
-      if (t > 0.0) {
-        bestT = t;
-        hitPrim = ref;
-        bestB1 = b.x;
-        bestB2 = b.y;
-      }
-    }
+  uint entry = stack[sp];
+  if ((entry & kStackLeafBit) == 0u) {
+    pushChildren(entry, rayOrigin, safeInverse(rayDir), rayTMin, bestT);
     return;
   }
-  pushChildren(node, rayOrigin, safeInverse(rayDir), rayTMin, bestT);
+  uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
+  for (uint i = 0u; i < count; ++i) {
+    uint ref = loadPrimRef(first + i);
+    vec2 b;
+    float t = hitPrimitive(ref, rayOrigin, rayDir, rayTMin, bestT, b);
+    if (t > 0.0) {
+      bestT = t;
+      hitPrim = ref;
+      bestB1 = b.x;
+      bestB2 = b.y;
+    }
+  }
 }
 
 // The nearest hit is known: ambient and emission, then the lights one by one.
@@ -305,7 +316,7 @@ void lightStep() {
   shadowDir = toLight;
   lightColor = light.color.rgb / divisor;
   sp = kPrimCount > 0u ? 1u : 0u;
-  stack[0] = 0u;
+  stack[0] = kRootEntry;
   stackT[0] = 0.0;
   phase = kPhaseShadow;
 }
@@ -328,23 +339,20 @@ void shadowStep() {
     phase = kPhaseLight;
     return;
   }
-  GpuBvhNode node = loadNode(stack[--sp]);
-  if (node.primCount > 0u) {
-    for (uint i = 0u; i < node.primCount; ++i) {
-      uint ref = loadPrimRef(node.leftOrFirst + i);
-      vec2 b;
-      float t = (ref & kPrimSphereBit) != 0u
-                    ? hitSphere(ref & ~kPrimSphereBit, hitPoint, shadowDir, kSecondaryRayTMin, shadowTMax)
-                    : hitTriangle(ref, hitPoint, shadowDir, kSecondaryRayTMin, shadowTMax, b);
-      if (t > 0.0) {   // blocked
-        ++lightIndex;
-        phase = kPhaseLight;
-        return;
-      }
-    }
+  uint entry = stack[--sp];
+  if ((entry & kStackLeafBit) == 0u) {
+    pushChildren(entry, hitPoint, safeInverse(shadowDir), kSecondaryRayTMin, shadowTMax);
     return;
   }
-  pushChildren(node, hitPoint, safeInverse(shadowDir), kSecondaryRayTMin, shadowTMax);
+  uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
+  for (uint i = 0u; i < count; ++i) {
+    vec2 b;
+    if (hitPrimitive(loadPrimRef(first + i), hitPoint, shadowDir, kSecondaryRayTMin, shadowTMax, b) > 0.0) {
+      ++lightIndex;   // blocked
+      phase = kPhaseLight;
+      return;
+    }
+  }
 }
 
 // ---- suspension ----------------------------------------------------------------------------------

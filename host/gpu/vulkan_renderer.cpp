@@ -40,6 +40,11 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   const std::uint32_t tilesX = (width + tile - 1) / tile;
   const std::uint32_t tilesInBand = tilesX * (bandHeight / tile);
 
+  // The shader packs a leaf's first primRef into 28 bits (kStackFirstMask).
+  if (scene.bvh.primRefs.size() > gpu::kStackFirstMask)
+    throw DeviceError("the scene has " + std::to_string(scene.bvh.primRefs.size()) +
+                      " primitives; the Vulkan backend takes at most " + std::to_string(gpu::kStackFirstMask));
+
   auto t0 = std::chrono::steady_clock::now();
   Buffer triangles = Buffer::withContents(context, scene.triangles);
   Buffer normals = Buffer::withContents(context, scene.triangleNormals);
@@ -66,6 +71,10 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   spec[gpu::kSpecTileOrderStride] = scatterStride(tilesInBand);
   spec[gpu::kSpecPrimCount] = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
   spec[gpu::kSpecStackSize] = static_cast<std::uint32_t>(scene.bvh.depth + 1);
+  const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
+  spec[gpu::kSpecRootEntry] = root.primCount > 0 ? gpu::kStackLeafBit | root.primCount << gpu::kStackCountShift |
+                                                       root.leftOrFirst
+                                                 : root.leftOrFirst;
   // Texel reads where every scene buffer fits the device's texel-count limit.
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const Buffer* sceneBuffers[] = {&triangles, &normals, &spheres, &lights, &materials, &nodes};

@@ -117,7 +117,15 @@ GPU_CONST uint kSpecTilesX = 6u;
 GPU_CONST uint kSpecTileOrderStride = 7u;
 GPU_CONST uint kSpecPrimCount = 8u;       // 0: no geometry (the BVH root is then an empty leaf)
 GPU_CONST uint kSpecStackSize = 9u;       // traversal stack entries: the BVH's depth + 1
-GPU_CONST uint kSpecCount = 10u;
+GPU_CONST uint kSpecRootEntry = 10u;      // the root as a traversal-stack entry (below)
+GPU_CONST uint kSpecCount = 11u;
+
+// A traversal-stack entry says what its parent's read of the node told: for a leaf,
+// kStackLeafBit | count << kStackCountShift | first primRef (first < 2^28, count <= 7); for an
+// interior node, the index of its left child. Popping it needs no read of the node.
+GPU_CONST uint kStackLeafBit = 0x80000000u;
+GPU_CONST uint kStackCountShift = 28u;
+GPU_CONST uint kStackFirstMask = 0x0FFFFFFFu;
 
 GPU_CONST uint kWorkgroupSize = 8u;       // 8x8 pixels per workgroup (lavapipe: 8 wide or more)
 
