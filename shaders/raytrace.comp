@@ -228,29 +228,6 @@ void pushChildren(uint left, vec3 origin, vec3 invDir, float tMin, float tMax) {
   }
 }
 
-// One node of the nearest-hit traversal: a leaf's primitives, or an interior node's children.
-void traceStep() {
-  --sp;
-  if (stackT[sp] >= bestT) return;   // entered beyond the nearest hit so far
-  uint entry = stack[sp];
-  if ((entry & kStackLeafBit) == 0u) {
-    pushChildren(entry, rayOrigin, safeInverse(rayDir), rayTMin, bestT);
-    return;
-  }
-  uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
-  for (uint i = 0u; i < count; ++i) {
-    uint ref = loadPrimRef(first + i);
-    vec2 b;
-    float t = hitPrimitive(ref, rayOrigin, rayDir, rayTMin, bestT, b);
-    if (t > 0.0) {
-      bestT = t;
-      hitPrim = ref;
-      bestB1 = b.x;
-      bestB2 = b.y;
-    }
-  }
-}
-
 // The nearest hit is known: ambient and emission, then the lights one by one.
 void beginShading() {
   hitPoint = rayOrigin + bestT * rayDir;
@@ -331,26 +308,51 @@ void addLightContribution() {
   radiance += throughput * lightColor * (m.diffuse.rgb * nDotL + m.specular.rgb * highlight);
 }
 
-// One node of the any-hit traversal of the shadow ray.
-void shadowStep() {
-  if (sp == 0u) {   // nothing in the way
-    addLightContribution();
-    ++lightIndex;
-    phase = kPhaseLight;
+// One node of a traversal: the nearest-hit one of the current ray (kPhaseTrace) or the
+// any-hit one of a shadow ray (kPhaseShadow). One function for both, so that lanes of a SIMD
+// vector in different phases run the expensive part once.
+void traversalStep() {
+  bool shadow = phase == kPhaseShadow;
+  if (sp == 0u) {   // traversal over
+    if (shadow) {   // nothing in the way
+      addLightContribution();
+      ++lightIndex;
+      phase = kPhaseLight;
+    } else if (hitPrim != kNoHit) {
+      beginShading();
+    } else {
+      phase = kPhaseDone;   // a miss is black
+    }
     return;
   }
-  uint entry = stack[--sp];
+  vec3 origin = shadow ? hitPoint : rayOrigin;
+  vec3 dir = shadow ? shadowDir : rayDir;
+  float tMin = shadow ? kSecondaryRayTMin : rayTMin;
+  float tMax = shadow ? shadowTMax : bestT;
+  --sp;
+  if (stackT[sp] >= tMax) return;   // entered beyond the nearest hit so far
+  uint entry = stack[sp];
   if ((entry & kStackLeafBit) == 0u) {
-    pushChildren(entry, hitPoint, safeInverse(shadowDir), kSecondaryRayTMin, shadowTMax);
+    pushChildren(entry, origin, safeInverse(dir), tMin, tMax);
     return;
   }
   uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
   for (uint i = 0u; i < count; ++i) {
+    uint ref = loadPrimRef(first + i);
     vec2 b;
-    if (hitPrimitive(loadPrimRef(first + i), hitPoint, shadowDir, kSecondaryRayTMin, shadowTMax, b) > 0.0) {
-      ++lightIndex;   // blocked
-      phase = kPhaseLight;
-      return;
+    float t = hitPrimitive(ref, origin, dir, tMin, tMax, b);
+    if (t > 0.0) {
+      if (shadow) {   // blocked
+        sp = 0u;
+        ++lightIndex;
+        phase = kPhaseLight;
+        return;
+      }
+      tMax = t;
+      bestT = t;
+      hitPrim = ref;
+      bestB1 = b.x;
+      bestB2 = b.y;
     }
   }
 }
@@ -431,18 +433,10 @@ void main() {
   }
 
   for (uint step = 0u; step < kStepBudget && phase != kPhaseDone; ++step) {
-    if (phase == kPhaseTrace) {
-      if (sp > 0u)
-        traceStep();
-      else if (hitPrim != kNoHit)
-        beginShading();
-      else
-        phase = kPhaseDone;   // a miss is black
-    } else if (phase == kPhaseLight) {
+    if (phase == kPhaseLight)
       lightStep();
-    } else {
-      shadowStep();
-    }
+    else
+      traversalStep();
   }
 
   if (shadowRays + reflectionRays > 0u) {
