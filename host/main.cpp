@@ -31,6 +31,7 @@ void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
     std::fprintf(stderr, "    pipeline  %9.1f ms  (%s reads)\n", r.pipelineSeconds * ms,
                  r.texelReads ? "texel-buffer" : "storage-buffer");
     std::fprintf(stderr, "    first dispatch (with JIT) %9.1f ms\n", r.firstDispatchSeconds * ms);
+    std::fprintf(stderr, "    left out: %s\n", r.leftOut.empty() ? "nothing" : r.leftOut.c_str());
     std::fprintf(stderr, "    dispatch  %9.1f ms  (%u bands, %u dispatches, %llu pixel suspensions)\n",
                  r.dispatchSeconds * ms, r.bands, r.dispatches, static_cast<unsigned long long>(r.suspensions));
     std::fprintf(stderr, "    readback  %9.1f ms\n", r.readbackSeconds * ms);

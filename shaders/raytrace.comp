@@ -23,6 +23,13 @@ layout(constant_id = 8) const uint kPrimCount = 0u;
 // A local array is per-lane scratch memory in llvmpipe: size it to the BVH's depth.
 layout(constant_id = 9) const uint kStackSize = kTraversalStackSize;
 layout(constant_id = 10) const uint kRootEntry = 0u;
+layout(constant_id = 11) const bool kHasTriangles = true;
+layout(constant_id = 12) const bool kHasSpheres = true;
+layout(constant_id = 13) const bool kHasSmoothNormals = true;
+layout(constant_id = 14) const bool kHasPointLights = true;
+layout(constant_id = 15) const bool kHasDirectionalLights = true;
+layout(constant_id = 16) const bool kHasAttenuation = true;
+layout(constant_id = 17) const bool kHasSpecular = true;
 
 // Scene reads: storage buffers, or (VKRT_TEXEL_READS) the same bytes through uint texel-buffer
 // views, which lavapipe reads 2.7-3x faster inside loops (bench/ measures both). Only uint
@@ -188,6 +195,8 @@ float hitSphere(uint index, vec3 origin, vec3 dir, float tMin, float tMax) {
 // A BVH leaf's primitive reference: a sphere or a triangle.
 float hitPrimitive(uint ref, vec3 origin, vec3 dir, float tMin, float tMax, out vec2 b) {
   b = vec2(0.0);
+  if (!kHasSpheres) return hitTriangle(ref, origin, dir, tMin, tMax, b);
+  if (!kHasTriangles) return hitSphere(ref & ~kPrimSphereBit, origin, dir, tMin, tMax);
   return (ref & kPrimSphereBit) != 0u ? hitSphere(ref & ~kPrimSphereBit, origin, dir, tMin, tMax)
                                       : hitTriangle(ref, origin, dir, tMin, tMax, b);
 }
@@ -231,14 +240,14 @@ void pushChildren(uint left, vec3 origin, vec3 invDir, float tMin, float tMax) {
 // The nearest hit is known: ambient and emission, then the lights one by one.
 void beginShading() {
   hitPoint = rayOrigin + bestT * rayDir;
-  if ((hitPrim & kPrimSphereBit) != 0u) {
+  if (kHasSpheres && (!kHasTriangles || (hitPrim & kPrimSphereBit) != 0u)) {
     GpuSphere s = loadSphere(hitPrim & ~kPrimSphereBit);
     vec3 pObject = (s.objectFromWorld * vec4(rayOrigin, 1.0)).xyz + bestT * (s.objectFromWorld * vec4(rayDir, 0.0)).xyz;
     hitNormal = normalize(transpose(mat3(s.objectFromWorld)) * (pObject - s.centerRadius.xyz));
     hitMaterial = s.materialIndex;
   } else {
     GpuTriangle tri = loadTriangle(hitPrim);
-    if (tri.normalsIndex != kNoNormals) {
+    if (kHasSmoothNormals && tri.normalsIndex != kNoNormals) {
       GpuTriangleNormals n = loadTriangleNormals(tri.normalsIndex);
       hitNormal = normalize((1.0 - bestB1 - bestB2) * n.n0.xyz + bestB1 * n.n1.xyz + bestB2 * n.n2.xyz);
     } else {
@@ -255,7 +264,7 @@ void beginShading() {
 // After the last light: the mirror ray, or the end of the path.
 void reflectOrFinish() {
   vec3 specular = loadMaterial(hitMaterial).specular.rgb;
-  if (depth < kMaxDepth && any(greaterThan(specular, vec3(0.0)))) {
+  if (kHasSpecular && depth < kMaxDepth && any(greaterThan(specular, vec3(0.0)))) {
     ++depth;
     ++reflectionRays;
     throughput *= specular;
@@ -275,12 +284,13 @@ void lightStep() {
   vec3 toLight;
   float divisor = 1.0;
   shadowTMax = kInfinity;
-  if (light.positionOrDirection.w == kPointLight) {
+  if (kHasPointLights && (!kHasDirectionalLights || light.positionOrDirection.w == kPointLight)) {
     vec3 v = light.positionOrDirection.xyz - hitPoint;
     float distance = length(v);
     toLight = v / distance;
     shadowTMax = distance;
-    divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
+    if (kHasAttenuation)
+      divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
   } else {
     toLight = light.positionOrDirection.xyz;
   }
@@ -300,12 +310,16 @@ void lightStep() {
 
 void addLightContribution() {
   GpuMaterial m = loadMaterial(hitMaterial);
-  vec3 halfVector = normalize(shadowDir - rayDir);
-  float nDotH = max(dot(hitNormal, halfVector), 0.0);
-  float shininess = m.specular.w;
-  // pow(0, s) is undefined in GLSL: define it as C does (1 for s = 0, else 0).
-  float highlight = nDotH > 0.0 ? pow(nDotH, shininess) : (shininess == 0.0 ? 1.0 : 0.0);
-  radiance += throughput * lightColor * (m.diffuse.rgb * nDotL + m.specular.rgb * highlight);
+  vec3 lit = m.diffuse.rgb * nDotL;
+  if (kHasSpecular) {
+    vec3 halfVector = normalize(shadowDir - rayDir);
+    float nDotH = max(dot(hitNormal, halfVector), 0.0);
+    float shininess = m.specular.w;
+    // pow(0, s) is undefined in GLSL: define it as C does (1 for s = 0, else 0).
+    float highlight = nDotH > 0.0 ? pow(nDotH, shininess) : (shininess == 0.0 ? 1.0 : 0.0);
+    lit += m.specular.rgb * highlight;
+  }
+  radiance += throughput * lightColor * lit;
 }
 
 // One node of a traversal: the nearest-hit one of the current ray (kPhaseTrace) or the

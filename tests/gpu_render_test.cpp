@@ -7,6 +7,7 @@
 
 #include "image/compare.h"
 #include "image/png.h"
+#include "scene/flatten.h"
 #include "scene/parse.h"
 #include "test_support.h"
 
@@ -44,6 +45,20 @@ TEST_P(GpuFeatureScene, StorageAndTexelReadsAgreeExactly) {
   EXPECT_FALSE(storageRun.texelReads);
   EXPECT_TRUE(texelRun.texelReads);
   EXPECT_TRUE(imagesClose("gpu-reads/" + GetParam(), texel, storage, 0, 0));
+}
+
+// Compiling out what a scene does not use must not change a pixel.
+TEST_P(GpuFeatureScene, SpecializationChangesNoPixel) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc scene = parseSceneFile(sourcePath("scenes/" + GetParam() + ".test"));
+  Context* ctx = gpuContextOrSkip();
+  VulkanOptions generic;
+  generic.specialize = false;
+  VulkanTimings specializedRun, genericRun;
+  Image specialized = renderGpu(scene, 0, &specializedRun);
+  Image all = renderVulkan(*ctx, flatten(scene), generic, nullptr, &genericRun);
+  EXPECT_EQ(genericRun.leftOut, "");
+  EXPECT_TRUE(imagesClose("gpu-specialize/" + GetParam(), specialized, all, 0, 0)) << "left out: " << specializedRun.leftOut;
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuFeatureScene, ::testing::ValuesIn(projectSceneNames()),
@@ -125,7 +140,8 @@ TEST(GpuCli, DefaultBackendIsVulkanAndStatsShowItsStages) {
   RunResult r = runVkrt("--stats --validation -o " + dir + "/o.png " + sourcePath("scenes/spheres.test"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* key : {"backend vulkan (", "instance", "device", "upload", "pipeline", "first dispatch (with JIT)",
-                          "dispatch", "readback", "rays"})
+                          "left out: triangles, smooth normals, point lights, attenuation", "dispatch", "readback",
+                          "rays"})
     EXPECT_NE(r.output.find(key), std::string::npos) << key << "\n" << r.output;
   EXPECT_EQ(r.output.find("validation:"), std::string::npos) << r.output;
   Image gpu = readImage(dir + "/o.png");

@@ -97,6 +97,8 @@ Options parseOptions(const std::vector<std::string>& args) {
         o.request.reads = SceneReads::Storage;
       else
         throw UsageError("unknown --reads '" + r + "' (expected: auto, texel or storage)");
+    } else if (a == "--no-specialize") {   // for the benchmark and tests; not in --help
+      o.request.specialize = false;
     } else if (a == "--validation") {
       o.request.validation = true;
     } else if (name == "--step-budget") {   // for tests of the loop budget; not in --help

@@ -25,6 +25,41 @@ std::uint32_t scatterStride(std::uint32_t n) {
   return s;
 }
 
+// Which features the scene uses; the shader is specialised to them (all on when not
+// specializing). Also says, for --stats, what was left out.
+struct Features {
+  bool triangles = true, spheres = true, smoothNormals = true, pointLights = true, directionalLights = true,
+       attenuation = true, specular = true;
+  std::string leftOut;
+};
+
+Features sceneFeatures(const GpuScene& scene, bool specialize) {
+  Features f;
+  if (!specialize) return f;
+  f.triangles = !scene.triangles.empty();
+  f.spheres = !scene.spheres.empty();
+  f.smoothNormals = !scene.triangleNormals.empty();
+  f.pointLights = f.directionalLights = f.attenuation = f.specular = false;
+  for (const gpu::GpuLight& l : scene.lights) {
+    bool point = l.positionOrDirection.w == gpu::kPointLight;
+    (point ? f.pointLights : f.directionalLights) = true;
+    if (point && (l.attenuation.x != 1.0f || l.attenuation.y != 0.0f || l.attenuation.z != 0.0f)) f.attenuation = true;
+  }
+  for (const gpu::GpuMaterial& m : scene.materials)
+    if (m.specular.x != 0.0f || m.specular.y != 0.0f || m.specular.z != 0.0f) f.specular = true;
+  auto note = [&f](bool used, const char* name) {
+    if (!used) f.leftOut += (f.leftOut.empty() ? "" : ", ") + std::string(name);
+  };
+  note(f.triangles, "triangles");
+  note(f.spheres, "spheres");
+  note(f.smoothNormals, "smooth normals");
+  note(f.pointLights, "point lights");
+  note(f.directionalLights, "directional lights");
+  note(f.attenuation, "attenuation");
+  note(f.specular, "specular (maxdepth 0)");
+  return f;
+}
+
 }  // namespace
 
 Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options, RayCounts* rays,
@@ -60,10 +95,13 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   t.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  std::vector<std::uint32_t> spec(gpu::kSpecCount);
+  std::vector<std::uint32_t> spec(gpu::kSpecCount);   // bools as 0/1 (SPIR-V bool spec constants are 32 bits)
   spec[gpu::kSpecWidth] = width;
   spec[gpu::kSpecHeight] = height;
-  spec[gpu::kSpecMaxDepth] = scene.maxDepth;
+  const Features features = sceneFeatures(scene, options.specialize);
+  t.leftOut = features.leftOut;
+  // Without a specular surface no mirror ray is ever traced.
+  spec[gpu::kSpecMaxDepth] = features.specular ? scene.maxDepth : 0;
   spec[gpu::kSpecLightCount] = static_cast<std::uint32_t>(scene.lights.size());
   spec[gpu::kSpecStepBudget] = options.stepBudget ? options.stepBudget : gpu::kDefaultStepBudget;
   spec[gpu::kSpecBandHeight] = bandHeight;
@@ -71,6 +109,13 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   spec[gpu::kSpecTileOrderStride] = scatterStride(tilesInBand);
   spec[gpu::kSpecPrimCount] = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
   spec[gpu::kSpecStackSize] = static_cast<std::uint32_t>(scene.bvh.depth + 1);
+  spec[gpu::kSpecHasTriangles] = features.triangles;
+  spec[gpu::kSpecHasSpheres] = features.spheres;
+  spec[gpu::kSpecHasSmoothNormals] = features.smoothNormals;
+  spec[gpu::kSpecHasPointLights] = features.pointLights;
+  spec[gpu::kSpecHasDirectionalLights] = features.directionalLights;
+  spec[gpu::kSpecHasAttenuation] = features.attenuation;
+  spec[gpu::kSpecHasSpecular] = features.specular;
   const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
   spec[gpu::kSpecRootEntry] = root.primCount > 0 ? gpu::kStackLeafBit | root.primCount << gpu::kStackCountShift |
                                                        root.leftOrFirst

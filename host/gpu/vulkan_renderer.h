@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 
 #include "cpu/reference.h"
 #include "gpu/context.h"
@@ -21,6 +22,7 @@ struct VulkanOptions {
   SceneReads reads = SceneReads::Auto;    // Auto: texel buffers where the device's limits allow
   std::uint32_t stepBudget = 0;           // steps per pixel per dispatch; 0: kDefaultStepBudget
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
+  bool specialize = true;                 // compile out what the scene does not use
   std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixels done, pixels total)
 };
 
@@ -30,6 +32,7 @@ struct VulkanTimings {
   std::uint32_t bands = 0, dispatches = 0;
   std::uint64_t suspensions = 0;   // pixel-dispatches that ran out of steps
   bool texelReads = false;         // which shader variant ran
+  std::string leftOut;             // the features compiled out, e.g. "spheres, specular (maxdepth 0)"
 };
 
 // Throws DeviceError.

@@ -51,6 +51,7 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
   VulkanOptions options;
   options.stepBudget = request.stepBudget;
   options.reads = request.reads;
+  options.specialize = request.specialize;
   options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
   VulkanTimings timings;
   Image image = renderVulkan(context, gpuScene, options, &report.rays, &timings);
@@ -64,6 +65,7 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
   report.dispatches = timings.dispatches;
   report.suspensions = timings.suspensions;
   report.texelReads = timings.texelReads;
+  report.leftOut = timings.leftOut;
   report.validationMessages = context.validationMessages();
   return image;
 }

@@ -24,6 +24,7 @@ struct RenderRequest {
   bool validation = false;             // Vulkan: enable the validation layer
   std::uint32_t stepBudget = 0;        // Vulkan: steps per pixel per dispatch (0: default)
   SceneReads reads = SceneReads::Auto; // Vulkan: how the shader reads the scene
+  bool specialize = true;              // Vulkan: compile out what the scene does not use
 };
 
 struct RenderReport {
@@ -38,6 +39,7 @@ struct RenderReport {
   std::uint32_t bands = 0, dispatches = 0;
   std::uint64_t suspensions = 0;
   bool texelReads = false;
+  std::string leftOut;                 // Vulkan: features compiled out
   int validationMessages = 0;
   RayCounts rays;
 };

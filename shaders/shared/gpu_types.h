@@ -118,7 +118,15 @@ GPU_CONST uint kSpecTileOrderStride = 7u;
 GPU_CONST uint kSpecPrimCount = 8u;       // 0: no geometry (the BVH root is then an empty leaf)
 GPU_CONST uint kSpecStackSize = 9u;       // traversal stack entries: the BVH's depth + 1
 GPU_CONST uint kSpecRootEntry = 10u;      // the root as a traversal-stack entry (below)
-GPU_CONST uint kSpecCount = 11u;
+// What the scene contains (1) or not (0): the driver compiles out the code of absent features.
+GPU_CONST uint kSpecHasTriangles = 11u;
+GPU_CONST uint kSpecHasSpheres = 12u;
+GPU_CONST uint kSpecHasSmoothNormals = 13u;   // `trinormal`
+GPU_CONST uint kSpecHasPointLights = 14u;
+GPU_CONST uint kSpecHasDirectionalLights = 15u;
+GPU_CONST uint kSpecHasAttenuation = 16u;     // a point light whose attenuation is not 1 0 0
+GPU_CONST uint kSpecHasSpecular = 17u;        // highlights and mirror rays
+GPU_CONST uint kSpecCount = 18u;
 
 // A traversal-stack entry says what its parent's read of the node told: for a leaf,
 // kStackLeafBit | count << kStackCountShift | first primRef (first < 2^28, count <= 7); for an
