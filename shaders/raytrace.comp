@@ -35,13 +35,13 @@ layout(constant_id = 17) const bool kHasSpecular = true;
 // views, which lavapipe reads 2.7-3x faster inside loops (bench/ measures both). Only uint
 // views: a float view may flush denormal-looking indices or canonicalise NaN-looking words.
 #ifdef VKRT_TEXEL_READS
-layout(binding = 0) uniform usamplerBuffer triangleWords;        // RGBA32UI, 4 texels each
-layout(binding = 1) uniform usamplerBuffer triangleNormalWords;  // RGBA32UI, 3 texels each
-layout(binding = 2) uniform usamplerBuffer sphereWords;          // RGBA32UI, 6 texels each
-layout(binding = 3) uniform usamplerBuffer lightWords;           // RGBA32UI, 3 texels each
-layout(binding = 4) uniform usamplerBuffer materialWords;        // RGBA32UI, 4 texels each
-layout(binding = 5) uniform usamplerBuffer nodeWords;            // RGBA32UI, 2 texels each
-layout(binding = 6) uniform usamplerBuffer primRefWords;         // R32UI
+layout(binding = kBindingTriangles) uniform usamplerBuffer triangleWords;        // RGBA32UI, 4 texels each
+layout(binding = kBindingTriangleNormals) uniform usamplerBuffer triangleNormalWords;  // RGBA32UI, 3 texels each
+layout(binding = kBindingSpheres) uniform usamplerBuffer sphereWords;          // RGBA32UI, 6 texels each
+layout(binding = kBindingLights) uniform usamplerBuffer lightWords;           // RGBA32UI, 3 texels each
+layout(binding = kBindingMaterials) uniform usamplerBuffer materialWords;        // RGBA32UI, 4 texels each
+layout(binding = kBindingBvhNodes) uniform usamplerBuffer nodeWords;            // RGBA32UI, 2 texels each
+layout(binding = kBindingPrimRefs) uniform usamplerBuffer primRefWords;         // R32UI
 
 vec4 texelF(usamplerBuffer b, uint i) { return uintBitsToFloat(texelFetch(b, int(i))); }
 
@@ -96,13 +96,13 @@ GpuBvhNode loadNode(uint i) {
 }
 uint loadPrimRef(uint i) { return texelFetch(primRefWords, int(i)).x; }
 #else
-layout(std430, binding = 0) readonly buffer Triangles { GpuTriangle triangles[]; };
-layout(std430, binding = 1) readonly buffer TriangleNormals { GpuTriangleNormals triangleNormals[]; };
-layout(std430, binding = 2) readonly buffer Spheres { GpuSphere spheres[]; };
-layout(std430, binding = 3) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, binding = 4) readonly buffer Materials { GpuMaterial materials[]; };
-layout(std430, binding = 5) readonly buffer BvhNodes { GpuBvhNode nodes[]; };
-layout(std430, binding = 6) readonly buffer PrimRefs { uint primRefs[]; };
+layout(std430, binding = kBindingTriangles) readonly buffer Triangles { GpuTriangle triangles[]; };
+layout(std430, binding = kBindingTriangleNormals) readonly buffer TriangleNormals { GpuTriangleNormals triangleNormals[]; };
+layout(std430, binding = kBindingSpheres) readonly buffer Spheres { GpuSphere spheres[]; };
+layout(std430, binding = kBindingLights) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, binding = kBindingMaterials) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, binding = kBindingBvhNodes) readonly buffer BvhNodes { GpuBvhNode nodes[]; };
+layout(std430, binding = kBindingPrimRefs) readonly buffer PrimRefs { uint primRefs[]; };
 
 GpuTriangle loadTriangle(uint i) { return triangles[i]; }
 GpuTriangleNormals loadTriangleNormals(uint i) { return triangleNormals[i]; }
@@ -112,9 +112,9 @@ GpuMaterial loadMaterial(uint i) { return materials[i]; }
 GpuBvhNode loadNode(uint i) { return nodes[i]; }
 uint loadPrimRef(uint i) { return primRefs[i]; }
 #endif
-layout(std430, binding = 7) buffer Pixels { uint pixels[]; };   // alpha 0: suspended
-layout(std430, binding = 8) buffer PathStates { GpuPathState states[]; };
-layout(std430, binding = 9) buffer Counters { GpuCounters counters; };
+layout(std430, binding = kBindingPixels) buffer Pixels { uint pixels[]; };   // alpha 0: suspended
+layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathState states[]; };
+layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
 
 layout(push_constant) uniform Push { GpuPushConstants pc; };
 

@@ -135,8 +135,17 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   ComputePipeline pipeline(context, t.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv,
                            t.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv), types, spec,
                            sizeof(gpu::GpuPushConstants));
-  const Buffer* bound[gpu::kBindingCount] = {&triangles, &normals, &spheres, &lights, &materials,
-                                             &nodes,     &primRefs, &pixels, &states, &counters};
+  const Buffer* bound[gpu::kBindingCount] = {};
+  bound[gpu::kBindingTriangles] = &triangles;
+  bound[gpu::kBindingTriangleNormals] = &normals;
+  bound[gpu::kBindingSpheres] = &spheres;
+  bound[gpu::kBindingLights] = &lights;
+  bound[gpu::kBindingMaterials] = &materials;
+  bound[gpu::kBindingBvhNodes] = &nodes;
+  bound[gpu::kBindingPrimRefs] = &primRefs;
+  bound[gpu::kBindingPixels] = &pixels;
+  bound[gpu::kBindingPathStates] = &states;
+  bound[gpu::kBindingCounters] = &counters;
   for (std::uint32_t b = 0; b < gpu::kBindingCount; ++b) {
     if (!t.texelReads || b >= gpu::kBindingPixels)
       pipeline.bind(b, *bound[b]);

@@ -14,7 +14,7 @@ namespace vkrt {
 namespace {
 
 constexpr int kBins = 16;
-constexpr std::uint32_t kMaxLeafSize = 4;
+constexpr std::uint32_t kMaxLeafSize = gpu::kMaxLeafPrims;   // the shader packs the count in 3 bits
 constexpr float kTraversalCost = 1.0f;   // relative to one primitive test
 // Below this depth, nodes are split at the object median: with at most 2^32 primitives the
 // tree is then at most kMedianDepth + 32 deep, and traversal stacks of kMaxBvhDepth suffice.
