@@ -80,12 +80,14 @@ ComputePipeline::ComputePipeline(const Context& context, const std::uint32_t* sp
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VK_CHECK(vk::vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
   } catch (...) {
-    this->~ComputePipeline();
+    release();   // the destructor does not run for an object whose constructor threw
     throw;
   }
 }
 
-ComputePipeline::~ComputePipeline() {
+ComputePipeline::~ComputePipeline() { release(); }
+
+void ComputePipeline::release() {
   for (VkBufferView v : views_) vk::vkDestroyBufferView(device_, v, nullptr);
   views_.clear();
   if (fence_) vk::vkDestroyFence(device_, fence_, nullptr);

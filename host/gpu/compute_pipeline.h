@@ -32,6 +32,8 @@ class ComputePipeline {
   void run(const void* pushConstants, std::uint32_t groups, const Buffer* clear = nullptr);
 
  private:
+  // Destroys every handle made so far; safe to call on a partly constructed pipeline.
+  void release();
   void write(std::uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* buffer,
              const VkBufferView* view);
   const Context& context_;
