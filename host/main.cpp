@@ -25,16 +25,17 @@ void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
   std::fprintf(stderr, "  build   %9.1f ms  (BVH, %zu nodes)\n", r.buildSeconds * ms, r.bvhNodes);
   std::fprintf(stderr, "  render  %9.1f ms\n", r.renderSeconds * ms);
   if (req.backend == vkrt::Backend::Vulkan) {
+    const vkrt::VulkanTimings& v = r.vulkan;
     std::fprintf(stderr, "    instance  %9.1f ms\n", r.instanceSeconds * ms);
     std::fprintf(stderr, "    device    %9.1f ms\n", r.deviceSeconds * ms);
-    std::fprintf(stderr, "    upload    %9.1f ms\n", r.uploadSeconds * ms);
-    std::fprintf(stderr, "    pipeline  %9.1f ms  (%s reads)\n", r.pipelineSeconds * ms,
-                 r.texelReads ? "texel-buffer" : "storage-buffer");
-    std::fprintf(stderr, "    first dispatch (with JIT) %9.1f ms\n", r.firstDispatchSeconds * ms);
-    std::fprintf(stderr, "    left out: %s\n", r.leftOut.empty() ? "nothing" : r.leftOut.c_str());
+    std::fprintf(stderr, "    upload    %9.1f ms\n", v.uploadSeconds * ms);
+    std::fprintf(stderr, "    pipeline  %9.1f ms  (%s reads)\n", v.pipelineSeconds * ms,
+                 v.texelReads ? "texel-buffer" : "storage-buffer");
+    std::fprintf(stderr, "    first dispatch (with JIT) %9.1f ms\n", v.firstDispatchSeconds * ms);
+    std::fprintf(stderr, "    left out: %s\n", v.leftOut.empty() ? "nothing" : v.leftOut.c_str());
     std::fprintf(stderr, "    dispatch  %9.1f ms  (%u bands, %u dispatches, %llu pixel suspensions)\n",
-                 r.dispatchSeconds * ms, r.bands, r.dispatches, static_cast<unsigned long long>(r.suspensions));
-    std::fprintf(stderr, "    readback  %9.1f ms\n", r.readbackSeconds * ms);
+                 v.dispatchSeconds * ms, v.bands, v.dispatches, static_cast<unsigned long long>(v.suspensions));
+    std::fprintf(stderr, "    readback  %9.1f ms\n", v.readbackSeconds * ms);
   }
   std::fprintf(stderr, "  write   %9.1f ms\n", r.writeSeconds * ms);
   double mrays = r.renderSeconds > 0 ? static_cast<double>(r.rays.total()) / r.renderSeconds / 1e6 : 0.0;

@@ -1,6 +1,5 @@
 // Headless Vulkan context: instance, device choice, compute queue, validation messages.
 #include "gpu/context.h"
-#include "timing.h"
 
 #include <algorithm>
 #include <charconv>
@@ -9,6 +8,7 @@
 #include <cstring>
 
 #include "gpu/device_error.h"
+#include "timing.h"
 
 namespace vkrt {
 namespace {

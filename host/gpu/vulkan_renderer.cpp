@@ -1,6 +1,5 @@
 // The Vulkan backend's host side: upload, pipeline, band-by-band dispatch, readback.
 #include "gpu/vulkan_renderer.h"
-#include "timing.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,6 +7,7 @@
 
 #include "gpu/compute_pipeline.h"
 #include "gpu/device_error.h"
+#include "timing.h"
 #include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
 #include "raytrace_texel.comp.h"   // kRaytraceTexelSpirv: the same with VKRT_TEXEL_READS
 

@@ -1,15 +1,14 @@
 // parse -> build -> render (CPU reference or Vulkan) -> PNG, with a timer per stage.
 #include "render/render.h"
-#include "timing.h"
 
 #include <chrono>
-#include <memory>
 #include <thread>
 
 #include "gpu/vulkan_renderer.h"
 #include "image/png.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
+#include "timing.h"
 
 namespace vkrt {
 namespace {
@@ -53,20 +52,8 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
   options.reads = request.reads;
   options.specialize = request.specialize;
   options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
-  VulkanTimings timings;
-  Image image = renderVulkan(context, gpuScene, options, &report.rays, &timings);
+  Image image = renderVulkan(context, gpuScene, options, &report.rays, &report.vulkan);
   report.renderSeconds = setup + secondsSince(t0);
-  report.uploadSeconds = timings.uploadSeconds;
-  report.pipelineSeconds = timings.pipelineSeconds;
-  report.firstDispatchSeconds = timings.firstDispatchSeconds;
-  report.dispatchSeconds = timings.dispatchSeconds;
-  report.readbackSeconds = timings.readbackSeconds;
-  report.bands = timings.bands;
-  report.dispatches = timings.dispatches;
-  report.suspensions = timings.suspensions;
-  report.texelReads = timings.texelReads;
-  report.leftOut = timings.leftOut;
-  report.validationMessages = context.validationMessages();
   return image;
 }
 

@@ -33,14 +33,9 @@ struct RenderReport {
   int width = 0, height = 0, maxDepth = 0, threads = 0;
   std::size_t triangles = 0, spheres = 0, lights = 0, bvhNodes = 0;
   double parseSeconds = 0, buildSeconds = 0, renderSeconds = 0, writeSeconds = 0;
-  // Vulkan only: the parts of renderSeconds.
-  double instanceSeconds = 0, deviceSeconds = 0, uploadSeconds = 0, pipelineSeconds = 0, firstDispatchSeconds = 0,
-         dispatchSeconds = 0, readbackSeconds = 0;
-  std::uint32_t bands = 0, dispatches = 0;
-  std::uint64_t suspensions = 0;
-  bool texelReads = false;
-  std::string leftOut;                 // Vulkan: features compiled out
-  int validationMessages = 0;
+  // Vulkan only: context creation, then the renderer's own breakdown (parts of renderSeconds).
+  double instanceSeconds = 0, deviceSeconds = 0;
+  VulkanTimings vulkan;
   RayCounts rays;
 };
 
