@@ -84,7 +84,17 @@ bool hitBox(const gpu::GpuBvhNode& n, const Ray& ray, const dvec3& invDir, doubl
 
 class Tracer {
  public:
-  Tracer(const SceneDesc& scene, const Bvh& bvh) : scene_(scene), bvh_(bvh) {}
+  // The camera basis is computed once here, not per pixel.
+  Tracer(const SceneDesc& scene, const Bvh& bvh) : scene_(scene), bvh_(bvh) {
+    const Camera& c = scene.camera;
+    w_ = glm::normalize(c.from - c.at);
+    u_ = glm::normalize(glm::cross(c.up, w_));
+    v_ = glm::cross(w_, u_);
+    halfW_ = scene.width / 2.0;
+    halfH_ = scene.height / 2.0;
+    tanY_ = std::tan(glm::radians(c.fovyDegrees) / 2.0);
+    tanX_ = tanY_ * scene.width / scene.height;
+  }
 
   // Nearest hit with t in (tMin, tMax), or the first one found when anyHit.
   bool intersect(const Ray& ray, double tMin, double tMax, bool anyHit, Hit& hit) const {
@@ -172,22 +182,18 @@ class Tracer {
     return color;
   }
 
+  // SPEC section 3: the ray through the centre of pixel (column, row).
   Ray cameraRay(int column, int row) const {
-    const Camera& c = scene_.camera;
-    dvec3 w = glm::normalize(c.from - c.at);
-    dvec3 u = glm::normalize(glm::cross(c.up, w));
-    dvec3 v = glm::cross(w, u);
-    double halfW = scene_.width / 2.0, halfH = scene_.height / 2.0;
-    double tanY = std::tan(glm::radians(c.fovyDegrees) / 2.0);
-    double tanX = tanY * scene_.width / scene_.height;
-    double a = tanX * ((column + 0.5) - halfW) / halfW;
-    double b = tanY * (halfH - (row + 0.5)) / halfH;
-    return {c.from, glm::normalize(a * u + b * v - w)};
+    double a = tanX_ * ((column + 0.5) - halfW_) / halfW_;
+    double b = tanY_ * (halfH_ - (row + 0.5)) / halfH_;
+    return {scene_.camera.from, glm::normalize(a * u_ + b * v_ - w_)};
   }
 
  private:
   const SceneDesc& scene_;
   const Bvh& bvh_;
+  dvec3 u_, v_, w_;
+  double halfW_, halfH_, tanX_, tanY_;
 };
 
 }  // namespace
