@@ -51,12 +51,11 @@ TEST_P(GpuFeatureScene, StorageAndTexelReadsAgreeExactly) {
 TEST_P(GpuFeatureScene, SpecializationChangesNoPixel) {
   VKRT_REQUIRE_GPU(context);
   SceneDesc scene = parseSceneFile(sourcePath("scenes/" + GetParam() + ".test"));
-  Context* ctx = gpuContextOrSkip();
   VulkanOptions generic;
   generic.specialize = false;
   VulkanTimings specializedRun, genericRun;
   Image specialized = renderGpu(scene, 0, &specializedRun);
-  Image all = renderVulkan(*ctx, flatten(scene), generic, nullptr, &genericRun);
+  Image all = renderVulkan(*context, flatten(scene), generic, nullptr, &genericRun);
   EXPECT_EQ(genericRun.leftOut, "");
   EXPECT_TRUE(imagesClose("gpu-specialize/" + GetParam(), specialized, all, 0, 0)) << "left out: " << specializedRun.leftOut;
 }
