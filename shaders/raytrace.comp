@@ -30,6 +30,7 @@ layout(constant_id = 14) const bool kHasPointLights = true;
 layout(constant_id = 15) const bool kHasDirectionalLights = true;
 layout(constant_id = 16) const bool kHasAttenuation = true;
 layout(constant_id = 17) const bool kHasSpecular = true;
+layout(constant_id = 18) const bool kCutoff = true;
 
 // Scene reads: storage buffers, or (VKRT_TEXEL_READS) the same bytes through uint texel-buffer
 // views, which lavapipe reads 2.7-3x faster inside loops (bench/ measures both). Only uint
@@ -261,10 +262,34 @@ void beginShading() {
   phase = kPhaseLight;
 }
 
+// SPEC section 7: floor(clamp(c, 0, 1) * 255); NaN becomes 0.
+uint toByte(float c) { return c > 0.0 ? uint(floor(min(c, 1.0) * 255.0)) : 0u; }
+
+// The exactness cut-off (GpuPushConstants): true when the rest of a path whose next segment
+// has weight `weight` and is segment `nextDepth` cannot change any byte of the pixel.
+bool restCannotChangePixel(vec3 weight, uint nextDepth) {
+  bool nonNegative = pc.cutoffBound.w != 0.0;
+  if (nonNegative && all(greaterThanEqual(radiance, vec3(1.0)))) return true;   // saturated
+  // 1 + s + ... + s^(n-1) for the n segments left, bounded by n when s >= 1.
+  float n = float(kMaxDepth - nextDepth + 1u);
+  vec3 s = pc.cutoffSpecular.rgb;
+  vec3 series = vec3(n);
+  for (int c = 0; c < 3; ++c)
+    if (s[c] < 1.0) series[c] = min(n, (1.0 - pow(s[c], n)) / (1.0 - s[c]));
+  // A margin for float rounding in the sums the bound stands for.
+  vec3 reach = abs(weight) * pc.cutoffBound.rgb * series * 1.001 + 1e-6;
+  if (!all(lessThan(reach, vec3(kInfinity)))) return false;
+  vec3 low = nonNegative ? radiance : radiance - reach, high = radiance + reach;
+  for (int c = 0; c < 3; ++c)
+    if (toByte(low[c]) != toByte(high[c])) return false;
+  return true;
+}
+
 // After the last light: the mirror ray, or the end of the path.
 void reflectOrFinish() {
   vec3 specular = loadMaterial(hitMaterial).specular.rgb;
-  if (kHasSpecular && depth < kMaxDepth && any(greaterThan(specular, vec3(0.0)))) {
+  if (kHasSpecular && depth < kMaxDepth && any(notEqual(specular, vec3(0.0))) &&
+      !(kCutoff && restCannotChangePixel(throughput * specular, depth + 1u))) {
     ++depth;
     ++reflectionRays;
     throughput *= specular;
@@ -417,9 +442,6 @@ void loadState(uint slot) {
     stackT[i] = 0.0;   // entry distances are not saved: a resumed pixel only culls less
   }
 }
-
-// SPEC section 7: floor(clamp(c, 0, 1) * 255); NaN becomes 0.
-uint toByte(float c) { return c > 0.0 ? uint(floor(min(c, 1.0) * 255.0)) : 0u; }
 
 void main() {
   // Workgroups visit the band's tiles in a scattered order, so that each of lavapipe's threads

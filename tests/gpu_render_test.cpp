@@ -24,6 +24,21 @@ long long allowedFlips(const Image& img) { return std::max<long long>(3, img.wid
 class GpuFeatureScene : public ::testing::TestWithParam<std::string> {};
 class GpuCourseScene : public ::testing::TestWithParam<const char*> {};
 
+// The image with and without the exactness cut-off of the mirror loop, which must be the same;
+// returns the mirror rays each traced.
+std::pair<std::uint64_t, std::uint64_t> expectCutoffChangesNoPixel(const std::string& name, const SceneDesc& scene) {
+  Context* context = gpuContextOrSkip();
+  VulkanOptions exact;
+  exact.cutoff = false;
+  RayCounts cutRays, exactRays;
+  GpuScene flat = flatten(scene);
+  Image cut = renderVulkan(*context, flat, VulkanOptions{}, &cutRays, nullptr);
+  Image all = renderVulkan(*context, flat, exact, &exactRays, nullptr);
+  EXPECT_TRUE(imagesClose("gpu-cutoff/" + name, cut, all, 0, 0));
+  EXPECT_LE(cutRays.reflection, exactRays.reflection);
+  EXPECT_EQ(context->validationMessages(), 0);
+  return {cutRays.reflection, exactRays.reflection};
+}
 
 }  // namespace
 
@@ -60,6 +75,11 @@ TEST_P(GpuFeatureScene, SpecializationChangesNoPixel) {
   EXPECT_TRUE(imagesClose("gpu-specialize/" + GetParam(), specialized, all, 0, 0)) << "left out: " << specializedRun.leftOut;
 }
 
+TEST_P(GpuFeatureScene, CutoffChangesNoPixel) {
+  VKRT_REQUIRE_GPU(context);
+  expectCutoffChangesNoPixel(GetParam(), parseSceneFile(sourcePath("scenes/" + GetParam() + ".test")));
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuFeatureScene, ::testing::ValuesIn(projectSceneNames()),
                          [](const auto& p) { return p.param; });
 
@@ -79,6 +99,16 @@ TEST_P(GpuCourseScene, MatchesReferenceAndCpu) {
               name.c_str(), d.differing.size(), d.countOver(2), d.maxChannelDiff);
   Image cpu = renderScene(scene);
   EXPECT_TRUE(imagesClose("course-gpu-vs-cpu/" + name, gpu, cpu, 2, allowedFlips(cpu)));
+}
+
+TEST_P(GpuCourseScene, CutoffChangesNoPixel) {
+  auto dir = cse167Dir();
+  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse167 not found");
+  VKRT_REQUIRE_GPU(context);
+  std::string name = GetParam();
+  auto [cut, all] = expectCutoffChangesNoPixel(name, parseScene(readFile(*dir + "/scenes/" + name + ".test"), name));
+  std::printf("[ stats    ] %s: %llu of %llu mirror rays traced with the cut-off\n", name.c_str(),
+              static_cast<unsigned long long>(cut), static_cast<unsigned long long>(all));
 }
 
 INSTANTIATE_TEST_SUITE_P(Cse167, GpuCourseScene,
@@ -182,4 +212,24 @@ TEST(GpuEdgeCases, EmptySceneAndLightsOnlyAreBlack) {
     ASSERT_EQ(img.width, 16);
     for (std::uint8_t b : img.rgb) ASSERT_EQ(b, 0);
   }
+}
+
+// Between two wide, dim, parallel mirrors with maxdepth 40 nearly every path bounces 40
+// times, but after a few bounces nothing can change a byte, and the cut-off must stop those
+// paths. With a negative colour the bound is two-sided.
+TEST(GpuCutoff, StopsPathsThatCannotChangeAByte) {
+  VKRT_REQUIRE_GPU(context);
+  auto scene = [](const std::string& diffuse) {
+    return "size 40 30\ncamera 0 0 0 0 1 0.3 0 0 1 60\nmaxdepth 40\npoint 0 3 0 1 1 1\n"
+           "ambient 0.05 0.05 0.05\ndiffuse " + diffuse + "\nspecular 0.1 0.1 0.1\nshininess 20\n"
+           "vertex -1000 -1000 -1\nvertex 1000 -1000 -1\nvertex 1000 1000 -1\nvertex -1000 1000 -1\n"
+           "tri 0 1 2\ntri 0 2 3\npushTransform\ntranslate 0 0 2\ntri 0 2 1\ntri 0 3 2\npopTransform\n"
+           "sphere 0 4 0 0.5\n";
+  };
+  auto [cut, all] = expectCutoffChangesNoPixel("dim-mirrors", parseScene(scene("0.4 0.5 0.6"), "dim.test"));
+  EXPECT_LT(cut * 4, all) << "the cut-off no longer stops hopeless paths";
+  std::printf("[ stats    ] dim mirrors: %llu of %llu mirror rays traced with the cut-off\n",
+              static_cast<unsigned long long>(cut), static_cast<unsigned long long>(all));
+  auto [cutNeg, allNeg] = expectCutoffChangesNoPixel("negative", parseScene(scene("0.4 -0.5 0.6"), "neg.test"));
+  EXPECT_LT(cutNeg * 2, allNeg);
 }

@@ -21,6 +21,8 @@ const char* usageText() {
          "  --validation           enable the Vulkan validation layer (also VKRT_VALIDATION=1)\n"
          "  --reads auto|texel|storage  how the shader reads the scene (default auto: texel\n"
          "                         buffers, faster on lavapipe, where the device's limits allow)\n"
+         "  --no-cutoff            trace every mirror bounce up to maxdepth, even those that\n"
+         "                         cannot change the 8-bit result (same image, slower)\n"
          "  --threads N            worker threads for the CPU backend (default: all cores)\n"
          "  --stats                print a timing breakdown and ray counts on stderr\n"
          "  -q, --quiet            print nothing but errors\n"
@@ -99,6 +101,8 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw UsageError("unknown --reads '" + r + "' (expected: auto, texel or storage)");
     } else if (a == "--no-specialize") {   // for the benchmark and tests; not in --help
       o.request.specialize = false;
+    } else if (a == "--no-cutoff") {
+      o.request.cutoff = false;
     } else if (a == "--validation") {
       o.request.validation = true;
     } else if (name == "--step-budget") {   // for tests of the loop budget; not in --help

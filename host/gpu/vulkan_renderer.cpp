@@ -116,6 +116,7 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   spec[gpu::kSpecHasDirectionalLights] = features.directionalLights;
   spec[gpu::kSpecHasAttenuation] = features.attenuation;
   spec[gpu::kSpecHasSpecular] = features.specular;
+  spec[gpu::kSpecCutoff] = options.cutoff;
   const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
   spec[gpu::kSpecRootEntry] = root.primCount > 0 ? gpu::kStackLeafBit | root.primCount << gpu::kStackCountShift |
                                                        root.leftOrFirst
@@ -157,7 +158,7 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   t.pipelineSeconds = secondsSince(t0);
 
   Image image(static_cast<int>(width), static_cast<int>(height));
-  gpu::GpuPushConstants push = scene.camera;
+  gpu::GpuPushConstants push = scene.push;
   auto* counter = static_cast<volatile gpu::GpuCounters*>(counters.mapped());
   for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
     push.bandY0 = y0;

@@ -23,6 +23,7 @@ struct VulkanOptions {
   std::uint32_t stepBudget = 0;           // steps per pixel per dispatch; 0: kDefaultStepBudget
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
   bool specialize = true;                 // compile out what the scene does not use
+  bool cutoff = true;                     // stop mirror paths that can no longer change a byte
   std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixels done, pixels total)
 };
 

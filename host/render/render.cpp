@@ -51,6 +51,7 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
   options.stepBudget = request.stepBudget;
   options.reads = request.reads;
   options.specialize = request.specialize;
+  options.cutoff = request.cutoff;
   options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
   Image image = renderVulkan(context, gpuScene, options, &report.rays, &report.vulkan);
   report.renderSeconds = setup + secondsSince(t0);

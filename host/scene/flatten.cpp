@@ -2,6 +2,7 @@
 #include "scene/flatten.h"
 
 #include <cmath>
+#include <limits>
 
 namespace vkrt {
 namespace {
@@ -26,6 +27,36 @@ gpu::GpuPushConstants cameraConstants(const SceneDesc& scene) {
   return p;
 }
 
+// The exactness cut-off's bounds (gpu_types.h, GpuPushConstants): what one hit can send at
+// most, per channel, in absolute value, and the largest mirror weight. A point light with no
+// constant attenuation term has no bound (its light grows without limit near it): the bound
+// is then infinite and the shader cuts only paths whose pixel is already saturated.
+void cutoffConstants(const SceneDesc& scene, gpu::GpuPushConstants& p) {
+  bool nonNegative = true;
+  auto track = [&nonNegative](const dvec3& c) {
+    nonNegative = nonNegative && c.x >= 0.0 && c.y >= 0.0 && c.z >= 0.0;
+    return glm::abs(c);
+  };
+  dvec3 lightSum(0.0);
+  for (const Light& l : scene.lights) {
+    double strongest = 1.0;   // the largest 1 / attenuation divisor
+    if (l.type == LightType::Point)
+      strongest = l.attenuation.x > 0.0 ? 1.0 / l.attenuation.x : std::numeric_limits<double>::infinity();
+    lightSum += track(l.color) * strongest;
+  }
+  dvec3 bound(0.0), specular(0.0);
+  for (const Material& m : scene.materials) {
+    // N.L <= 1 and max(N.H, 0)^s <= 1, also for s = 0.
+    dvec3 hit = track(m.ambient) + track(m.emission) + lightSum * (track(m.diffuse) + track(m.specular));
+    bound = glm::max(bound, hit);
+    specular = glm::max(specular, glm::abs(m.specular));
+  }
+  // Infinite or beyond float: the largest float, which the shader treats as "no bound".
+  auto toFloat = [](double v) { return v < 3.0e38 ? static_cast<float>(v) : 3.0e38f; };
+  p.cutoffBound = {toFloat(bound.x), toFloat(bound.y), toFloat(bound.z), nonNegative ? 1.0f : 0.0f};
+  p.cutoffSpecular = {toFloat(specular.x), toFloat(specular.y), toFloat(specular.z), 0.0f};
+}
+
 }  // namespace
 
 GpuScene flatten(const SceneDesc& scene) {
@@ -33,7 +64,8 @@ GpuScene flatten(const SceneDesc& scene) {
   g.width = static_cast<std::uint32_t>(scene.width);
   g.height = static_cast<std::uint32_t>(scene.height);
   g.maxDepth = static_cast<std::uint32_t>(scene.maxDepth);
-  g.camera = cameraConstants(scene);
+  g.push = cameraConstants(scene);
+  cutoffConstants(scene, g.push);
   g.triangles.reserve(scene.triangles.size());
   for (const Triangle& t : scene.triangles) {
     gpu::GpuTriangle gt{};

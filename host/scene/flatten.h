@@ -12,7 +12,7 @@ namespace vkrt {
 
 struct GpuScene {
   std::uint32_t width = 0, height = 0, maxDepth = 0;
-  gpu::GpuPushConstants camera{};   // the camera part of the push constants (SPEC section 3)
+  gpu::GpuPushConstants push{};     // the push constants but the band's: camera (SPEC section 3), cut-off
   std::vector<gpu::GpuTriangle> triangles;
   std::vector<gpu::GpuTriangleNormals> triangleNormals;   // only for `trinormal` triangles
   std::vector<gpu::GpuSphere> spheres;

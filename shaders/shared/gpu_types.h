@@ -126,7 +126,8 @@ GPU_CONST uint kSpecHasPointLights = 14u;
 GPU_CONST uint kSpecHasDirectionalLights = 15u;
 GPU_CONST uint kSpecHasAttenuation = 16u;     // a point light whose attenuation is not 1 0 0
 GPU_CONST uint kSpecHasSpecular = 17u;        // highlights and mirror rays
-GPU_CONST uint kSpecCount = 18u;
+GPU_CONST uint kSpecCutoff = 18u;             // the exactness cut-off of the mirror loop (below)
+GPU_CONST uint kSpecCount = 19u;
 
 // A traversal-stack entry says what its parent's read of the node told: for a leaf,
 // kStackLeafBit | count << kStackCountShift | first primRef (first < 2^28, count <= 7); for an
@@ -158,12 +159,19 @@ struct GpuPushConstants {
   vec4 cameraRight;         // xyz = u * tan(fovx/2) / (W/2): one pixel to the right
   vec4 cameraUp;            // xyz = v * tan(fovy/2) / (H/2): one pixel up
   vec4 cameraBack;          // xyz = w = normalize(from - at)
+  // The exactness cut-off: a mirror ray is not traced when the most that the rest of the
+  // path can add or take away, |throughput| * cutoffBound * (1 + s + s^2 + ...) per channel
+  // (s = cutoffSpecular), leaves every channel's byte as it is. cutoffBound bounds the
+  // |radiance| that one hit can send (ambient + emission + every light at full strength).
+  vec4 cutoffBound;         // rgb = that bound per channel; w = 1 when no colour in the scene is negative
+  vec4 cutoffSpecular;      // rgb = the largest |specular| of any material, per channel; w unused
   uint bandY0;              // first image row of this band
   uint resume;              // 0: every pixel starts fresh; 1: continue suspended pixels
-  uint pad0, pad1;          // size 80 (push constants: at most 128 bytes)
+  uint pad0, pad1;          // size 112 (push constants: at most 128 bytes)
 };
-GPU_ASSERT_SIZE(GpuPushConstants, 80)
-GPU_ASSERT_OFFSET(GpuPushConstants, bandY0, 64)
+GPU_ASSERT_SIZE(GpuPushConstants, 112)
+GPU_ASSERT_OFFSET(GpuPushConstants, cutoffBound, 64)
+GPU_ASSERT_OFFSET(GpuPushConstants, bandY0, 96)
 
 struct GpuCounters {
   uint suspended;           // pixels of this dispatch that ran out of steps
