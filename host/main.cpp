@@ -8,6 +8,7 @@
 #include "gpu/context.h"
 #include "gpu/device_error.h"
 #include "image/png.h"
+#include "interrupt.h"
 #include "render/render.h"
 #include "scene/diagnostic.h"
 
@@ -70,15 +71,24 @@ int main(int argc, char** argv) {
         std::printf("%zu: %s (%s)\n", i, devices[i].name.c_str(), devices[i].typeName());
       return kExitOk;
     }
+    vkrt::installInterruptHandlers();
     vkrt::ProgressBar progress(!options.quiet);
     vkrt::RenderReport report = vkrt::renderSceneFile(options.request, progress);
     if (options.stats) printStats(options.request, report);
+    if (report.rays.nonFinite > 0)
+      std::fprintf(stderr,
+                   "vkrt: warning: %llu pixels had a NaN or infinite colour (written as 0, or 1 for +infinity); "
+                   "the scene has extreme values\n",
+                   static_cast<unsigned long long>(report.rays.nonFinite));
     if (!options.quiet) {
       double total = report.parseSeconds + report.buildSeconds + report.renderSeconds + report.writeSeconds;
       std::fprintf(stderr, "vkrt: wrote %s (%dx%d) in %.2f s\n", report.outputPath.c_str(), report.width,
                    report.height, total);
     }
     return kExitOk;
+  } catch (const vkrt::Interrupted& e) {
+    std::fprintf(stderr, "\nvkrt: interrupted; nothing written\n");
+    return 128 + e.signal();
   } catch (const vkrt::SceneError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return kExitScene;

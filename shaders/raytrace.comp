@@ -125,7 +125,7 @@ const float kInfinity = 3.402823466e38;
 vec3 rayOrigin, rayDir;
 float rayTMin, bestT, bestB1, bestB2;
 vec3 throughput, radiance, hitPoint, hitNormal, shadowDir, lightColor;
-float shadowTMax, nDotL;
+float shadowTMax, nDotL, hitTMin;
 uint phase, depth, lightIndex, sp, hitPrim, hitMaterial;
 uint stack[kStackSize];     // entries (kStackLeafBit) of nodes whose boxes the ray enters
 float stackT[kStackSize];   // the entry distance of each, to skip it once a nearer hit is known
@@ -152,23 +152,48 @@ float boxEntry(GpuBvhNode n, vec3 origin, vec3 invDir, float tMin, float tMax) {
   return enter <= leave ? enter : kInfinity;
 }
 
-// Moller-Trumbore. Returns t in (tMin, tMax) or -1; b = weights of p1 and p2.
-float hitTriangle(uint index, vec3 origin, vec3 dir, float tMin, float tMax, out vec2 b) {
+// The watertight ray/triangle test of Woop, Benthin and Wald (2013): the ray is sheared onto
+// +z (its largest axis), and the edge functions are computed from the sheared vertices alone,
+// so two triangles that share an edge compute the same value for it with opposite signs and
+// a ray can never slip between them. `precise` forbids fused multiply-adds there, which
+// would break that symmetry. Per-ray constants:
+struct Shear {
+  uint kx, ky, kz;   // the permuted axes: kz is the direction's largest
+  vec3 s;            // dir[kx] / dir[kz], dir[ky] / dir[kz], 1 / dir[kz]
+};
+
+Shear shearFor(vec3 dir) {
+  vec3 a = abs(dir);
+  Shear sh;
+  sh.kz = a.x >= a.y ? (a.x >= a.z ? 0u : 2u) : (a.y >= a.z ? 1u : 2u);
+  sh.kx = sh.kz == 2u ? 0u : sh.kz + 1u;
+  sh.ky = sh.kx == 2u ? 0u : sh.kx + 1u;
+  if (dir[sh.kz] < 0.0) {   // keep the winding: swap x and y
+    uint k = sh.kx;
+    sh.kx = sh.ky;
+    sh.ky = k;
+  }
+  sh.s = vec3(dir[sh.kx] / dir[sh.kz], dir[sh.ky] / dir[sh.kz], 1.0 / dir[sh.kz]);
+  return sh;
+}
+
+// Returns t in (tMin, tMax) or -1; b = the barycentric weights of p1 and p2. A triangle seen
+// edge-on or of zero area (the host leaves those out anyway) is missed, never NaN.
+float hitTriangle(uint index, vec3 origin, Shear sh, float tMin, float tMax, out vec2 b) {
   GpuTriangle tri = loadTriangle(index);
-  vec3 e1 = tri.p1.xyz - tri.p0.xyz, e2 = tri.p2.xyz - tri.p0.xyz;
-  vec3 pv = cross(dir, e2);
-  float det = dot(e1, pv);
+  vec3 pa = tri.p0.xyz - origin, pb = tri.p1.xyz - origin, pc = tri.p2.xyz - origin;
+  precise float ax = pa[sh.kx] - sh.s.x * pa[sh.kz], ay = pa[sh.ky] - sh.s.y * pa[sh.kz];
+  precise float bx = pb[sh.kx] - sh.s.x * pb[sh.kz], by = pb[sh.ky] - sh.s.y * pb[sh.kz];
+  precise float cx = pc[sh.kx] - sh.s.x * pc[sh.kz], cy = pc[sh.ky] - sh.s.y * pc[sh.kz];
+  precise float u = cx * by - cy * bx;   // edge p1-p2: the weight of p0
+  precise float v = ax * cy - ay * cx;   // edge p2-p0: the weight of p1
+  precise float w = bx * ay - by * ax;   // edge p0-p1: the weight of p2
   b = vec2(0.0);
-  if (det == 0.0) return -1.0;   // degenerate, or the ray lies in its plane
-  float invDet = 1.0 / det;
-  vec3 tv = origin - tri.p0.xyz;
-  float u = dot(tv, pv) * invDet;
-  if (!(u >= 0.0 && u <= 1.0)) return -1.0;
-  vec3 qv = cross(tv, e1);
-  float v = dot(dir, qv) * invDet;
-  if (!(v >= 0.0 && u + v <= 1.0)) return -1.0;
-  float t = dot(e2, qv) * invDet;
-  b = vec2(u, v);
+  if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return -1.0;
+  float det = u + v + w;
+  if (det == 0.0) return -1.0;
+  float t = (u * (sh.s.z * pa[sh.kz]) + v * (sh.s.z * pb[sh.kz]) + w * (sh.s.z * pc[sh.kz])) / det;
+  b = vec2(v, w) / det;
   return (t > tMin && t < tMax) ? t : -1.0;
 }
 
@@ -194,12 +219,12 @@ float hitSphere(uint index, vec3 origin, vec3 dir, float tMin, float tMax) {
 }
 
 // A BVH leaf's primitive reference: a sphere or a triangle.
-float hitPrimitive(uint ref, vec3 origin, vec3 dir, float tMin, float tMax, out vec2 b) {
+float hitPrimitive(uint ref, vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, out vec2 b) {
   b = vec2(0.0);
-  if (!kHasSpheres) return hitTriangle(ref, origin, dir, tMin, tMax, b);
+  if (!kHasSpheres) return hitTriangle(ref, origin, sh, tMin, tMax, b);
   if (!kHasTriangles) return hitSphere(ref & ~kPrimSphereBit, origin, dir, tMin, tMax);
   return (ref & kPrimSphereBit) != 0u ? hitSphere(ref & ~kPrimSphereBit, origin, dir, tMin, tMax)
-                                      : hitTriangle(ref, origin, dir, tMin, tMax, b);
+                                      : hitTriangle(ref, origin, sh, tMin, tMax, b);
 }
 
 // ---- the state machine's steps -----------------------------------------------------------------
@@ -238,9 +263,16 @@ void pushChildren(uint left, vec3 origin, vec3 invDir, float tMin, float tMax) {
   }
 }
 
+// The secondary-ray offset at p (the policy: gpu_types.h, "Secondary rays").
+float secondaryTMin(vec3 p) {
+  vec3 a = abs(p);
+  return max(pc.sceneEpsilon, kOffsetPerMagnitude * max(max(a.x, a.y), a.z));
+}
+
 // The nearest hit is known: ambient and emission, then the lights one by one.
 void beginShading() {
   hitPoint = rayOrigin + bestT * rayDir;
+  hitTMin = secondaryTMin(hitPoint);
   if (kHasSpheres && (!kHasTriangles || (hitPrim & kPrimSphereBit) != 0u)) {
     GpuSphere s = loadSphere(hitPrim & ~kPrimSphereBit);
     vec3 pObject = (s.objectFromWorld * vec4(rayOrigin, 1.0)).xyz + bestT * (s.objectFromWorld * vec4(rayDir, 0.0)).xyz;
@@ -293,7 +325,7 @@ void reflectOrFinish() {
     ++depth;
     ++reflectionRays;
     throughput *= specular;
-    startRay(hitPoint, normalize(rayDir - 2.0 * dot(rayDir, hitNormal) * hitNormal), kSecondaryRayTMin);
+    startRay(hitPoint, normalize(rayDir - 2.0 * dot(rayDir, hitNormal) * hitNormal), hitTMin);
   } else {
     phase = kPhaseDone;
   }
@@ -326,7 +358,8 @@ void lightStep() {
   }
   ++shadowRays;
   shadowDir = toLight;
-  lightColor = light.color.rgb / divisor;
+  // Finite even for a tiny divisor, so that a zero material term times it stays 0, not NaN.
+  lightColor = clamp(light.color.rgb / divisor, -kInfinity, kInfinity);
   sp = kPrimCount > 0u ? 1u : 0u;
   stack[0] = kRootEntry;
   stackT[0] = 0.0;
@@ -366,7 +399,7 @@ void traversalStep() {
   }
   vec3 origin = shadow ? hitPoint : rayOrigin;
   vec3 dir = shadow ? shadowDir : rayDir;
-  float tMin = shadow ? kSecondaryRayTMin : rayTMin;
+  float tMin = shadow ? hitTMin : rayTMin;
   float tMax = shadow ? shadowTMax : bestT;
   --sp;
   if (stackT[sp] >= tMax) return;   // entered beyond the nearest hit so far
@@ -376,10 +409,12 @@ void traversalStep() {
     return;
   }
   uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
+  Shear sh;
+  if (kHasTriangles) sh = shearFor(dir);
   for (uint i = 0u; i < count; ++i) {
     uint ref = loadPrimRef(first + i);
     vec2 b;
-    float t = hitPrimitive(ref, origin, dir, tMin, tMax, b);
+    float t = hitPrimitive(ref, origin, dir, sh, tMin, tMax, b);
     if (t > 0.0) {
       if (shadow) {   // blocked
         sp = 0u;
@@ -403,7 +438,7 @@ void saveState(uint slot) {
   states[slot].direction = vec4(rayDir, bestT);
   states[slot].throughput = vec4(throughput, bestB1);
   states[slot].radiance = vec4(radiance, bestB2);
-  states[slot].hitPoint = vec4(hitPoint, 0.0);
+  states[slot].hitPoint = vec4(hitPoint, hitTMin);
   states[slot].hitNormal = vec4(hitNormal, 0.0);
   states[slot].shadowDir = vec4(shadowDir, shadowTMax);
   states[slot].lightColor = vec4(lightColor, nDotL);
@@ -426,6 +461,7 @@ void loadState(uint slot) {
   radiance = states[slot].radiance.rgb;
   bestB2 = states[slot].radiance.w;
   hitPoint = states[slot].hitPoint.xyz;
+  hitTMin = states[slot].hitPoint.w;
   hitNormal = states[slot].hitNormal.xyz;
   shadowDir = states[slot].shadowDir.xyz;
   shadowTMax = states[slot].shadowDir.w;
@@ -485,5 +521,8 @@ void main() {
     atomicAdd(counters.suspended, 1u);
     return;
   }
+  // The guard: a NaN channel is written as 0 and an infinite one as 0 or 1 (toByte), and
+  // the pixel is counted, so that no NaN or infinity reaches a pixel unseen.
+  if (any(isnan(radiance)) || any(isinf(radiance))) atomicAdd(counters.nonFinite, 1u);
   pixels[slot] = toByte(radiance.r) | (toByte(radiance.g) << 8) | (toByte(radiance.b) << 16) | (255u << 24);
 }

@@ -30,7 +30,7 @@ std::pair<std::uint64_t, std::uint64_t> expectCutoffChangesNoPixel(const std::st
   Context* context = gpuContextOrSkip();
   VulkanOptions exact;
   exact.cutoff = false;
-  RayCounts cutRays, exactRays;
+  RayCounts cutRays, exactRays;   // (nonFinite checked by the renderGpu tests of the same scenes)
   GpuScene flat = flatten(scene);
   Image cut = renderVulkan(*context, flat, VulkanOptions{}, &cutRays, nullptr);
   Image all = renderVulkan(*context, flat, exact, &exactRays, nullptr);

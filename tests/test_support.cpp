@@ -73,9 +73,14 @@ void writeFile(const std::string& path, const std::string& text) {
 
 bool fileExists(const std::string& path) { return fs::exists(path); }
 
+// Every image the tests render is scanned for colours that were NaN or infinite (the
+// renderers count them: RayCounts::nonFinite); tests that want them call the renderers directly.
 Image renderScene(const SceneDesc& scene) {
   Bvh bvh = buildBvh(scene);
-  return renderReference(scene, bvh, CpuOptions{}, nullptr);
+  RayCounts rays;
+  Image image = renderReference(scene, bvh, CpuOptions{}, &rays);
+  EXPECT_EQ(rays.nonFinite, 0u) << "the CPU reference produced NaN or infinite colours";
+  return image;
 }
 
 Image renderText(const std::string& sceneText, const std::string& name) {
@@ -137,8 +142,10 @@ Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget, VulkanTimings*
   options.stepBudget = stepBudget;
   options.reads = reads;
   int before = context->validationMessages();
-  Image image = renderVulkan(*context, flatten(scene), options, nullptr, timings);
+  RayCounts rays;
+  Image image = renderVulkan(*context, flatten(scene), options, &rays, timings);
   EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";
+  EXPECT_EQ(rays.nonFinite, 0u) << "the shader produced NaN or infinite colours";
   return image;
 }
 

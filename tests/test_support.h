@@ -38,7 +38,8 @@ std::string readFile(const std::string& path);
 void writeFile(const std::string& path, const std::string& text);
 bool fileExists(const std::string& path);
 
-// Parses scene text and renders it with the CPU reference.
+// Parses scene text and renders it with the CPU reference. Both renderScene and renderGpu
+// fail the test when a pixel's colour was NaN or infinite.
 Image renderText(const std::string& sceneText, const std::string& name = "test.test");
 Image renderScene(const SceneDesc& scene);
 

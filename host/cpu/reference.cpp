@@ -9,6 +9,8 @@
 #include <thread>
 #include <vector>
 
+#include "scene/ray_offset.h"
+
 namespace vkrt {
 namespace {
 
@@ -94,6 +96,7 @@ class Tracer {
     halfH_ = scene.height / 2.0;
     tanY_ = std::tan(glm::radians(c.fovyDegrees) / 2.0);
     tanX_ = tanY_ * scene.width / scene.height;
+    sceneEpsilon_ = secondaryRayEpsilon(scene);
   }
 
   // Nearest hit with t in (tMin, tMax), or the first one found when anyHit.
@@ -150,6 +153,7 @@ class Tracer {
       materialIndex = t.material;
     }
     const Material& m = scene_.materials[materialIndex];
+    const double offset = secondaryRayTMin(sceneEpsilon_, p - scene_.camera.from);
     dvec3 eye = -ray.dir;
     dvec3 color = m.ambient + m.emission;
     for (const Light& light : scene_.lights) {
@@ -168,16 +172,19 @@ class Tracer {
       if (nDotL <= 0.0) continue;   // SPEC 7: no diffuse and no specular from behind
       ++counts.shadow;
       Hit blocker;
-      if (intersect({p, toLight}, gpu::kSecondaryRayTMin, distance, true, blocker)) continue;
+      if (intersect({p, toLight}, offset, distance, true, blocker)) continue;
       dvec3 half = glm::normalize(toLight + eye);
       double nDotH = std::max(glm::dot(normal, half), 0.0);
+      // pow(0, 0) = 1 (C's definition; the shader states the same).
       dvec3 lit = m.diffuse * nDotL + m.specular * std::pow(nDotH, m.shininess);
-      color += light.color / divisor * lit;
+      // Finite even for a tiny divisor, so that a zero material term times it stays 0, not NaN.
+      constexpr double kMax = std::numeric_limits<double>::max();
+      color += glm::clamp(light.color / divisor, dvec3(-kMax), dvec3(kMax)) * lit;
     }
     if (depth < scene_.maxDepth && m.specular != dvec3(0.0)) {
       ++counts.reflection;
       dvec3 r = ray.dir - 2.0 * glm::dot(ray.dir, normal) * normal;
-      color += m.specular * shade({p, glm::normalize(r)}, depth + 1, gpu::kSecondaryRayTMin, counts);
+      color += m.specular * shade({p, glm::normalize(r)}, depth + 1, offset, counts);
     }
     return color;
   }
@@ -194,6 +201,7 @@ class Tracer {
   const Bvh& bvh_;
   dvec3 u_, v_, w_;
   double halfW_, halfH_, tanX_, tanY_;
+  double sceneEpsilon_;   // the scene part of the secondary-ray offset (gpu_types.h)
 };
 
 }  // namespace
@@ -212,7 +220,7 @@ Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& 
   auto worker = [&] {
     RayCounts local;
     for (int tile; (tile = nextTile.fetch_add(1)) < tileCount;) {
-      if (options.cancel && options.cancel->load()) break;
+      if (options.stop && options.stop()) break;
       int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
       int x1 = std::min(x0 + kTile, scene.width), y1 = std::min(y0 + kTile, scene.height);
       for (int y = y0; y < y1; ++y)
@@ -221,6 +229,7 @@ Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& 
           dvec3 c = tracer.shade(tracer.cameraRay(x, y), 0, 0.0, local);
           std::uint8_t* px = image.pixel(x, y);
           for (int k = 0; k < 3; ++k) px[k] = radianceToByte(c[k]);
+          if (!std::isfinite(c.x + c.y + c.z)) ++local.nonFinite;
         }
       std::lock_guard lock(mutex);
       donePixels += static_cast<std::uint64_t>(x1 - x0) * (y1 - y0);
@@ -230,6 +239,7 @@ Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& 
     totals.primary += local.primary;
     totals.shadow += local.shadow;
     totals.reflection += local.reflection;
+    totals.nonFinite += local.nonFinite;
   };
 
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());

@@ -15,6 +15,9 @@ namespace vkrt {
 
 struct RayCounts {
   std::uint64_t primary = 0, shadow = 0, reflection = 0;
+  // Pixels whose colour came out NaN or infinite (written as 0 or 1: radianceToByte); the
+  // tests require 0 on every scene they render, and vkrt warns when it is not.
+  std::uint64_t nonFinite = 0;
   std::uint64_t total() const { return primary + shadow + reflection; }
 };
 
@@ -23,8 +26,8 @@ struct CpuOptions {
   // Called after each finished tile with (pixels done, pixels total), from worker threads
   // (one at a time).
   std::function<void(std::uint64_t, std::uint64_t)> progress;
-  // Set to true from elsewhere to stop early (the image is then incomplete).
-  const std::atomic<bool>* cancel = nullptr;
+  // Polled between tiles, from worker threads: true stops early (the image is then incomplete).
+  std::function<bool()> stop;
 };
 
 Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options, RayCounts* counts);

@@ -170,6 +170,7 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
       if (++rounds > kMaxRoundsPerBand)
         throw DeviceError("internal error: pixels of rows " + std::to_string(y0) + "+ still unfinished after " +
                           std::to_string(kMaxRoundsPerBand) + " dispatches");
+      if (options.stop && options.stop()) return image;
       t0 = std::chrono::steady_clock::now();
       pipeline.run(&push, tilesInBand, &counters);
       double s = secondsSince(t0);
@@ -200,6 +201,7 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
     rays->primary = std::uint64_t{width} * height;
     rays->shadow = counter->shadowRays;
     rays->reflection = counter->reflectionRays;
+    rays->nonFinite = counter->nonFinite;
   }
   if (timings) *timings = t;
   return image;

@@ -25,6 +25,7 @@ struct VulkanOptions {
   bool specialize = true;                 // compile out what the scene does not use
   bool cutoff = true;                     // stop mirror paths that can no longer change a byte
   std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixels done, pixels total)
+  std::function<bool()> stop;   // polled before each dispatch: true stops early (image incomplete)
 };
 
 struct VulkanTimings {

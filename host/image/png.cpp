@@ -1,4 +1,7 @@
-// PNG writing with stb_image_write, reading with stb_image.
+// PNG writing, streamed row by row through zlib (memory: the image plus about a megabyte, so
+// a 16384x16384 image needs no second copy; and a Ctrl-C is seen between rows), and reading
+// with stb_image. stb_image_write cannot stream: it builds the filtered image and the whole
+// compressed stream in memory, three times the image in all.
 #include "image/png.h"
 
 #include <cerrno>
@@ -6,6 +9,7 @@
 #include <cstring>
 #include <cstdlib>
 #include <filesystem>
+#include <vector>
 
 #include <zlib.h>
 
@@ -13,12 +17,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-// stb_image_write's own deflate is slow; zlib at level 1 writes the same pixels about 3x
-// faster (the files are a little larger).
-unsigned char* vkrtZlibCompress(unsigned char* data, int length, int* outLength, int quality);
-#define STBIW_ZLIB_COMPRESS vkrtZlibCompress
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STB_IMAGE_WRITE_STATIC
+#include "interrupt.h"
+
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #pragma GCC diagnostic push
@@ -29,20 +29,7 @@ unsigned char* vkrtZlibCompress(unsigned char* data, int length, int* outLength,
 #pragma GCC diagnostic ignored "-Wshadow"
 #pragma GCC diagnostic ignored "-Wdouble-promotion"
 #include <stb_image.h>
-#include <stb_image_write.h>
 #pragma GCC diagnostic pop
-
-unsigned char* vkrtZlibCompress(unsigned char* data, int length, int* outLength, int /*quality*/) {
-  uLongf size = compressBound(static_cast<uLong>(length));
-  auto* out = static_cast<unsigned char*>(std::malloc(size));   // stb frees it with STBIW_FREE (free)
-  if (!out) return nullptr;
-  if (compress2(out, &size, data, static_cast<uLong>(length), 1) != Z_OK) {
-    std::free(out);
-    return nullptr;
-  }
-  *outLength = static_cast<int>(size);
-  return out;
-}
 
 namespace vkrt {
 namespace {
@@ -52,27 +39,104 @@ std::string directoryOf(const std::string& path) {
   return parent.empty() ? std::string(".") : parent.string();
 }
 
-struct WriteState {
-  int fd;
-  bool failed = false;
-  int error = 0;
-};
-
-void writeToFd(void* context, void* data, int size) {
-  auto* st = static_cast<WriteState*>(context);
-  const char* p = static_cast<const char*>(data);
-  std::size_t left = static_cast<std::size_t>(size);
-  while (!st->failed && left > 0) {
-    ssize_t n = ::write(st->fd, p, left);
+// Writes all of `data` to `fd`, or throws IoError naming `path`.
+void writeAll(int fd, const std::uint8_t* data, std::size_t size, const std::string& path) {
+  while (size > 0) {
+    ssize_t n = ::write(fd, data, size);
     if (n < 0) {
       if (errno == EINTR) continue;
-      st->failed = true;
-      st->error = errno;
-      return;
+      throw IoError("cannot write '" + path + "': " + std::strerror(errno));
     }
-    p += n;
-    left -= static_cast<std::size_t>(n);
+    data += n;
+    size -= static_cast<std::size_t>(n);
   }
+}
+
+void putBigEndian(std::vector<std::uint8_t>& out, std::uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>(v >> shift));
+}
+
+// One PNG chunk: length, type, data, CRC of type and data.
+void writeChunk(int fd, const char type[4], const std::uint8_t* data, std::size_t size, const std::string& path) {
+  std::vector<std::uint8_t> head;
+  putBigEndian(head, static_cast<std::uint32_t>(size));
+  head.insert(head.end(), type, type + 4);
+  uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(type), 4);
+  if (size > 0) crc = crc32(crc, data, static_cast<uInt>(size));
+  writeAll(fd, head.data(), head.size(), path);
+  writeAll(fd, data, size, path);
+  std::vector<std::uint8_t> tail;
+  putBigEndian(tail, static_cast<std::uint32_t>(crc));
+  writeAll(fd, tail.data(), tail.size(), path);
+}
+
+int paeth(int a, int b, int c) {
+  int p = a + b - c, pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
+  return pa <= pb && pa <= pc ? a : (pb <= pc ? b : c);
+}
+
+// Filters one row (PNG filter types 0-4) with the type whose output has the least sum of
+// absolute values, the usual heuristic; out[0] gets the type.
+void filterRow(const std::uint8_t* row, const std::uint8_t* above, std::size_t bytes, std::vector<std::uint8_t>& out,
+               std::vector<std::uint8_t>& trial) {
+  constexpr std::size_t bpp = 3;
+  long best = -1;
+  for (std::uint8_t type = 0; type <= 4; ++type) {
+    trial[0] = type;
+    long cost = 0;
+    for (std::size_t i = 0; i < bytes; ++i) {
+      int a = i >= bpp ? row[i - bpp] : 0, b = above ? above[i] : 0, c = above && i >= bpp ? above[i - bpp] : 0;
+      int predicted = type == 0 ? 0 : type == 1 ? a : type == 2 ? b : type == 3 ? (a + b) / 2 : paeth(a, b, c);
+      auto v = static_cast<std::uint8_t>(row[i] - predicted);
+      trial[i + 1] = v;
+      cost += v < 128 ? v : 256 - v;
+    }
+    if (best < 0 || cost < best) {
+      best = cost;
+      out.swap(trial);
+    }
+  }
+}
+
+void writePngStream(int fd, const Image& image, const std::string& path) {
+  static const std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  writeAll(fd, kSignature, sizeof kSignature, path);
+  std::vector<std::uint8_t> header;
+  putBigEndian(header, static_cast<std::uint32_t>(image.width));
+  putBigEndian(header, static_cast<std::uint32_t>(image.height));
+  header.insert(header.end(), {8, 2, 0, 0, 0});   // 8 bits, RGB, deflate, filters, no interlace
+  writeChunk(fd, "IHDR", header.data(), header.size(), path);
+
+  z_stream z{};
+  if (deflateInit(&z, 1) != Z_OK) throw IoError("cannot write '" + path + "': zlib failed to start");
+  std::vector<std::uint8_t> compressed(1u << 20);
+  const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3;
+  std::vector<std::uint8_t> filtered(rowBytes + 1), trial(rowBytes + 1);
+  auto pump = [&](int flush) {
+    do {
+      z.next_out = compressed.data();
+      z.avail_out = static_cast<uInt>(compressed.size());
+      int rc = deflate(&z, flush);
+      if (rc == Z_STREAM_ERROR) throw IoError("cannot write '" + path + "': zlib failed");
+      std::size_t produced = compressed.size() - z.avail_out;
+      if (produced > 0) writeChunk(fd, "IDAT", compressed.data(), produced, path);
+    } while (z.avail_out == 0);
+  };
+  try {
+    for (int y = 0; y < image.height; ++y) {
+      throwIfInterrupted();
+      filterRow(image.pixel(0, y), y > 0 ? image.pixel(0, y - 1) : nullptr, rowBytes, filtered, trial);
+      z.next_in = filtered.data();
+      z.avail_in = static_cast<uInt>(filtered.size());
+      pump(Z_NO_FLUSH);
+    }
+    pump(Z_FINISH);
+  } catch (...) {
+    deflateEnd(&z);
+    throw;
+  }
+  deflateEnd(&z);
+  writeChunk(fd, "IEND", nullptr, 0, path);
 }
 
 }  // namespace
@@ -97,32 +161,27 @@ void writePngAtomic(const Image& image, const std::string& path) {
   std::string tmpl = (std::filesystem::path(directoryOf(path)) / ".vkrt-XXXXXX.png.tmp").string();
   int fd = ::mkstemps(tmpl.data(), 8);
   if (fd < 0) throw IoError("cannot create a temporary file in '" + directoryOf(path) + "': " + std::strerror(errno));
-  WriteState st{fd};
-  int ok = stbi_write_png_to_func(writeToFd, &st, image.width, image.height, 3, image.rgb.data(), image.width * 3);
-  // The file gets the permissions a plain create would give it (mkstemp makes it 0600).
-  mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  if (!ok && !st.failed) {
-    st.failed = true;
-    st.error = ENOMEM;
-  }
-  if (!st.failed && ::fsync(fd) != 0 && errno != EINVAL) {
-    st.failed = true;
-    st.error = errno;
-  }
-  if (::close(fd) != 0 && !st.failed) {
-    st.failed = true;
-    st.error = errno;
-  }
-  if (!st.failed && ::rename(tmpl.c_str(), path.c_str()) != 0) {
-    st.failed = true;
-    st.error = errno;
-  }
-  if (st.failed) {
+  registerTemporaryFile(tmpl.c_str());
+  try {
+    // The file gets the permissions a plain create would give it (mkstemp makes it 0600).
+    mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+    writePngStream(fd, image, path);
+    if (::fsync(fd) != 0 && errno != EINVAL) throw IoError("cannot write '" + path + "': " + std::strerror(errno));
+    int closed = ::close(fd);
+    fd = -1;
+    if (closed != 0) throw IoError("cannot write '" + path + "': " + std::strerror(errno));
+    throwIfInterrupted();   // the last moment at which the old file is still there
+    if (::rename(tmpl.c_str(), path.c_str()) != 0)
+      throw IoError("cannot write '" + path + "': " + std::strerror(errno));
+  } catch (...) {
+    if (fd >= 0) ::close(fd);
     ::unlink(tmpl.c_str());
-    throw IoError("cannot write '" + path + "': " + std::strerror(st.error));
+    registerTemporaryFile(nullptr);
+    throw;
   }
+  registerTemporaryFile(nullptr);
 }
 
 Image readImage(const std::string& path) {

@@ -6,6 +6,7 @@
 
 #include "gpu/vulkan_renderer.h"
 #include "image/png.h"
+#include "interrupt.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
 #include "timing.h"
@@ -24,6 +25,7 @@ Image renderWithCpu(const RenderRequest& request, const SceneDesc& scene, Progre
   CpuOptions options;
   options.threads = request.threads;
   options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
+  options.stop = [] { return pendingInterrupt() != 0; };
   report.backend = "cpu";
   report.threads = request.threads > 0 ? request.threads : static_cast<int>(std::thread::hardware_concurrency());
   Image image = renderReference(scene, bvh, options, &report.rays);
@@ -53,6 +55,7 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
   options.specialize = request.specialize;
   options.cutoff = request.cutoff;
   options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
+  options.stop = [] { return pendingInterrupt() != 0; };
   Image image = renderVulkan(context, gpuScene, options, &report.rays, &report.vulkan);
   report.renderSeconds = setup + secondsSince(t0);
   return image;
@@ -90,6 +93,7 @@ RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress
   Image image = request.backend == Backend::Cpu ? renderWithCpu(request, scene, progress, report)
                                                 : renderWithVulkan(request, scene, progress, report);
   progress.finish();
+  throwIfInterrupted();   // a stopped render is incomplete: write nothing
 
   t0 = std::chrono::steady_clock::now();
   writePngAtomic(image, report.outputPath);

@@ -222,19 +222,42 @@ void sphereBounds(const Sphere& s, dvec3& lo, dvec3& hi) {
   }
 }
 
-Bvh buildBvh(const SceneDesc& scene) {
+static bool neverHit(const Triangle& t) {
+  dvec3 n = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+  return !(glm::dot(n, n) > 0.0) || !std::isfinite(glm::dot(n, n));
+}
+
+static bool neverHit(const Sphere& s) {
+  double det = glm::determinant(s.worldFromObject);
+  const dmat4& inv = s.objectFromWorld;
+  bool finite = true;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(inv[c][r]);
+  return !(s.radius > 0.0) || !(det != 0.0) || !finite;
+}
+
+Bvh buildBvh(const SceneDesc& scene, const dvec3& origin) {
   std::vector<BuildPrim> prims(scene.triangles.size() + scene.spheres.size());
   const std::size_t triangles = scene.triangles.size();
+  constexpr std::uint32_t kDropped = 0xFFFFFFFFu;
   auto makeRange = [&](std::size_t from, std::size_t to) {
     for (std::size_t i = from; i < to; ++i) {
       if (i < triangles) {
         const Triangle& t = scene.triangles[i];
-        prims[i] = makePrim(glm::min(t.p[0], glm::min(t.p[1], t.p[2])), glm::max(t.p[0], glm::max(t.p[1], t.p[2])),
-                            static_cast<std::uint32_t>(i));
+        if (neverHit(t)) {
+          prims[i].ref = kDropped;
+          continue;
+        }
+        prims[i] = makePrim(glm::min(t.p[0], glm::min(t.p[1], t.p[2])) - origin,
+                            glm::max(t.p[0], glm::max(t.p[1], t.p[2])) - origin, static_cast<std::uint32_t>(i));
       } else {
         dvec3 lo, hi;
+        if (neverHit(scene.spheres[i - triangles])) {
+          prims[i].ref = kDropped;
+          continue;
+        }
         sphereBounds(scene.spheres[i - triangles], lo, hi);
-        prims[i] = makePrim(lo, hi, static_cast<std::uint32_t>(i - triangles) | gpu::kPrimSphereBit);
+        prims[i] = makePrim(lo - origin, hi - origin, static_cast<std::uint32_t>(i - triangles) | gpu::kPrimSphereBit);
       }
     }
   };
@@ -245,6 +268,9 @@ Bvh buildBvh(const SceneDesc& scene) {
   } else {
     makeRange(0, prims.size());
   }
+  // Degenerate primitives (zero area, repeated or collinear vertices; zero radius or a
+  // singular transform) can never be hit: they are left out, so neither backend tests them.
+  std::erase_if(prims, [](const BuildPrim& p) { return p.ref == kDropped; });
 
   Bvh bvh;
   bvh.nodes.reserve(std::max<std::size_t>(1, 2 * prims.size()));

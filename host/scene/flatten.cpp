@@ -1,8 +1,14 @@
-// SceneDesc -> GpuScene. The only place where double-precision scene data becomes float32.
+// SceneDesc -> GpuScene. The only place where double-precision scene data becomes float32, and
+// where the world is moved so that the camera sits at the origin (in double, before rounding):
+// float32 then sees the same small numbers wherever the scene is placed.
 #include "scene/flatten.h"
 
 #include <cmath>
 #include <limits>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/ray_offset.h"
 
 namespace vkrt {
 namespace {
@@ -20,7 +26,7 @@ gpu::GpuPushConstants cameraConstants(const SceneDesc& scene) {
   double tanY = std::tan(glm::radians(c.fovyDegrees) / 2.0);
   double tanX = tanY * scene.width / scene.height;
   gpu::GpuPushConstants p{};
-  p.cameraOrigin = f4(c.from);
+  p.cameraOrigin = f4(dvec3(0.0));   // camera-centred coordinates
   p.cameraRight = f4(u * (tanX / (scene.width / 2.0)));
   p.cameraUp = f4(v * (tanY / (scene.height / 2.0)));
   p.cameraBack = f4(w);
@@ -66,12 +72,15 @@ GpuScene flatten(const SceneDesc& scene) {
   g.maxDepth = static_cast<std::uint32_t>(scene.maxDepth);
   g.push = cameraConstants(scene);
   cutoffConstants(scene, g.push);
+  g.push.sceneEpsilon = static_cast<float>(secondaryRayEpsilon(scene));
+  const dvec3 origin = scene.camera.from;
+  const dmat4 fromOrigin = glm::translate(dmat4(1.0), origin);
   g.triangles.reserve(scene.triangles.size());
   for (const Triangle& t : scene.triangles) {
     gpu::GpuTriangle gt{};
-    gt.p0 = f4(t.p[0]);
-    gt.p1 = f4(t.p[1]);
-    gt.p2 = f4(t.p[2]);
+    gt.p0 = f4(t.p[0] - origin);
+    gt.p1 = f4(t.p[1] - origin);
+    gt.p2 = f4(t.p[2] - origin);
     gt.materialIndex = t.material;
     gt.normalsIndex = gpu::kNoNormals;
     if (t.smooth) {
@@ -83,14 +92,17 @@ GpuScene flatten(const SceneDesc& scene) {
   g.spheres.reserve(scene.spheres.size());
   for (const Sphere& s : scene.spheres) {
     gpu::GpuSphere gs{};
-    gs.objectFromWorld = gpu::mat4(s.objectFromWorld);
-    gs.centerRadius = f4(s.center, static_cast<float>(s.radius));
+    // From camera-centred coordinates to coordinates centred on the sphere, in double: a
+    // sphere far from the world's origin keeps float32's precision.
+    gs.objectFromWorld = gpu::mat4(glm::translate(dmat4(1.0), -s.center) * s.objectFromWorld * fromOrigin);
+    gs.centerRadius = f4(dvec3(0.0), static_cast<float>(s.radius));
     gs.materialIndex = s.material;
     g.spheres.push_back(gs);
   }
   for (const Light& l : scene.lights) {
     gpu::GpuLight gl{};
-    gl.positionOrDirection = f4(l.vec, l.type == LightType::Point ? gpu::kPointLight : 0.0f);
+    bool point = l.type == LightType::Point;
+    gl.positionOrDirection = point ? f4(l.vec - origin, gpu::kPointLight) : f4(l.vec, 0.0f);
     gl.color = f4(l.color);
     gl.attenuation = f4(l.attenuation);
     g.lights.push_back(gl);
@@ -99,7 +111,7 @@ GpuScene flatten(const SceneDesc& scene) {
     g.materials.push_back({f4(m.ambient), f4(m.diffuse), f4(m.specular, static_cast<float>(m.shininess)),
                            f4(m.emission)});
   }
-  g.bvh = buildBvh(scene);
+  g.bvh = buildBvh(scene, origin);
   return g;
 }
 

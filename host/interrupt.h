@@ -1,0 +1,33 @@
+// Ctrl-C and SIGTERM: the first one asks the render to stop at the next tile, band or image
+// row (Interrupted is thrown, the temporary output file removed, an existing output left as
+// it was); a second one ends the process at once, still removing the temporary file.
+#pragma once
+
+#include <atomic>
+#include <stdexcept>
+
+namespace vkrt {
+
+class Interrupted : public std::runtime_error {
+ public:
+  explicit Interrupted(int signal) : std::runtime_error("interrupted"), signal_(signal) {}
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
+};
+
+// Installs the handlers for SIGINT and SIGTERM (vkrt's main does; a library user need not).
+void installInterruptHandlers();
+
+// The signal received so far, or 0. Safe to poll from any thread.
+int pendingInterrupt();
+
+// Throws Interrupted when a signal has been received.
+void throwIfInterrupted();
+
+// The temporary file being written (or nullptr): the second signal removes it before exiting.
+// The string must outlive the registration.
+void registerTemporaryFile(const char* path);
+
+}  // namespace vkrt
