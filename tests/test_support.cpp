@@ -8,16 +8,20 @@
 #include <fstream>
 #include <sstream>
 
+#include <memory>
+
+#include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "cpu/reference.h"
+#include "gpu/device_error.h"
 #include "image/compare.h"
 #include "image/png.h"
 #include "scene/bvh.h"
-#include "scene/parse.h"
 #include "scene/flatten.h"
-#include "gpu/device_error.h"
-#include <memory>
+#include "scene/parse.h"
 
 namespace fs = std::filesystem;
 
@@ -147,6 +151,39 @@ Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget, VulkanTimings*
   EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";
   EXPECT_EQ(rays.nonFinite, 0u) << "the shader produced NaN or infinite colours";
   return image;
+}
+
+Spawned spawnVkrt(const std::vector<std::string>& args, const std::string& logPath,
+                  const std::vector<std::string>& env) {
+  Spawned s;
+  s.logPath = logPath;
+  std::vector<std::string> all = {VKRT_BINARY};
+  all.insert(all.end(), args.begin(), args.end());
+  pid_t pid = ::fork();
+  if (pid == 0) {
+    int fd = ::open(logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, 1);
+    ::dup2(fd, 2);
+    for (const std::string& e : env) ::putenv(const_cast<char*>(e.c_str()));
+    std::vector<char*> argv;
+    for (std::string& a : all) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  s.pid = pid;
+  return s;
+}
+
+Finished waitVkrt(const Spawned& process) {
+  Finished f;
+  int status = 0;
+  struct rusage usage {};
+  if (::wait4(process.pid, &status, 0, &usage) != process.pid) return f;
+  f.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  f.peakRssKb = usage.ru_maxrss;
+  f.output = readFile(process.logPath);
+  return f;
 }
 
 RunResult runVkrt(const std::string& args, const std::string& env) {

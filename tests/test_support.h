@@ -69,6 +69,21 @@ struct RunResult {
 // `env` is prepended to the command line (VAR=value ...).
 RunResult runVkrt(const std::string& args, const std::string& env = "");
 
+// vkrt started in the background (stdout and stderr to `logPath`), for tests that signal it
+// or measure its peak memory.
+struct Spawned {
+  int pid = -1;
+  std::string logPath;
+};
+Spawned spawnVkrt(const std::vector<std::string>& args, const std::string& logPath,
+                  const std::vector<std::string>& env = {});
+struct Finished {
+  int exitCode = -1;         // 128 + signal when killed by one
+  long long peakRssKb = 0;   // the process's maximum resident set size
+  std::string output;
+};
+Finished waitVkrt(const Spawned& process);
+
 }  // namespace vkrt::test
 
 // Gets the shared Vulkan context into `ctx`, or returns from the test (skipped, or failed in CI).

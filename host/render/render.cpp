@@ -2,12 +2,15 @@
 #include "render/render.h"
 
 #include <chrono>
+#include <cstdlib>
+#include <fstream>
 #include <thread>
 
 #include "gpu/vulkan_renderer.h"
 #include "image/png.h"
 #include "interrupt.h"
 #include "scene/flatten.h"
+#include "scene/diagnostic.h"
 #include "scene/parse.h"
 #include "timing.h"
 
@@ -61,6 +64,31 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
   return image;
 }
 
+// The image needs width * height * 3 bytes for as long as the render runs (the renderers and
+// the PNG writer add about a megabyte to that; the Vulkan backend's bands are bounded). Refuse
+// before allocating when the machine does not have that much memory available, naming the
+// `size` line and both numbers, rather than dying half-way.
+void checkImageFitsInMemory(const SceneDesc& scene) {
+  unsigned long long have = 0;
+  if (const char* test = std::getenv("VKRT_TEST_MEMORY_AVAILABLE_MB")) {   // for the tests only
+    have = std::strtoull(test, nullptr, 10) << 20;
+  } else {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key, unit;
+    unsigned long long kb = 0;
+    while (meminfo >> key >> kb >> unit)
+      if (key == "MemAvailable:") break;
+    if (key != "MemAvailable:") return;   // unknown: let the allocation decide
+    have = kb * 1024ULL;
+  }
+  const unsigned long long need = 3ULL * static_cast<unsigned>(scene.width) * static_cast<unsigned>(scene.height);
+  if (need > have)
+    throw SceneError({{scene.sourcePath, scene.sizeLine,
+                       "a " + std::to_string(scene.width) + "x" + std::to_string(scene.height) + " image needs " +
+                           std::to_string(need >> 20) + " MB of memory, and this machine has " +
+                           std::to_string(have >> 20) + " MB available"}});
+}
+
 }  // namespace
 
 std::string resolveOutput(const SceneDesc& scene, const std::optional<std::string>& override) {
@@ -83,6 +111,7 @@ RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress
   SceneDesc scene = parseSceneFile(request.scenePath);
   report.parseSeconds = secondsSince(t0);
   report.outputPath = resolveOutput(scene, request.output);
+  checkImageFitsInMemory(scene);
   report.width = scene.width;
   report.height = scene.height;
   report.maxDepth = scene.maxDepth;

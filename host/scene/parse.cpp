@@ -221,6 +221,7 @@ class Parser {
     }
     sawSize_ = true;
     sizeLine_ = line_;
+    scene_.sizeLine = line_;
     if (!numbers("size", 2, "width height", a)) return;
     const std::string range = "an integer from 1 to " + std::to_string(kMaxImageEdge);
     auto w = integer("size", a[0], 0, range.c_str(), 1, kMaxImageEdge);

@@ -54,6 +54,7 @@ struct Camera {
 struct SceneDesc {
   std::string sourcePath;        // the file as named by the user (for messages)
   int width = 0, height = 0;
+  int sizeLine = 0;              // line of the `size` command
   int maxDepth = 5;              // primary hit plus up to maxDepth mirror reflections
   std::string output = "raytrace.png";
   int outputLine = 0;            // line of the `output` command, 0 when defaulted

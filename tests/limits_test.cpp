@@ -1,0 +1,156 @@
+// Hardening (issue 5): inputs at and past the limits, huge images and their memory, and
+// interruptions that must leave the user's files as they were.
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "image/png.h"
+#include "test_support.h"
+
+using namespace vkrt;
+using namespace vkrt::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Files vkrt left beside its output (temporary PNGs or write probes).
+std::vector<std::string> leftovers(const std::string& dir) {
+  std::vector<std::string> found;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().rfind(".vkrt-", 0) == 0) found.push_back(e.path().string());
+  return found;
+}
+
+const std::string kPrecious = "the user's old image: must survive";
+
+}  // namespace
+
+TEST(Limits, AHundredMegabyteLineIsAnErrorAtItsLine) {
+  std::string dir = freshDir("limits/long-line");
+  {
+    std::ofstream f(dir + "/long.test", std::ios::binary);
+    f << "size 10 10\ncamera 0 0 1 0 0 0 0 1 0 45\nvertex";
+    std::string chunk;
+    for (int i = 0; i < 1024; ++i) chunk += " 1.5";
+    for (int i = 0; i < 100 * 1024 * 1024 / 4096; ++i) f << chunk;
+    f << "\n";
+  }
+  RunResult r = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/long.test");
+  fs::remove(dir + "/long.test");
+  EXPECT_EQ(r.exitCode, 2) << r.output.substr(0, 500);
+  EXPECT_NE(r.output.find("long.test:3: error: 'vertex' expects 3 arguments (x y z), got 26214400"), std::string::npos)
+      << r.output.substr(0, 500);
+  EXPECT_FALSE(fileExists(dir + "/o.png"));
+}
+
+// Ten million vertices (a 200 MB file) parse and render; peak memory stays near what the
+// vertices themselves need (24 bytes each in double precision).
+TEST(Limits, TenMillionVerticesParseAndRender) {
+  std::string dir = freshDir("limits/ten-million");
+  {
+    std::ofstream f(dir + "/many.test", std::ios::binary);
+    f << "size 32 24\ncamera 0 0 3 0 0 0 0 1 0 45\nambient 1 1 1\n";
+    std::string block;
+    for (int i = 0; i < 1000; ++i) block += "vertex " + std::to_string(i % 7 - 3) + ".5 0.25 -1\n";
+    for (int i = 0; i < 10000; ++i) f << block;
+    f << "tri 0 1 3\n";
+  }
+  Finished r = waitVkrt(spawnVkrt({"--backend", "cpu", "-q", "-o", dir + "/o.png", dir + "/many.test"}, dir + "/log"));
+  fs::remove(dir + "/many.test");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(fileExists(dir + "/o.png"));
+  std::printf("[ stats    ] 10M vertices: peak RSS %lld MB\n", r.peakRssKb / 1024);
+  EXPECT_LT(r.peakRssKb / 1024, 1024) << "10M vertices should need well under 1 GB";
+}
+
+TEST(Limits, AnImageLargerThanTheMemoryIsRefusedBeforeAllocating) {
+  std::string dir = freshDir("limits/memory");
+  writeFile(dir + "/big.test", "# a big one\nsize 16384 16384\ncamera 0 0 1 0 0 0 0 1 0 45\n");
+  writeFile(dir + "/o.png", kPrecious);
+  Finished r = waitVkrt(spawnVkrt({"--backend", "cpu", "-o", dir + "/o.png", dir + "/big.test"}, dir + "/log",
+                                  {"VKRT_TEST_MEMORY_AVAILABLE_MB=100"}));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("big.test:2: error: a 16384x16384 image needs 768 MB of memory, and this machine has "
+                          "100 MB available"),
+            std::string::npos)
+      << r.output;
+  EXPECT_LT(r.peakRssKb / 1024, 200) << "refused, but only after allocating the image";
+  EXPECT_EQ(readFile(dir + "/o.png"), kPrecious);
+  EXPECT_TRUE(leftovers(dir).empty());
+}
+
+// The largest size, on both backends: the picture is right (an ambient sphere in the middle,
+// black corners), and the peak memory is within twice the image's own size (805 MB of RGB).
+TEST(LargeImage, Size16384RendersOnBothBackendsWithinTwiceTheImageSize) {
+  std::string dir = freshDir("large-image");
+  writeFile(dir + "/big.test", "size 16384 16384\ncamera 0 0 4 0 0 0 0 1 0 45\nambient 0.3 0.2 0.1\nsphere 0 0 0 1\n");
+  const long long imageMb = 16384LL * 16384 * 3 / (1024 * 1024);
+  std::vector<std::string> backends = {"cpu"};
+  if (gpuContextOrSkip()) backends.push_back("vulkan");
+  for (const std::string& backend : backends) {
+    std::string out = dir + "/" + backend + ".png";
+    Finished r = waitVkrt(spawnVkrt({"--backend", backend, "-q", "-o", out, dir + "/big.test"}, dir + "/log"));
+    ASSERT_EQ(r.exitCode, 0) << backend << ": " << r.output;
+    std::printf("[ stats    ] 16384x16384, %s: peak RSS %lld MB (image %lld MB)\n", backend.c_str(),
+                r.peakRssKb / 1024, imageMb);
+    EXPECT_LE(r.peakRssKb / 1024, 2 * imageMb) << backend;
+    Image img = readImage(out);
+    ASSERT_EQ(img.width, 16384);
+    const std::uint8_t* centre = img.pixel(8192, 8192);
+    EXPECT_EQ(centre[0], 76);   // floor(0.3 * 255)
+    EXPECT_EQ(centre[1], 51);
+    EXPECT_EQ(centre[2], 25);
+    EXPECT_EQ(img.pixel(0, 0)[0], 0);
+    fs::remove(out);
+  }
+}
+
+// A render stopped by SIGTERM or Ctrl-C (SIGINT) exits with 128 + the signal, says so, and
+// leaves the existing output as it was and no temporary file.
+TEST(Interrupt, DuringTheRenderLeavesTheOldImageAndNoTemporaryFile) {
+  std::string dir = freshDir("interrupt/render");
+  std::string scene = "size 3000 3000\ncamera 0 0 4 0 0 0 0 1 0 45\ndiffuse 0.5 0.5 0.5\nsphere 0 0 0 1\n";
+  for (int i = 0; i < 60; ++i) scene += "point " + std::to_string(i % 5) + " 2 3 0.02 0.02 0.02\n";
+  writeFile(dir + "/slow.test", scene);
+  std::vector<std::pair<std::string, int>> runs = {{"cpu", SIGTERM}};
+  if (gpuContextOrSkip()) runs.emplace_back("vulkan", SIGINT);
+  for (auto [backend, sig] : runs) {
+    writeFile(dir + "/o.png", kPrecious);
+    Spawned p = spawnVkrt({"--backend", backend, "-o", dir + "/o.png", dir + "/slow.test"}, dir + "/log");
+    std::this_thread::sleep_for(std::chrono::milliseconds(700));
+    ::kill(p.pid, sig);
+    auto t0 = std::chrono::steady_clock::now();
+    Finished r = waitVkrt(p);
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_EQ(r.exitCode, 128 + sig) << backend << ": " << r.output;
+    EXPECT_NE(r.output.find("interrupted; nothing written"), std::string::npos) << r.output;
+    EXPECT_EQ(readFile(dir + "/o.png"), kPrecious) << backend;
+    EXPECT_TRUE(leftovers(dir).empty()) << backend;
+    std::printf("[ stats    ] %s stopped %.2f s after the signal\n", backend.c_str(), seconds);
+  }
+}
+
+// Interrupted while the PNG is being written (the temporary file exists): the temporary file
+// goes, the old image stays.
+TEST(Interrupt, DuringTheWriteLeavesTheOldImageAndNoTemporaryFile) {
+  std::string dir = freshDir("interrupt/write");
+  writeFile(dir + "/wide.test", "size 16384 8192\ncamera 0 0 4 0 0 0 0 1 0 45\n");   // empty: quick to render
+  writeFile(dir + "/o.png", kPrecious);
+  Spawned p = spawnVkrt({"--backend", "cpu", "-q", "-o", dir + "/o.png", dir + "/wide.test"}, dir + "/log");
+  bool sawTemporary = false;
+  for (int i = 0; i < 60000 && !sawTemporary; ++i) {
+    for (const std::string& f : leftovers(dir))
+      if (f.find(".png.tmp") != std::string::npos) sawTemporary = true;
+    if (!sawTemporary) std::this_thread::sleep_for(std::chrono::microseconds(500));
+  }
+  ASSERT_TRUE(sawTemporary) << "never saw the temporary file";
+  ::kill(p.pid, SIGINT);
+  Finished r = waitVkrt(p);
+  EXPECT_EQ(r.exitCode, 128 + SIGINT) << r.output;
+  EXPECT_EQ(readFile(dir + "/o.png"), kPrecious);
+  EXPECT_TRUE(leftovers(dir).empty());
+}
