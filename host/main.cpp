@@ -99,7 +99,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "vkrt: error: %s\n", e.what());
     return kExitIo;
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "vkrt: error: out of memory\n");
+    std::fprintf(stderr, "vkrt: error: out of memory: %s needs more than the %llu MB this machine has available\n",
+                 options.request.scenePath.c_str(), vkrt::availableMemoryBytes() >> 20);
     return kExitIo;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "vkrt: internal error: %s\n", e.what());

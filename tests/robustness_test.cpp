@@ -53,6 +53,7 @@ struct Variant {
   double offset;
   bool viaFile;
 };
+void PrintTo(const Variant& v, std::ostream* os) { *os << v.name; }
 
 // Issue tolerance: at most 0.1% of pixels off by more than 2/255.
 long long scaleTolerance(const Image& img) { return img.width * img.height / 1000; }
@@ -154,6 +155,7 @@ struct EdgeCase {
   const char* name;
   std::string text;
 };
+void PrintTo(const EdgeCase& c, std::ostream* os) { *os << c.name; }
 
 class ShadingEdgeCase : public ::testing::TestWithParam<EdgeCase> {};
 

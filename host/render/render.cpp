@@ -69,18 +69,8 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
 // before allocating when the machine does not have that much memory available, naming the
 // `size` line and both numbers, rather than dying half-way.
 void checkImageFitsInMemory(const SceneDesc& scene) {
-  unsigned long long have = 0;
-  if (const char* test = std::getenv("VKRT_TEST_MEMORY_AVAILABLE_MB")) {   // for the tests only
-    have = std::strtoull(test, nullptr, 10) << 20;
-  } else {
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key, unit;
-    unsigned long long kb = 0;
-    while (meminfo >> key >> kb >> unit)
-      if (key == "MemAvailable:") break;
-    if (key != "MemAvailable:") return;   // unknown: let the allocation decide
-    have = kb * 1024ULL;
-  }
+  const unsigned long long have = availableMemoryBytes();
+  if (have == 0) return;   // unknown: let the allocation decide
   const unsigned long long need = 3ULL * static_cast<unsigned>(scene.width) * static_cast<unsigned>(scene.height);
   if (need > have)
     throw SceneError({{scene.sourcePath, scene.sizeLine,
@@ -90,6 +80,17 @@ void checkImageFitsInMemory(const SceneDesc& scene) {
 }
 
 }  // namespace
+
+unsigned long long availableMemoryBytes() {
+  if (const char* test = std::getenv("VKRT_TEST_MEMORY_AVAILABLE_MB"))   // for the tests only
+    return std::strtoull(test, nullptr, 10) << 20;
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key, unit;
+  unsigned long long kb = 0;
+  while (meminfo >> key >> kb >> unit)
+    if (key == "MemAvailable:") return kb * 1024ULL;
+  return 0;
+}
 
 std::string resolveOutput(const SceneDesc& scene, const std::optional<std::string>& override) {
   if (override) {

@@ -44,6 +44,9 @@ struct RenderReport {
 // DeviceError (Vulkan).
 RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress);
 
+// The memory the machine has available now (MemAvailable), or 0 when unknown.
+unsigned long long availableMemoryBytes();
+
 // The output path for a parsed scene, checked before rendering. A bad `output` line in the
 // scene is a SceneError at that line; a bad override is an IoError.
 std::string resolveOutput(const SceneDesc& scene, const std::optional<std::string>& override);
