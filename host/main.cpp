@@ -14,7 +14,36 @@
 
 namespace {
 
-constexpr int kExitOk = 0, kExitUsage = 1, kExitScene = 2, kExitDevice = 3, kExitIo = 4;
+constexpr int kExitOk = 0, kExitUsage = 1, kExitScene = 2, kExitDevice = 3, kExitIo = 4, kExitDiffers = 5;
+
+// Compares `actual` with `expected` (diff and --check): the report on stdout (text or JSON),
+// the heatmap if asked for; kExitDiffers when a threshold is exceeded. Throws IoError.
+int reportComparison(const vkrt::Options& o, const vkrt::Image& actual, const vkrt::Image& expected,
+                     const std::string& what) {
+  if (actual.width != expected.width || actual.height != expected.height) {
+    std::string msg = "sizes differ: " + std::to_string(actual.width) + "x" + std::to_string(actual.height) +
+                      " vs " + std::to_string(expected.width) + "x" + std::to_string(expected.height);
+    if (o.json)
+      std::printf("{\"pass\":false,\"failures\":[%s]}\n", vkrt::jsonQuoted(msg).c_str());
+    else
+      std::printf("%s: FAIL: %s\n", what.c_str(), msg.c_str());
+    return kExitDiffers;
+  }
+  vkrt::ImageDiff diff = vkrt::compare(actual, expected);
+  std::vector<std::string> failures = vkrt::failedThresholds(diff, o.thresholds);
+  if (o.heatmapPath) vkrt::writePngAtomic(vkrt::differenceHeatmap(diff, o.heatmapScale), *o.heatmapPath);
+  if (o.json) {
+    std::printf("%s\n", vkrt::diffReportJson(diff, failures).c_str());
+  } else {
+    std::printf("%s\n%s", what.c_str(), vkrt::diffReportText(diff).c_str());
+    if (o.heatmapPath)
+      std::printf("  heatmap     %s (black: equal; blue 1/255 ... red %d/255 or more)\n", o.heatmapPath->c_str(),
+                  o.heatmapScale);
+    for (const std::string& f : failures) std::printf("FAIL: %s\n", f.c_str());
+    if (failures.empty()) std::printf("PASS\n");
+  }
+  return failures.empty() ? kExitOk : kExitDiffers;
+}
 
 void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
   const double ms = 1e3;
@@ -46,6 +75,55 @@ void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
                mrays);
 }
 
+std::string reportJson(const vkrt::RenderReport& r) {
+  char buf[1024];
+  const vkrt::VulkanTimings& v = r.vulkan;
+  std::snprintf(buf, sizeof buf,
+                "{\"backend\":%s,\"seconds\":%.6f,\"parse_s\":%.6f,\"build_s\":%.6f,\"render_s\":%.6f,"
+                "\"instance_s\":%.6f,\"device_s\":%.6f,\"upload_s\":%.6f,\"pipeline_s\":%.6f,"
+                "\"first_dispatch_s\":%.6f,\"dispatch_s\":%.6f,\"readback_s\":%.6f,\"rays\":%llu,"
+                "\"shadow_rays\":%llu,\"reflection_rays\":%llu}",
+                vkrt::jsonQuoted(r.backend).c_str(), r.parseSeconds + r.buildSeconds + r.renderSeconds, r.parseSeconds, r.buildSeconds,
+                r.renderSeconds, r.instanceSeconds, r.deviceSeconds, v.uploadSeconds, v.pipelineSeconds,
+                v.firstDispatchSeconds, v.dispatchSeconds, v.readbackSeconds,
+                static_cast<unsigned long long>(r.rays.total()), static_cast<unsigned long long>(r.rays.shadow),
+                static_cast<unsigned long long>(r.rays.reflection));
+  return buf;
+}
+
+// --compare: both backends in turn, nothing written; the times of each (the --stats
+// breakdown, on stderr) and their difference (stdout). Exit 5 when a threshold is exceeded.
+int compareBackends(const vkrt::Options& o) {
+  vkrt::RenderReport reports[2];
+  vkrt::Image images[2];
+  const vkrt::Backend backends[2] = {vkrt::Backend::Vulkan, vkrt::Backend::Cpu};
+  for (int i = 0; i < 2; ++i) {
+    vkrt::RenderRequest request = o.request;
+    request.backend = backends[i];
+    vkrt::ProgressBar progress(!o.quiet && !o.json);
+    images[i] = vkrt::renderSceneInMemory(request, progress, reports[i], false);
+    if (!o.json && !o.quiet) printStats(request, reports[i]);
+  }
+  vkrt::ImageDiff diff = vkrt::compare(images[0], images[1]);
+  std::vector<std::string> failures = vkrt::failedThresholds(diff, o.thresholds);
+  if (!o.thresholds.any()) failures.clear();   // --compare reports; it gates only when asked to
+  if (o.heatmapPath) vkrt::writePngAtomic(vkrt::differenceHeatmap(diff, o.heatmapScale), *o.heatmapPath);
+  auto total = [](const vkrt::RenderReport& r) { return r.parseSeconds + r.buildSeconds + r.renderSeconds; };
+  if (o.json) {
+    std::printf("{\"scene\":%s,\"vulkan\":%s,\"cpu\":%s,\"difference\":%s}\n",
+                vkrt::jsonQuoted(o.request.scenePath).c_str(),
+                reportJson(reports[0]).c_str(), reportJson(reports[1]).c_str(),
+                vkrt::diffReportJson(diff, failures).c_str());
+  } else {
+    std::printf("%s: vulkan %.3f s, cpu %.3f s (without writing); vulkan vs cpu:\n%s", o.request.scenePath.c_str(),
+                total(reports[0]), total(reports[1]), vkrt::diffReportText(diff).c_str());
+    if (o.heatmapPath) std::printf("  heatmap     %s (black: equal; blue 1/255 ... red %d/255 or more)\n",
+                                   o.heatmapPath->c_str(), o.heatmapScale);
+    for (const std::string& f : failures) std::printf("FAIL: %s\n", f.c_str());
+  }
+  return failures.empty() ? kExitOk : kExitDiffers;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -65,6 +143,9 @@ int main(int argc, char** argv) {
     return kExitOk;
   }
   try {
+    if (options.diffCommand)
+      return reportComparison(options, vkrt::readImage(options.diffA), vkrt::readImage(options.diffB),
+                              options.diffA + " vs " + options.diffB);
     if (options.listDevices) {
       auto devices = vkrt::listDevices();
       for (std::size_t i = 0; i < devices.size(); ++i)
@@ -72,6 +153,7 @@ int main(int argc, char** argv) {
       return kExitOk;
     }
     vkrt::installInterruptHandlers();
+    if (options.compare) return compareBackends(options);
     vkrt::ProgressBar progress(!options.quiet);
     vkrt::RenderReport report = vkrt::renderSceneFile(options.request, progress);
     if (options.stats) printStats(options.request, report);
@@ -85,6 +167,9 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "vkrt: wrote %s (%dx%d) in %.2f s\n", report.outputPath.c_str(), report.width,
                    report.height, total);
     }
+    if (options.checkAgainst)
+      return reportComparison(options, vkrt::readImage(report.outputPath), vkrt::readImage(*options.checkAgainst),
+                              report.outputPath + " vs " + *options.checkAgainst);
     return kExitOk;
   } catch (const vkrt::Interrupted& e) {
     std::fprintf(stderr, "\nvkrt: interrupted; nothing written\n");

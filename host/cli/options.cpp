@@ -8,8 +8,9 @@ namespace vkrt {
 
 const char* usageText() {
   return "usage: vkrt [options] SCENE.test\n"
+         "       vkrt diff [comparison options] A.png B.png\n"
          "\n"
-         "Renders a CSE167 scene file to a PNG image.\n"
+         "Renders a CSE167 scene file to a PNG image, or compares two images.\n"
          "\n"
          "options:\n"
          "  -o, --output FILE      write the image to FILE (overrides the scene's 'output')\n"
@@ -25,11 +26,25 @@ const char* usageText() {
          "                         cannot change the 8-bit result (same image, slower)\n"
          "  --threads N            worker threads for the CPU backend (default: all cores)\n"
          "  --stats                print a timing breakdown and ray counts on stderr\n"
+         "  --check REF.png        compare the rendered image with REF.png (exit 5 when it fails)\n"
+         "  --compare              render with both backends (nothing written) and print each\n"
+         "                         one's times and the difference between their images\n"
+         "\n"
+         "comparison options (diff and --check):\n"
+         "  --max-pixels-over S:L  fail when more than L pixels (a count, or a share with %,\n"
+         "                         e.g. 2:0.1%) differ by more than S/255; may be repeated\n"
+         "  --max-diff N           fail when any channel differs by more than N/255\n"
+         "                         (with neither, any difference fails)\n"
+         "  --json                 print the metrics as one JSON object on stdout\n"
+         "  --diff FILE.png        write a heatmap of the differences, with its legend\n"
+         "  --diff-scale N         differences of N/255 or more are red in the heatmap (default 16)\n"
+         "\n"
          "  -q, --quiet            print nothing but errors\n"
          "  -h, --help             show this help\n"
          "  --version              show the version\n"
          "\n"
-         "exit status: 0 ok, 1 usage error, 2 scene error, 3 device error, 4 I/O error\n";
+         "exit status: 0 ok, 1 usage error, 2 scene error, 3 device error, 4 I/O error,\n"
+         "5 images differ beyond the thresholds, 128+N stopped by signal N\n";
 }
 
 namespace {
@@ -49,8 +64,14 @@ int integerValue(const std::string& option, const std::string& v, int lo, int hi
 Options parseOptions(const std::vector<std::string>& args) {
   Options o;
   std::optional<std::string> scene;
+  std::vector<std::string> images;   // diff's operands
   bool endOfOptions = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
+  std::size_t first = 0;
+  if (!args.empty() && args[0] == "diff") {
+    o.diffCommand = true;
+    first = 1;
+  }
+  for (std::size_t i = first; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const std::string& name) -> const std::string& {
       if (i + 1 >= args.size()) throw UsageError("option " + name + " needs a value");
@@ -68,7 +89,9 @@ Options parseOptions(const std::vector<std::string>& args) {
       }
     }
     auto take = [&](const std::string& n) -> std::string { return hasInline ? inlineValue : value(n); };
-    if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
+    if ((endOfOptions || a.empty() || a[0] != '-' || a == "-") && o.diffCommand) {
+      images.push_back(a);
+    } else if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
       if (scene) throw UsageError("more than one scene file given ('" + *scene + "' and '" + a + "')");
       scene = a;
     } else if (a == "--") {
@@ -109,6 +132,20 @@ Options parseOptions(const std::vector<std::string>& args) {
       o.request.stepBudget = static_cast<std::uint32_t>(integerValue(name, take(name), 1, 8192));
     } else if (name == "--threads") {
       o.request.threads = integerValue(name, take(name), 1, 1024);
+    } else if (a == "--compare") {
+      o.compare = true;
+    } else if (name == "--check") {
+      o.checkAgainst = take(name);
+    } else if (name == "--max-pixels-over") {
+      o.thresholds.pixelsOver.push_back(parsePixelThreshold(take(name)));
+    } else if (name == "--max-diff") {
+      o.thresholds.maxDiff = integerValue(name, take(name), 0, 255);
+    } else if (a == "--json") {
+      o.json = true;
+    } else if (name == "--diff") {
+      o.heatmapPath = take(name);
+    } else if (name == "--diff-scale") {
+      o.heatmapScale = integerValue(name, take(name), 1, 255);
     } else if (a == "--stats") {
       o.stats = true;
     } else if (a == "-q" || a == "--quiet") {
@@ -122,6 +159,16 @@ Options parseOptions(const std::vector<std::string>& args) {
     }
   }
   if (const char* v = std::getenv("VKRT_VALIDATION"); v && std::string(v) == "1") o.request.validation = true;
+  if (o.diffCommand) {
+    if (images.size() != 2) throw UsageError("diff needs two images: vkrt diff A.png B.png");
+    o.diffA = images[0];
+    o.diffB = images[1];
+    return o;
+  }
+  bool comparing = o.thresholds.any() || o.json || o.heatmapPath;
+  if (comparing && !o.checkAgainst && !o.compare)
+    throw UsageError("--max-pixels-over, --max-diff, --json and --diff need --check REF.png or --compare (or vkrt diff)");
+  if (o.compare && o.checkAgainst) throw UsageError("--compare and --check do not go together");
   if (!o.help && !o.version && !o.listDevices) {
     if (!scene) throw UsageError("no scene file given");
     o.request.scenePath = *scene;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/image_check.h"
 #include "render/render.h"
 
 namespace vkrt {
@@ -23,6 +24,17 @@ struct Options {
   bool help = false;
   bool version = false;
   bool listDevices = false;
+  // `vkrt diff A.png B.png`: compare two images instead of rendering.
+  bool diffCommand = false;
+  std::string diffA, diffB;
+  // `vkrt --compare SCENE`: render with both backends, report both and their difference.
+  bool compare = false;
+  // `vkrt SCENE --check REF.png`: compare the render with REF.
+  std::optional<std::string> checkAgainst;
+  CheckThresholds thresholds;   // for diff and --check
+  bool json = false;            // the comparison as one JSON object on stdout
+  std::optional<std::string> heatmapPath;   // --diff FILE.png
+  int heatmapScale = 16;        // --diff-scale N: steps at which the heatmap turns red
 };
 
 // Throws UsageError.

@@ -106,12 +106,12 @@ std::string resolveOutput(const SceneDesc& scene, const std::optional<std::strin
   return scene.output;
 }
 
-RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress) {
-  RenderReport report;
+Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
+                          bool checkOutput) {
   auto t0 = std::chrono::steady_clock::now();
   SceneDesc scene = parseSceneFile(request.scenePath);
   report.parseSeconds = secondsSince(t0);
-  report.outputPath = resolveOutput(scene, request.output);
+  if (checkOutput) report.outputPath = resolveOutput(scene, request.output);
   checkImageFitsInMemory(scene);
   report.width = scene.width;
   report.height = scene.height;
@@ -124,8 +124,13 @@ RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress
                                                 : renderWithVulkan(request, scene, progress, report);
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
+  return image;
+}
 
-  t0 = std::chrono::steady_clock::now();
+RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress) {
+  RenderReport report;
+  Image image = renderSceneInMemory(request, progress, report, true);
+  auto t0 = std::chrono::steady_clock::now();
   writePngAtomic(image, report.outputPath);
   report.writeSeconds = secondsSince(t0);
   return report;

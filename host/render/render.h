@@ -41,8 +41,13 @@ struct RenderReport {
 };
 
 // Throws SceneError (bad scene, including an unwritable `output`), IoError (files),
-// DeviceError (Vulkan).
+// DeviceError (Vulkan), Interrupted.
 RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress);
+
+// The same without writing the image (--compare); `checkOutput` also resolves and checks the
+// output path first, as renderSceneFile does.
+Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
+                          bool checkOutput);
 
 // The memory the machine has available now (MemAvailable), or 0 when unknown.
 unsigned long long availableMemoryBytes();
