@@ -302,19 +302,17 @@ uint toByte(float c) { return c > 0.0 ? uint(floor(min(c, 1.0) * 255.0)) : 0u; }
 bool restCannotChangePixel(vec3 weight, uint nextDepth) {
   bool nonNegative = pc.cutoffBound.w != 0.0;
   if (nonNegative && all(greaterThanEqual(radiance, vec3(1.0)))) return true;   // saturated
-  // 1 + s + ... + s^(n-1) for the n segments left, bounded by n when s >= 1.
+  // 1 + s + ... + s^(n-1) for the n segments left: at most n, and at most 1 / (1 - s) when
+  // s < 1 (cheaper than the exact sum, and still an upper bound).
   float n = float(kMaxDepth - nextDepth + 1u);
   vec3 s = pc.cutoffSpecular.rgb;
-  vec3 series = vec3(n);
-  for (int c = 0; c < 3; ++c)
-    if (s[c] < 1.0) series[c] = min(n, (1.0 - pow(s[c], n)) / (1.0 - s[c]));
+  vec3 series = mix(vec3(n), min(vec3(n), 1.0 / max(1.0 - s, vec3(1e-30))), lessThan(s, vec3(1.0)));
   // A margin for float rounding in the sums the bound stands for.
   vec3 reach = abs(weight) * pc.cutoffBound.rgb * series * 1.001 + 1e-6;
   if (!all(lessThan(reach, vec3(kInfinity)))) return false;
   vec3 low = nonNegative ? radiance : radiance - reach, high = radiance + reach;
-  for (int c = 0; c < 3; ++c)
-    if (toByte(low[c]) != toByte(high[c])) return false;
-  return true;
+  vec3 lowBytes = floor(clamp(low, 0.0, 1.0) * 255.0), highBytes = floor(clamp(high, 0.0, 1.0) * 255.0);
+  return all(equal(lowBytes, highBytes));
 }
 
 // After the last light: the mirror ray, or the end of the path.

@@ -29,10 +29,12 @@ class GpuCourseScene : public ::testing::TestWithParam<const char*> {};
 std::pair<std::uint64_t, std::uint64_t> expectCutoffChangesNoPixel(const std::string& name, const SceneDesc& scene) {
   Context* context = gpuContextOrSkip();
   VulkanOptions exact;
-  exact.cutoff = false;
+  exact.cutoff = Cutoff::Off;
+  VulkanOptions forced;
+  forced.cutoff = Cutoff::On;   // also where Auto would leave it out
   RayCounts cutRays, exactRays;   // (nonFinite checked by the renderGpu tests of the same scenes)
   GpuScene flat = flatten(scene);
-  Image cut = renderVulkan(*context, flat, VulkanOptions{}, &cutRays, nullptr);
+  Image cut = renderVulkan(*context, flat, forced, &cutRays, nullptr);
   Image all = renderVulkan(*context, flat, exact, &exactRays, nullptr);
   EXPECT_TRUE(imagesClose("gpu-cutoff/" + name, cut, all, 0, 0));
   EXPECT_LE(cutRays.reflection, exactRays.reflection);
@@ -226,7 +228,12 @@ TEST(GpuCutoff, StopsPathsThatCannotChangeAByte) {
            "tri 0 1 2\ntri 0 2 3\npushTransform\ntranslate 0 0 2\ntri 0 2 1\ntri 0 3 2\npopTransform\n"
            "sphere 0 4 0 0.5\n";
   };
-  auto [cut, all] = expectCutoffChangesNoPixel("dim-mirrors", parseScene(scene("0.4 0.5 0.6"), "dim.test"));
+  SceneDesc dim = parseScene(scene("0.4 0.5 0.6"), "dim.test");
+  VulkanTimings automatic;
+  renderVulkan(*context, flatten(dim), VulkanOptions{}, nullptr, &automatic);
+  EXPECT_EQ(automatic.leftOut.find("exactness cut-off"), std::string::npos)
+      << "--cutoff auto should use the cut-off here: " << automatic.leftOut;
+  auto [cut, all] = expectCutoffChangesNoPixel("dim-mirrors", dim);
   EXPECT_LT(cut * 4, all) << "the cut-off no longer stops hopeless paths";
   std::printf("[ stats    ] dim mirrors: %llu of %llu mirror rays traced with the cut-off\n",
               static_cast<unsigned long long>(cut), static_cast<unsigned long long>(all));

@@ -22,8 +22,10 @@ const char* usageText() {
          "  --validation           enable the Vulkan validation layer (also VKRT_VALIDATION=1)\n"
          "  --reads auto|texel|storage  how the shader reads the scene (default auto: texel\n"
          "                         buffers, faster on lavapipe, where the device's limits allow)\n"
-         "  --no-cutoff            trace every mirror bounce up to maxdepth, even those that\n"
-         "                         cannot change the 8-bit result (same image, slower)\n"
+         "  --maxdepth N           override the scene's maxdepth (fewer reflections: faster, less exact)\n"
+         "  --cutoff auto|on|off   Vulkan: stop mirror paths that can no longer change the 8-bit\n"
+         "                         result (same image); auto: where it can stop paths early\n"
+         "  --no-cutoff            the same as --cutoff off\n"
          "  --threads N            worker threads for the CPU backend (default: all cores)\n"
          "  --stats                print a timing breakdown and ray counts on stderr\n"
          "  --check REF.png        compare the rendered image with REF.png (exit 5 when it fails)\n"
@@ -124,8 +126,16 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw UsageError("unknown --reads '" + r + "' (expected: auto, texel or storage)");
     } else if (a == "--no-specialize") {   // for the benchmark and tests; not in --help
       o.request.specialize = false;
+    } else if (name == "--maxdepth") {
+      o.request.maxDepth = integerValue(name, take(name), 0, 1000000);
     } else if (a == "--no-cutoff") {
-      o.request.cutoff = false;
+      o.request.cutoff = Cutoff::Off;
+    } else if (name == "--cutoff") {
+      std::string c = take(name);
+      if (c == "auto") o.request.cutoff = Cutoff::Auto;
+      else if (c == "on") o.request.cutoff = Cutoff::On;
+      else if (c == "off") o.request.cutoff = Cutoff::Off;
+      else throw UsageError("unknown --cutoff '" + c + "' (expected: auto, on or off)");
     } else if (a == "--validation") {
       o.request.validation = true;
     } else if (name == "--step-budget") {   // for tests of the loop budget; not in --help

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <numeric>
 
 #include "gpu/compute_pipeline.h"
@@ -58,6 +59,24 @@ Features sceneFeatures(const GpuScene& scene, bool specialize) {
   note(f.attenuation, "attenuation");
   note(f.specular, "specular (maxdepth 0)");
   return f;
+}
+
+// Whether the exactness cut-off can stop some path at least two bounces early: the first
+// depth d at which a path of the largest weight (s^d) cannot change a byte any more, from the
+// same bounds the shader uses, is below maxdepth - 1.
+bool cutoffPays(const gpu::GpuPushConstants& p, std::uint32_t maxDepth) {
+  if (maxDepth < 2) return false;
+  const float bound[3] = {p.cutoffBound.x, p.cutoffBound.y, p.cutoffBound.z};
+  const float spec[3] = {p.cutoffSpecular.x, p.cutoffSpecular.y, p.cutoffSpecular.z};
+  for (std::uint32_t d = 1; d + 1 < maxDepth; ++d) {
+    bool all = true;
+    for (int c = 0; c < 3; ++c) {
+      double s = spec[c], series = s < 1.0 ? 1.0 / (1.0 - s) : maxDepth;
+      if (bound[c] >= 3.0e38f || std::pow(s, d) * bound[c] * series >= 1.0 / 255.0) all = false;
+    }
+    if (all) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -116,7 +135,12 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   spec[gpu::kSpecHasDirectionalLights] = features.directionalLights;
   spec[gpu::kSpecHasAttenuation] = features.attenuation;
   spec[gpu::kSpecHasSpecular] = features.specular;
-  spec[gpu::kSpecCutoff] = options.cutoff;
+  // Unspecialized (everything compiled in), Auto means on.
+  const bool cutoff = options.cutoff == Cutoff::On ||
+                      (options.cutoff == Cutoff::Auto &&
+                       (!options.specialize || (features.specular && cutoffPays(scene.push, scene.maxDepth))));
+  spec[gpu::kSpecCutoff] = cutoff;
+  if (!cutoff) t.leftOut += std::string(t.leftOut.empty() ? "" : ", ") + "exactness cut-off";
   const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
   spec[gpu::kSpecRootEntry] = root.primCount > 0 ? gpu::kStackLeafBit | root.primCount << gpu::kStackCountShift |
                                                        root.leftOrFirst

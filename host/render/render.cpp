@@ -111,6 +111,7 @@ Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, R
   auto t0 = std::chrono::steady_clock::now();
   SceneDesc scene = parseSceneFile(request.scenePath);
   report.parseSeconds = secondsSince(t0);
+  if (request.maxDepth >= 0) scene.maxDepth = request.maxDepth;
   if (checkOutput) report.outputPath = resolveOutput(scene, request.output);
   checkImageFitsInMemory(scene);
   report.width = scene.width;

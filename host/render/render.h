@@ -25,7 +25,8 @@ struct RenderRequest {
   std::uint32_t stepBudget = 0;        // Vulkan: steps per pixel per dispatch (0: default)
   SceneReads reads = SceneReads::Auto; // Vulkan: how the shader reads the scene
   bool specialize = true;              // Vulkan: compile out what the scene does not use
-  bool cutoff = true;                  // Vulkan: the exactness cut-off of the mirror loop
+  Cutoff cutoff = Cutoff::Auto;        // Vulkan: the exactness cut-off of the mirror loop
+  int maxDepth = -1;                   // overrides the scene's `maxdepth` when >= 0
 };
 
 struct RenderReport {
