@@ -265,7 +265,7 @@ void pushChildren(uint left, vec3 origin, vec3 invDir, float tMin, float tMax) {
 
 // The secondary-ray offset at p (the policy: gpu_types.h, "Secondary rays").
 float secondaryTMin(vec3 p) {
-  vec3 a = abs(p);
+  vec3 a = abs(p - pc.cameraOrigin.xyz);
   return max(pc.sceneEpsilon, kOffsetPerMagnitude * max(max(a.x, a.y), a.z));
 }
 

@@ -1,6 +1,8 @@
 // SceneDesc -> GpuScene. The only place where double-precision scene data becomes float32, and
-// where the world is moved so that the camera sits at the origin (in double, before rounding):
-// float32 then sees the same small numbers wherever the scene is placed.
+// where the world is moved so that the centre of the scene's geometry sits at the origin (in
+// double, before rounding): float32 then sees the same small numbers wherever the scene is
+// placed, and the geometry keeps the most precision (centring on the camera instead cost
+// scene7 7 more pixels off the course's reference).
 #include "scene/flatten.h"
 
 #include <cmath>
@@ -18,7 +20,7 @@ gpu::vec4 f4(const dvec3& v, float w = 0.0f) {
 }
 
 // The camera basis in double, then float: a per-pixel step right and up, and the back vector.
-gpu::GpuPushConstants cameraConstants(const SceneDesc& scene) {
+gpu::GpuPushConstants cameraConstants(const SceneDesc& scene, const dvec3& origin) {
   const Camera& c = scene.camera;
   dvec3 w = glm::normalize(c.from - c.at);
   dvec3 u = glm::normalize(glm::cross(c.up, w));
@@ -26,7 +28,7 @@ gpu::GpuPushConstants cameraConstants(const SceneDesc& scene) {
   double tanY = std::tan(glm::radians(c.fovyDegrees) / 2.0);
   double tanX = tanY * scene.width / scene.height;
   gpu::GpuPushConstants p{};
-  p.cameraOrigin = f4(dvec3(0.0));   // camera-centred coordinates
+  p.cameraOrigin = f4(c.from - origin);
   p.cameraRight = f4(u * (tanX / (scene.width / 2.0)));
   p.cameraUp = f4(v * (tanY / (scene.height / 2.0)));
   p.cameraBack = f4(w);
@@ -70,10 +72,12 @@ GpuScene flatten(const SceneDesc& scene) {
   g.width = static_cast<std::uint32_t>(scene.width);
   g.height = static_cast<std::uint32_t>(scene.height);
   g.maxDepth = static_cast<std::uint32_t>(scene.maxDepth);
-  g.push = cameraConstants(scene);
+  // The frame's origin: the centre of the geometry's box (the camera without geometry).
+  dvec3 lo, hi;
+  const dvec3 origin = sceneBounds(scene, lo, hi) ? 0.5 * (lo + hi) : scene.camera.from;
+  g.push = cameraConstants(scene, origin);
   cutoffConstants(scene, g.push);
   g.push.sceneEpsilon = static_cast<float>(secondaryRayEpsilon(scene));
-  const dvec3 origin = scene.camera.from;
   const dmat4 fromOrigin = glm::translate(dmat4(1.0), origin);
   g.triangles.reserve(scene.triangles.size());
   for (const Triangle& t : scene.triangles) {
@@ -92,7 +96,7 @@ GpuScene flatten(const SceneDesc& scene) {
   g.spheres.reserve(scene.spheres.size());
   for (const Sphere& s : scene.spheres) {
     gpu::GpuSphere gs{};
-    // From camera-centred coordinates to coordinates centred on the sphere, in double: a
+    // From the scene-centred frame to coordinates centred on the sphere, in double: a
     // sphere far from the world's origin keeps float32's precision.
     gs.objectFromWorld = gpu::mat4(glm::translate(dmat4(1.0), -s.center) * s.objectFromWorld * fromOrigin);
     gs.centerRadius = f4(dvec3(0.0), static_cast<float>(s.radius));

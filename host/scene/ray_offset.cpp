@@ -10,7 +10,7 @@
 
 namespace vkrt {
 
-double sceneSize(const SceneDesc& scene) {
+bool sceneBounds(const SceneDesc& scene, dvec3& boxLo, dvec3& boxHi) {
   dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const Triangle& t : scene.triangles)
     for (const dvec3& p : t.p) {
@@ -23,8 +23,15 @@ double sceneSize(const SceneDesc& scene) {
     lo = glm::min(lo, slo);
     hi = glm::max(hi, shi);
   }
-  if (!(lo.x <= hi.x)) return 0.0;
-  return glm::length(hi - lo);
+  if (!(lo.x <= hi.x)) return false;
+  boxLo = lo;
+  boxHi = hi;
+  return true;
+}
+
+double sceneSize(const SceneDesc& scene) {
+  dvec3 lo, hi;
+  return sceneBounds(scene, lo, hi) ? glm::length(hi - lo) : 0.0;
 }
 
 double secondaryRayEpsilon(const SceneDesc& scene) {

@@ -6,8 +6,10 @@
 
 namespace vkrt {
 
-// The scene's own length scale: the diagonal of the box around its triangles and spheres
-// (0 without geometry).
+// The box around the scene's triangles and spheres; false (and nothing set) without geometry.
+bool sceneBounds(const SceneDesc& scene, dvec3& lo, dvec3& hi);
+
+// The scene's own length scale: the diagonal of that box (0 without geometry).
 double sceneSize(const SceneDesc& scene);
 
 // sceneEpsilon: 1e-3 for a scene of the course's size, scaled by whole decades with the

@@ -21,10 +21,11 @@ using uint = std::uint32_t;
 #endif
 
 // ---- Secondary rays: the offset policy (the one place that states it) --------------------------
-// The shader works in camera-centred coordinates (flatten() subtracts the camera position in
-// double precision), so a scene far from the origin gives float32 the same small numbers.
+// The shader works in coordinates centred on the scene's geometry (flatten() subtracts the
+// centre of its box in double precision), so a scene far from the origin gives float32 the
+// same small numbers.
 // A secondary ray (shadow or mirror) starts at the hit point p and ignores hits with
-//     t <= max(sceneEpsilon, kOffsetPerMagnitude * max(|p.x|, |p.y|, |p.z|))
+//     t <= max(sceneEpsilon, kOffsetPerMagnitude * max(|d.x|, |d.y|, |d.z|)),  d = p - camera
 // along its unit direction, where
 //  - sceneEpsilon = kSecondaryRayTMin * 10^k (secondaryRayEpsilon, host/scene/ray_offset.cpp):
 //    the course's 1e-3 (SPEC section 7) for a scene whose size S (the diagonal of the box
@@ -33,9 +34,10 @@ using uint = std::uint32_t;
 //    negative for small scenes. So the offset follows the scene under scaling: exactly, for
 //    a scale by 10^k of a scene with S in [2.5, 25] (down) or [6, 60] (up); otherwise
 //    within a factor of 10 of exactly;
-//  - the second term, 32 float32 ulps of the hit point's magnitude, keeps a ray off its own
-//    surface when the surface is far from the camera relative to its size (float32 rounding
-//    of p grows with |p|). For the course's scenes it is below 1e-3 (|p| < 260).
+//  - the second term, 32 float32 ulps of the hit point's distance from the camera, keeps a
+//    ray off its own surface when the surface is far from the camera relative to its size
+//    (float32 rounding of p grows with that distance). For the course's scenes it is below
+//    1e-3 (distances < 260).
 // The primary (camera) ray takes every hit with t > 0.
 GPU_CONST float kSecondaryRayTMin = 1e-3f;
 GPU_CONST float kCourseSceneSizeLow = 2.5f;
