@@ -51,7 +51,13 @@ TEST(Flatten, CarriesValuesIntoGpuLayouts) {
   EXPECT_EQ(g.triangles[1].normalsIndex, 0u);
   ASSERT_EQ(g.triangleNormals.size(), 1u);
   EXPECT_EQ(g.triangleNormals[0].n2.z, 1.0f);
-  EXPECT_EQ(g.triangles[0].p1.x, 1.0f);
+  // Float32 coordinates are relative to the centre of the geometry's box, which the sphere
+  // (radius 2 at x = 1) sets: (1, 0, 0).
+  EXPECT_EQ(g.origin, dvec3(1.0, 0.0, 0.0));
+  EXPECT_EQ(g.triangles[0].p1.x, 0.0f);
+  EXPECT_EQ(g.triangles[0].p2.y, 1.0f);
+  EXPECT_EQ(g.push.cameraOrigin.z, 5.0f);
+  EXPECT_EQ(g.push.cameraOrigin.x, -1.0f);
   ASSERT_EQ(g.lights.size(), 2u);
   EXPECT_EQ(g.lights[0].positionOrDirection.w, gpu::kPointLight);
   EXPECT_EQ(g.lights[0].attenuation.z, 3.0f);
@@ -59,7 +65,7 @@ TEST(Flatten, CarriesValuesIntoGpuLayouts) {
   EXPECT_EQ(g.lights[1].positionOrDirection.z, 1.0f);   // normalised
   ASSERT_EQ(g.spheres.size(), 1u);
   EXPECT_EQ(g.spheres[0].centerRadius.w, 2.0f);
-  EXPECT_EQ(g.spheres[0].objectFromWorld[3].x, -1.0f);   // inverse of translate 1 0 0
+  EXPECT_EQ(g.spheres[0].objectFromWorld[3].x, 0.0f);   // inverse of translate 1 0 0, from the frame at x = 1
   const gpu::GpuMaterial& m = g.materials[g.triangles[0].materialIndex];
   EXPECT_EQ(m.diffuse.y, 0.25f);
   EXPECT_EQ(m.specular.w, 12.0f);

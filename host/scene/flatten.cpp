@@ -75,6 +75,7 @@ GpuScene flatten(const SceneDesc& scene) {
   // The frame's origin: the centre of the geometry's box (the camera without geometry).
   dvec3 lo, hi;
   const dvec3 origin = sceneBounds(scene, lo, hi) ? 0.5 * (lo + hi) : scene.camera.from;
+  g.origin = origin;
   g.push = cameraConstants(scene, origin);
   cutoffConstants(scene, g.push);
   g.push.sceneEpsilon = static_cast<float>(secondaryRayEpsilon(scene));
