@@ -16,6 +16,21 @@ namespace {
 
 constexpr int kExitOk = 0, kExitUsage = 1, kExitScene = 2, kExitDevice = 3, kExitIo = 4, kExitDiffers = 5;
 
+// The heatmap of --diff, when asked for.
+void writeHeatmap(const vkrt::Options& o, const vkrt::ImageDiff& diff) {
+  if (o.heatmapPath) vkrt::writePngAtomic(vkrt::differenceHeatmap(diff, o.heatmapScale), *o.heatmapPath);
+}
+
+// The metrics, the heatmap (written, and named with its scale) and the failures, as text.
+void printComparisonText(const vkrt::Options& o, const vkrt::ImageDiff& diff, const std::vector<std::string>& failures) {
+  writeHeatmap(o, diff);
+  std::printf("%s", vkrt::diffReportText(diff).c_str());
+  if (o.heatmapPath)
+    std::printf("  heatmap     %s (black: equal; blue 1/255 ... red %d/255 or more)\n", o.heatmapPath->c_str(),
+                o.heatmapScale);
+  for (const std::string& f : failures) std::printf("FAIL: %s\n", f.c_str());
+}
+
 // Compares `actual` with `expected` (diff and --check): the report on stdout (text or JSON),
 // the heatmap if asked for; kExitDiffers when a threshold is exceeded. Throws IoError.
 int reportComparison(const vkrt::Options& o, const vkrt::Image& actual, const vkrt::Image& expected,
@@ -31,15 +46,12 @@ int reportComparison(const vkrt::Options& o, const vkrt::Image& actual, const vk
   }
   vkrt::ImageDiff diff = vkrt::compare(actual, expected);
   std::vector<std::string> failures = vkrt::failedThresholds(diff, o.thresholds);
-  if (o.heatmapPath) vkrt::writePngAtomic(vkrt::differenceHeatmap(diff, o.heatmapScale), *o.heatmapPath);
   if (o.json) {
+    writeHeatmap(o, diff);
     std::printf("%s\n", vkrt::diffReportJson(diff, failures).c_str());
   } else {
-    std::printf("%s\n%s", what.c_str(), vkrt::diffReportText(diff).c_str());
-    if (o.heatmapPath)
-      std::printf("  heatmap     %s (black: equal; blue 1/255 ... red %d/255 or more)\n", o.heatmapPath->c_str(),
-                  o.heatmapScale);
-    for (const std::string& f : failures) std::printf("FAIL: %s\n", f.c_str());
+    std::printf("%s\n", what.c_str());
+    printComparisonText(o, diff, failures);
     if (failures.empty()) std::printf("PASS\n");
   }
   return failures.empty() ? kExitOk : kExitDiffers;
@@ -107,19 +119,17 @@ int compareBackends(const vkrt::Options& o) {
   vkrt::ImageDiff diff = vkrt::compare(images[0], images[1]);
   std::vector<std::string> failures = vkrt::failedThresholds(diff, o.thresholds);
   if (!o.thresholds.any()) failures.clear();   // --compare reports; it gates only when asked to
-  if (o.heatmapPath) vkrt::writePngAtomic(vkrt::differenceHeatmap(diff, o.heatmapScale), *o.heatmapPath);
   auto total = [](const vkrt::RenderReport& r) { return r.parseSeconds + r.buildSeconds + r.renderSeconds; };
   if (o.json) {
+    writeHeatmap(o, diff);
     std::printf("{\"scene\":%s,\"vulkan\":%s,\"cpu\":%s,\"difference\":%s}\n",
                 vkrt::jsonQuoted(o.request.scenePath).c_str(),
                 reportJson(reports[0]).c_str(), reportJson(reports[1]).c_str(),
                 vkrt::diffReportJson(diff, failures).c_str());
   } else {
-    std::printf("%s: vulkan %.3f s, cpu %.3f s (without writing); vulkan vs cpu:\n%s", o.request.scenePath.c_str(),
-                total(reports[0]), total(reports[1]), vkrt::diffReportText(diff).c_str());
-    if (o.heatmapPath) std::printf("  heatmap     %s (black: equal; blue 1/255 ... red %d/255 or more)\n",
-                                   o.heatmapPath->c_str(), o.heatmapScale);
-    for (const std::string& f : failures) std::printf("FAIL: %s\n", f.c_str());
+    std::printf("%s: vulkan %.3f s, cpu %.3f s (without writing); vulkan vs cpu:\n", o.request.scenePath.c_str(),
+                total(reports[0]), total(reports[1]));
+    printComparisonText(o, diff, failures);
   }
   return failures.empty() ? kExitOk : kExitDiffers;
 }
@@ -155,7 +165,9 @@ int main(int argc, char** argv) {
     vkrt::installInterruptHandlers();
     if (options.compare) return compareBackends(options);
     vkrt::ProgressBar progress(!options.quiet);
-    vkrt::RenderReport report = vkrt::renderSceneFile(options.request, progress);
+    vkrt::Image image;
+    vkrt::RenderReport report =
+        vkrt::renderSceneFile(options.request, progress, options.checkAgainst ? &image : nullptr);
     if (options.stats) printStats(options.request, report);
     if (report.rays.nonFinite > 0)
       std::fprintf(stderr,
@@ -168,7 +180,7 @@ int main(int argc, char** argv) {
                    report.height, total);
     }
     if (options.checkAgainst)
-      return reportComparison(options, vkrt::readImage(report.outputPath), vkrt::readImage(*options.checkAgainst),
+      return reportComparison(options, image, vkrt::readImage(*options.checkAgainst),
                               report.outputPath + " vs " + *options.checkAgainst);
     return kExitOk;
   } catch (const vkrt::Interrupted& e) {

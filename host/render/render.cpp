@@ -128,12 +128,13 @@ Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, R
   return image;
 }
 
-RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress) {
+RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image) {
   RenderReport report;
-  Image image = renderSceneInMemory(request, progress, report, true);
+  Image rendered = renderSceneInMemory(request, progress, report, true);
   auto t0 = std::chrono::steady_clock::now();
-  writePngAtomic(image, report.outputPath);
+  writePngAtomic(rendered, report.outputPath);
   report.writeSeconds = secondsSince(t0);
+  if (image) *image = std::move(rendered);
   return report;
 }
 

@@ -43,7 +43,8 @@ struct RenderReport {
 
 // Throws SceneError (bad scene, including an unwritable `output`), IoError (files),
 // DeviceError (Vulkan), Interrupted.
-RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress);
+// `image`, when given, receives the rendered image (for --check).
+RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image = nullptr);
 
 // The same without writing the image (--compare); `checkOutput` also resolves and checks the
 // output path first, as renderSceneFile does.
