@@ -68,6 +68,8 @@ bool cutoffPays(const gpu::GpuPushConstants& p, std::uint32_t maxDepth) {
   if (maxDepth < 2) return false;
   const float bound[3] = {p.cutoffBound.x, p.cutoffBound.y, p.cutoffBound.z};
   const float spec[3] = {p.cutoffSpecular.x, p.cutoffSpecular.y, p.cutoffSpecular.z};
+  for (int c = 0; c < 3; ++c)   // a weight that never shrinks never gets cut (and maxdepth may be 10^6)
+    if (spec[c] >= 1.0f && bound[c] > 0.0f) return false;
   for (std::uint32_t d = 1; d + 1 < maxDepth; ++d) {
     bool all = true;
     for (int c = 0; c < 3; ++c) {
