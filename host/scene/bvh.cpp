@@ -42,7 +42,26 @@ struct Box {
 struct BuildPrim {
   Box box;
   std::uint32_t ref;
-  vec3 centroid() const { return 0.5f * (box.lo + box.hi); }
+  // Halves first: lo + hi overflows to infinity when both are near the largest float.
+  vec3 centroid() const { return 0.5f * box.lo + 0.5f * box.hi; }
+};
+
+// Maps centroids to bins along one axis. Works on halves so that no difference overflows
+// (centroids may span the whole float range), and clamps in float before converting, so a
+// NaN or infinite position (a coordinate beyond float) lands in a bin instead of being an
+// undefined conversion. Binning and partitioning share it, so each primitive goes to the
+// side that its bin was counted on.
+struct Binner {
+  float halfLo, scale;
+  Binner(float lo, float hi) : halfLo(0.5f * lo) {
+    float halfExtent = 0.5f * hi - halfLo;
+    scale = halfExtent > 0.0f ? kBins / halfExtent : 0.0f;
+  }
+  int operator()(float c) const {
+    float f = (0.5f * c - halfLo) * scale;
+    if (!(f > 0.0f)) return 0;   // also NaN
+    return f < static_cast<float>(kBins - 1) ? static_cast<int>(f) : kBins - 1;
+  }
 };
 
 float roundDown(double v) {
@@ -135,21 +154,20 @@ class Builder {
   Split bestSplit(std::uint32_t begin, std::uint32_t end, const Box& centroids) const {
     Box binBox[3][kBins];
     std::uint32_t binCount[3][kBins] = {};
-    vec3 lo = centroids.lo, extent = centroids.hi - centroids.lo;
-    vec3 scale(0.0f);
-    for (int a = 0; a < 3; ++a) scale[a] = extent[a] > 0.0f ? kBins / extent[a] : 0.0f;
+    const Binner binner[3] = {{centroids.lo.x, centroids.hi.x}, {centroids.lo.y, centroids.hi.y},
+                              {centroids.lo.z, centroids.hi.z}};
     for (std::uint32_t i = begin; i < end; ++i) {
       const BuildPrim& p = prims_[i];
-      vec3 bin = (p.centroid() - lo) * scale;
+      vec3 c = p.centroid();
       for (int a = 0; a < 3; ++a) {
-        int b = std::min(kBins - 1, static_cast<int>(bin[a]));
+        int b = binner[a](c[a]);
         binBox[a][b].grow(p.box);
         ++binCount[a][b];
       }
     }
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
-      if (!(extent[axis] > 0.0f)) continue;
+      if (!(binner[axis].scale > 0.0f)) continue;
       float rightArea[kBins];
       std::uint32_t rightCount[kBins];
       Box acc;
@@ -197,11 +215,9 @@ class Builder {
     float leafCost = static_cast<float>(count);
     float splitCost = parentArea > 0.0f ? kTraversalCost + s.cost / parentArea : leafCost;
     if (count <= kMaxLeafSize && leafCost <= splitCost) return false;
-    // The same arithmetic as the binning, so each primitive goes to the side its bin was counted on.
-    float lo = centroids.lo[s.axis], scale = kBins / (centroids.hi[s.axis] - centroids.lo[s.axis]);
-    auto it = std::partition(prims_.begin() + begin, prims_.begin() + end, [&](const BuildPrim& p) {
-      return std::min(kBins - 1, static_cast<int>((p.centroid()[s.axis] - lo) * scale)) <= s.plane;
-    });
+    const Binner binner(centroids.lo[s.axis], centroids.hi[s.axis]);
+    auto it = std::partition(prims_.begin() + begin, prims_.begin() + end,
+                             [&](const BuildPrim& p) { return binner(p.centroid()[s.axis]) <= s.plane; });
     mid = static_cast<std::uint32_t>(it - prims_.begin());
     if (mid == begin || mid == end) mid = begin + count / 2;
     return true;
