@@ -378,11 +378,28 @@ void addLightContribution() {
   radiance += throughput * lightColor * lit;
 }
 
-// One node of a traversal: the nearest-hit one of the current ray (kPhaseTrace) or the
-// any-hit one of a shadow ray (kPhaseShadow). One function for both, so that lanes of a SIMD
-// vector in different phases run the expensive part once.
-void traversalStep() {
+// One leaf of a traversal, after the interior nodes above it: the nearest-hit traversal of
+// the current ray (kPhaseTrace) or the any-hit one of a shadow ray (kPhaseShadow). One
+// function for both, so that lanes of a SIMD vector in different phases run the expensive
+// part once. Interior nodes are walked in an inner loop until this lane's next entry is a
+// leaf, so that the lanes of a vector test their leaves together instead of taking turns
+// with lanes still descending (the "while-while" order of Aila and Laine). Each node is a
+// step of the budget.
+void traversalStep(inout uint step) {
   bool shadow = phase == kPhaseShadow;
+  vec3 origin = shadow ? hitPoint : rayOrigin;
+  vec3 dir = shadow ? shadowDir : rayDir;
+  float tMin = shadow ? hitTMin : rayTMin;
+  float tMax = shadow ? shadowTMax : bestT;
+  if (sp > 0u && (stack[sp - 1u] & kStackLeafBit) == 0u) {
+    vec3 invDir = safeInverse(dir);
+    while (sp > 0u && (stack[sp - 1u] & kStackLeafBit) == 0u && step < kStepBudget) {
+      --sp;
+      ++step;
+      if (stackT[sp] < tMax) pushChildren(stack[sp], origin, invDir, tMin, tMax);
+    }
+    if (sp > 0u && (stack[sp - 1u] & kStackLeafBit) == 0u) return;   // out of steps
+  }
   if (sp == 0u) {   // traversal over
     if (shadow) {   // nothing in the way
       addLightContribution();
@@ -395,17 +412,9 @@ void traversalStep() {
     }
     return;
   }
-  vec3 origin = shadow ? hitPoint : rayOrigin;
-  vec3 dir = shadow ? shadowDir : rayDir;
-  float tMin = shadow ? hitTMin : rayTMin;
-  float tMax = shadow ? shadowTMax : bestT;
   --sp;
   if (stackT[sp] >= tMax) return;   // entered beyond the nearest hit so far
   uint entry = stack[sp];
-  if ((entry & kStackLeafBit) == 0u) {
-    pushChildren(entry, origin, safeInverse(dir), tMin, tMax);
-    return;
-  }
   uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
   Shear sh;
   if (kHasTriangles) sh = shearFor(dir);
@@ -506,7 +515,7 @@ void main() {
     if (phase == kPhaseLight)
       lightStep();
     else
-      traversalStep();
+      traversalStep(step);
   }
 
   if (shadowRays + reflectionRays > 0u) {

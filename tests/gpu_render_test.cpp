@@ -165,6 +165,20 @@ TEST(GpuLoopBudget, SuspendingAfterEveryFewStepsChangesNoPixel) {
   EXPECT_TRUE(imagesClose("gpu-step-budget", pieces, whole, 0, 0));
 }
 
+// A deep tree, so that the budget also runs out in the middle of a descent through interior
+// nodes (the inner loop of traversalStep), not only between leaves.
+TEST(GpuLoopBudget, SuspendingInTheMiddleOfADescentChangesNoPixel) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc scene = parseScene(loopBudgetScene(), "loop-budget.test");
+  Image whole = renderGpu(scene);
+  for (std::uint32_t budget : {3u, 7u}) {
+    VulkanTimings tiny;
+    Image pieces = renderGpu(scene, budget, &tiny);
+    EXPECT_GT(tiny.suspensions, 10000u);
+    EXPECT_TRUE(imagesClose("gpu-step-budget-descent-" + std::to_string(budget), pieces, whole, 0, 0));
+  }
+}
+
 TEST(GpuCli, DefaultBackendIsVulkanAndStatsShowItsStages) {
   VKRT_REQUIRE_GPU(context);
   std::string dir = freshDir("gpu-cli/stats");
