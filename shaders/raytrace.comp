@@ -378,6 +378,9 @@ void addLightContribution() {
   radiance += throughput * lightColor * lit;
 }
 
+// True when the entry on top of the traversal stack is an interior node.
+bool nextIsInterior() { return sp > 0u && (stack[sp - 1u] & kStackLeafBit) == 0u; }
+
 // One leaf of a traversal, after the interior nodes above it: the nearest-hit traversal of
 // the current ray (kPhaseTrace) or the any-hit one of a shadow ray (kPhaseShadow). One
 // function for both, so that lanes of a SIMD vector in different phases run the expensive
@@ -391,14 +394,14 @@ void traversalStep(inout uint step) {
   vec3 dir = shadow ? shadowDir : rayDir;
   float tMin = shadow ? hitTMin : rayTMin;
   float tMax = shadow ? shadowTMax : bestT;
-  if (sp > 0u && (stack[sp - 1u] & kStackLeafBit) == 0u) {
+  if (nextIsInterior()) {
     vec3 invDir = safeInverse(dir);
-    while (sp > 0u && (stack[sp - 1u] & kStackLeafBit) == 0u && step < kStepBudget) {
+    while (nextIsInterior() && step < kStepBudget) {
       --sp;
       ++step;
       if (stackT[sp] < tMax) pushChildren(stack[sp], origin, invDir, tMin, tMax);
     }
-    if (sp > 0u && (stack[sp - 1u] & kStackLeafBit) == 0u) return;   // out of steps
+    if (nextIsInterior()) return;   // out of steps
   }
   if (sp == 0u) {   // traversal over
     if (shadow) {   // nothing in the way
