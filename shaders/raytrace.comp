@@ -369,7 +369,9 @@ void addLightContribution() {
   vec3 lit = m.diffuse.rgb * nDotL;
   if (kHasSpecular) {
     vec3 halfVector = normalize(shadowDir - rayDir);
-    float nDotH = max(dot(hitNormal, halfVector), 0.0);
+    // At most 1, as it is exactly: float rounding may give 1 + 1e-7, and a high shininess would
+    // raise that above the exactness cut-off's bound.
+    float nDotH = clamp(dot(hitNormal, halfVector), 0.0, 1.0);
     float shininess = m.specular.w;
     // pow(0, s) is undefined in GLSL: define it as C does (1 for s = 0, else 0).
     float highlight = nDotH > 0.0 ? pow(nDotH, shininess) : (shininess == 0.0 ? 1.0 : 0.0);

@@ -1,6 +1,7 @@
 // Flattening and the BVH: layouts, values carried over, every primitive in exactly one leaf,
 // and every box containing its contents.
 #include <algorithm>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -158,4 +159,29 @@ TEST(Bvh, EmptySceneHasOneEmptyLeaf) {
   ASSERT_EQ(bvh.nodes.size(), 1u);
   EXPECT_EQ(bvh.nodes[0].primCount, 0u);
   EXPECT_GT(bvh.nodes[0].minX, bvh.nodes[0].maxX);   // inverted box: nothing enters
+}
+
+// The exactness cut-off's bound per channel: one hit's ambient + emission + every light at
+// full strength times (diffuse + specular); +infinity where a light has no bound, but a zero
+// factor keeps its channel finite; a negative attenuation term makes the bound two-sided.
+TEST(Flatten, CutoffBoundFollowsTheLights) {
+  auto bound = [](const std::string& lights, dvec3 attenuation = dvec3(0.0)) {
+    SceneDesc s = parseScene("size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\nambient 0.1 0.1 0.1\n" + lights +
+                                 "diffuse 0.5 0.5 0.5\nspecular 0.25 0.25 0.25\nsphere 0 0 0 1\n",
+                             "bound.test");
+    if (attenuation != dvec3(0.0)) s.lights[0].attenuation = attenuation;   // (the parser refuses these)
+    return flatten(s).push.cutoffBound;
+  };
+  gpu::vec4 b = bound("attenuation 2 1 1\npoint 0 0 3 1 2 0\ndirectional 0 0 1 1 1 1\n");
+  EXPECT_FLOAT_EQ(b.x, 0.1f + (0.5f + 1.0f) * 0.75f);
+  EXPECT_FLOAT_EQ(b.y, 0.1f + (1.0f + 1.0f) * 0.75f);
+  EXPECT_FLOAT_EQ(b.z, 0.1f + 1.0f * 0.75f);
+  EXPECT_EQ(b.w, 1.0f);
+  b = bound("attenuation 0 0 1\npoint 0 0 3 1 0 0\n");   // no constant term: red unbounded
+  EXPECT_TRUE(std::isinf(b.x));
+  EXPECT_FLOAT_EQ(b.y, 0.1f);
+  EXPECT_FLOAT_EQ(b.z, 0.1f);
+  b = bound("point 0 0 3 1 1 1\n", dvec3(1, -0.5, 0));   // the divisor crosses 0
+  EXPECT_TRUE(std::isinf(b.x) && std::isinf(b.y) && std::isinf(b.z));
+  EXPECT_EQ(b.w, 0.0f) << "a negative term can make the light negative";
 }

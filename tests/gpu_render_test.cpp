@@ -1,6 +1,7 @@
 // The Vulkan backend against the CPU reference (the oracle) on every scene we have, against
 // the course references, and on a scene that exceeds llvmpipe's loop budget. The validation
 // layer is on for all of them (renderGpu checks that it stays silent).
+#include <cmath>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -26,12 +27,14 @@ class GpuCourseScene : public ::testing::TestWithParam<const char*> {};
 
 // The image with and without the exactness cut-off of the mirror loop, which must be the same;
 // returns the mirror rays each traced.
-std::pair<std::uint64_t, std::uint64_t> expectCutoffChangesNoPixel(const std::string& name, const SceneDesc& scene) {
+std::pair<std::uint64_t, std::uint64_t> expectCutoffChangesNoPixel(const std::string& name, const SceneDesc& scene,
+                                                                   std::uint32_t stepBudget = 0) {
   Context* context = gpuContextOrSkip();
   VulkanOptions exact;
   exact.cutoff = Cutoff::Off;
   VulkanOptions forced;
   forced.cutoff = Cutoff::On;   // also where Auto would leave it out
+  forced.stepBudget = stepBudget;   // (a small budget suspends and resumes pixels)
   RayCounts cutRays, exactRays;   // (nonFinite checked by the renderGpu tests of the same scenes)
   GpuScene flat = flatten(scene);
   Image cut = renderVulkan(*context, flat, forced, &cutRays, nullptr);
@@ -253,4 +256,28 @@ TEST(GpuCutoff, StopsPathsThatCannotChangeAByte) {
               static_cast<unsigned long long>(cut), static_cast<unsigned long long>(all));
   auto [cutNeg, allNeg] = expectCutoffChangesNoPixel("negative", parseScene(scene("0.4 -0.5 0.6"), "neg.test"));
   EXPECT_LT(cutNeg * 2, allNeg);
+}
+
+// Point lights without a constant attenuation term have no bound, and lights of one colour
+// have a zero channel: the bound of such a scene was once 0 * infinity = NaN, which max()
+// dropped, so the cut-off took every unbounded light for nothing and cut mirror paths that
+// mattered (thousands of pixels, up to 231/255). 200 such lights, mirror spheres on a floor,
+// maxdepth 8; the same with a budget of 7 steps, which suspends nearly every pixel.
+TEST(GpuCutoff, UnboundedLightsWithZeroChannelsChangeNoPixel) {
+  VKRT_REQUIRE_GPU(context);
+  std::string text = "size 64 48\nmaxdepth 8\ncamera 0 -6 4 0 0 0 0 0 1 45\nambient 0 0 0\nattenuation 0 0 1\n";
+  const char* colours[] = {"0.1 0 0", "0 0.1 0", "0 0 0.1", "0.05 0.05 0"};
+  for (int i = 0; i < 200; ++i)   // a fixed spread of positions above the floor
+    text += "point " + std::to_string(-5 + (i * 37 % 100) / 10.0) + " " + std::to_string(-5 + (i * 61 % 100) / 10.0) +
+            " " + std::to_string(1 + (i * 17 % 50) / 10.0) + " " + colours[i % 4] + "\n";
+  text += "diffuse .5 .5 .5\nvertex -10 -10 0\nvertex 10 -10 0\nvertex 10 10 0\nvertex -10 10 0\ntri 0 1 2\ntri 0 2 3\n"
+          "diffuse .1 .1 .1\nspecular .8 .8 .8\nshininess 50\nsphere -1.5 0 1 1\nsphere 1.5 0 1 1\nsphere 0 2 1 1\n";
+  SceneDesc scene = parseScene(text, "unbounded-lights.test");
+  GpuScene flat = flatten(scene);
+  for (int c = 0; c < 3; ++c) EXPECT_TRUE(std::isinf(flat.push.cutoffBound[c])) << "channel " << c;
+  VulkanTimings automatic;
+  renderVulkan(*context, flat, VulkanOptions{}, nullptr, &automatic);
+  EXPECT_NE(automatic.leftOut.find("exactness cut-off"), std::string::npos)
+      << "--cutoff auto cannot pay without a bound";
+  for (std::uint32_t budget : {0u, 7u}) expectCutoffChangesNoPixel("unbounded-lights-" + std::to_string(budget), scene, budget);
 }

@@ -74,7 +74,7 @@ bool cutoffPays(const gpu::GpuPushConstants& p, std::uint32_t maxDepth) {
     bool all = true;
     for (int c = 0; c < 3; ++c) {
       double s = spec[c], series = s < 1.0 ? 1.0 / (1.0 - s) : maxDepth;
-      if (bound[c] >= 3.0e38f || std::pow(s, d) * bound[c] * series >= 1.0 / 255.0) all = false;
+      if (!std::isfinite(bound[c]) || std::pow(s, d) * bound[c] * series >= 1.0 / 255.0) all = false;
     }
     if (all) return true;
   }

@@ -36,31 +36,46 @@ gpu::GpuPushConstants cameraConstants(const SceneDesc& scene, const dvec3& origi
 }
 
 // The exactness cut-off's bounds (gpu_types.h, GpuPushConstants): what one hit can send at
-// most, per channel, in absolute value, and the largest mirror weight. A point light with no
-// constant attenuation term has no bound (its light grows without limit near it): the bound
-// is then infinite and the shader cuts only paths whose pixel is already saturated.
+// most, per channel, in absolute value, and the largest mirror weight. A channel without a
+// bound is +infinity, and the shader never cuts a path by it. Unbounded are: a point light
+// whose attenuation divisor c0 + c1 r + c2 r^2 can come near 0 for some r >= 0 (c0 = 0, or a
+// negative coefficient), and sums beyond float. A zero factor stays an exact 0 (never
+// 0 * infinity, which is NaN and was once dropped by max(), leaving an unbounded light out).
 void cutoffConstants(const SceneDesc& scene, gpu::GpuPushConstants& p) {
+  const double kUnbounded = std::numeric_limits<double>::infinity();
   bool nonNegative = true;
   auto track = [&nonNegative](const dvec3& c) {
     nonNegative = nonNegative && c.x >= 0.0 && c.y >= 0.0 && c.z >= 0.0;
     return glm::abs(c);
   };
+  auto product = [](const dvec3& a, const dvec3& b) {
+    dvec3 r;
+    for (int c = 0; c < 3; ++c) r[c] = a[c] == 0.0 || b[c] == 0.0 ? 0.0 : a[c] * b[c];
+    return r;
+  };
   dvec3 lightSum(0.0);
   for (const Light& l : scene.lights) {
     double strongest = 1.0;   // the largest 1 / attenuation divisor
-    if (l.type == LightType::Point)
-      strongest = l.attenuation.x > 0.0 ? 1.0 / l.attenuation.x : std::numeric_limits<double>::infinity();
-    lightSum += track(l.color) * strongest;
+    if (l.type == LightType::Point) {
+      const dvec3& a = l.attenuation;
+      // c0 + c1 r + c2 r^2 >= c0 > 0 for every distance r when no term is negative; a
+      // negative term can also make the light negative.
+      if (a.x < 0.0 || a.y < 0.0 || a.z < 0.0) nonNegative = false;
+      strongest = a.x > 0.0 && a.y >= 0.0 && a.z >= 0.0 ? 1.0 / a.x : kUnbounded;
+    }
+    lightSum += product(track(l.color), dvec3(strongest));
   }
   dvec3 bound(0.0), specular(0.0);
   for (const Material& m : scene.materials) {
-    // N.L <= 1 and max(N.H, 0)^s <= 1, also for s = 0.
-    dvec3 hit = track(m.ambient) + track(m.emission) + lightSum * (track(m.diffuse) + track(m.specular));
+    // N.L <= 1 and max(N.H, 0)^s <= 1, also for s = 0 (the shader clamps N.H to [0, 1]).
+    dvec3 hit = track(m.ambient) + track(m.emission) + product(lightSum, track(m.diffuse) + track(m.specular));
     bound = glm::max(bound, hit);
     specular = glm::max(specular, glm::abs(m.specular));
   }
-  // Infinite or beyond float: the largest float, which the shader treats as "no bound".
-  auto toFloat = [](double v) { return v < 3.0e38 ? static_cast<float>(v) : 3.0e38f; };
+  // Beyond float: +infinity, "no bound" (the shader then never cuts by that channel).
+  auto toFloat = [](double v) {
+    return v < double{std::numeric_limits<float>::max()} ? static_cast<float>(v) : std::numeric_limits<float>::infinity();
+  };
   p.cutoffBound = {toFloat(bound.x), toFloat(bound.y), toFloat(bound.z), nonNegative ? 1.0f : 0.0f};
   p.cutoffSpecular = {toFloat(specular.x), toFloat(specular.y), toFloat(specular.z), 0.0f};
 }

@@ -181,8 +181,10 @@ struct GpuPushConstants {
   // The exactness cut-off: a mirror ray is not traced when the most that the rest of the
   // path can add or take away, |throughput| * cutoffBound * (1 + s + s^2 + ...) per channel
   // (s = cutoffSpecular), leaves every channel's byte as it is. cutoffBound bounds the
-  // |radiance| that one hit can send (ambient + emission + every light at full strength).
-  vec4 cutoffBound;         // rgb = that bound per channel; w = 1 when no colour in the scene is negative
+  // |radiance| that one hit can send (ambient + emission + every light at full strength);
+  // +infinity where there is no bound (a point light without a constant attenuation term),
+  // and the shader never cuts by such a channel (flatten.cpp, cutoffConstants).
+  vec4 cutoffBound;         // rgb = that bound per channel; w = 1 when no colour or attenuation term is negative
   vec4 cutoffSpecular;      // rgb = the largest |specular| of any material, per channel; w unused
   uint bandY0;              // first image row of this band
   uint resume;              // 0: every pixel starts fresh; 1: continue suspended pixels
