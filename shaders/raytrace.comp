@@ -54,6 +54,8 @@ GpuTriangle loadTriangle(uint i) {
   uvec4 w = texelFetch(triangleWords, int(4u * i + 3u));
   t.materialIndex = w.x;
   t.normalsIndex = w.y;
+  t.rayOffset = uintBitsToFloat(w.z);
+  t.planeOffset = uintBitsToFloat(w.w);
   return t;
 }
 GpuTriangleNormals loadTriangleNormals(uint i) {
@@ -68,7 +70,9 @@ GpuSphere loadSphere(uint i) {
   s.objectFromWorld = mat4(texelF(sphereWords, 6u * i), texelF(sphereWords, 6u * i + 1u),
                            texelF(sphereWords, 6u * i + 2u), texelF(sphereWords, 6u * i + 3u));
   s.centerRadius = texelF(sphereWords, 6u * i + 4u);
-  s.materialIndex = texelFetch(sphereWords, int(6u * i + 5u)).x;
+  uvec4 w = texelFetch(sphereWords, int(6u * i + 5u));
+  s.materialIndex = w.x;
+  s.rayOffset = uintBitsToFloat(w.y);
   return s;
 }
 GpuLight loadLight(uint i) {
@@ -179,7 +183,7 @@ Shear shearFor(vec3 dir) {
 
 // Returns t in (tMin, tMax) or -1; b = the barycentric weights of p1 and p2. A triangle seen
 // edge-on or of zero area (the host leaves those out anyway) is missed, never NaN.
-float hitTriangle(uint index, vec3 origin, Shear sh, float tMin, float tMax, out vec2 b) {
+float hitTriangle(uint index, vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, out vec2 b) {
   GpuTriangle tri = loadTriangle(index);
   vec3 pa = tri.p0.xyz - origin, pb = tri.p1.xyz - origin, pc = tri.p2.xyz - origin;
   precise float ax = pa[sh.kx] - sh.s.x * pa[sh.kz], ay = pa[sh.ky] - sh.s.y * pa[sh.kz];
@@ -191,8 +195,12 @@ float hitTriangle(uint index, vec3 origin, Shear sh, float tMin, float tMax, out
   b = vec2(0.0);
   if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return -1.0;
   float det = u + v + w;
-  if (det == 0.0) return -1.0;
-  float t = (u * (sh.s.z * pa[sh.kz]) + v * (sh.s.z * pb[sh.kz]) + w * (sh.s.z * pc[sh.kz])) / det;
+  vec3 n = vec3(tri.p0.w, tri.p1.w, tri.p2.w);
+  float nDotD = dot(n, dir);
+  if (det == 0.0 || nDotD == 0.0) return -1.0;
+  // t from the plane stored in double precision: its error follows the ray origin's
+  // magnitude, not the size of the triangle (the corners of a vast one round coarsely).
+  float t = (tri.planeOffset - dot(n, origin)) / nDotD;
   b = vec2(v, w) / det;
   return (t > tMin && t < tMax) ? t : -1.0;
 }
@@ -221,10 +229,10 @@ float hitSphere(uint index, vec3 origin, vec3 dir, float tMin, float tMax) {
 // A BVH leaf's primitive reference: a sphere or a triangle.
 float hitPrimitive(uint ref, vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, out vec2 b) {
   b = vec2(0.0);
-  if (!kHasSpheres) return hitTriangle(ref, origin, sh, tMin, tMax, b);
+  if (!kHasSpheres) return hitTriangle(ref, origin, dir, sh, tMin, tMax, b);
   if (!kHasTriangles) return hitSphere(ref & ~kPrimSphereBit, origin, dir, tMin, tMax);
   return (ref & kPrimSphereBit) != 0u ? hitSphere(ref & ~kPrimSphereBit, origin, dir, tMin, tMax)
-                                      : hitTriangle(ref, origin, sh, tMin, tMax, b);
+                                      : hitTriangle(ref, origin, dir, sh, tMin, tMax, b);
 }
 
 // ---- the state machine's steps -----------------------------------------------------------------
@@ -263,30 +271,32 @@ void pushChildren(uint left, vec3 origin, vec3 invDir, float tMin, float tMax) {
   }
 }
 
-// The secondary-ray offset at p (the policy: gpu_types.h, "Secondary rays").
-float secondaryTMin(vec3 p) {
-  vec3 a = abs(p - pc.cameraOrigin.xyz);
-  return max(pc.sceneEpsilon, kOffsetPerMagnitude * max(max(a.x, a.y), a.z));
+// The secondary-ray offset at p on a primitive (the policy: gpu_types.h, "Secondary rays"); p
+// is in the frame centred on the geometry.
+float secondaryTMin(float primitiveOffset, vec3 p) {
+  vec3 a = max(abs(p), abs(p - pc.cameraOrigin.xyz));
+  return max(primitiveOffset, kOffsetPerMagnitude * max(max(a.x, a.y), a.z));
 }
 
 // The nearest hit is known: ambient and emission, then the lights one by one.
 void beginShading() {
   hitPoint = rayOrigin + bestT * rayDir;
-  hitTMin = secondaryTMin(hitPoint);
   if (kHasSpheres && (!kHasTriangles || (hitPrim & kPrimSphereBit) != 0u)) {
     GpuSphere s = loadSphere(hitPrim & ~kPrimSphereBit);
     vec3 pObject = (s.objectFromWorld * vec4(rayOrigin, 1.0)).xyz + bestT * (s.objectFromWorld * vec4(rayDir, 0.0)).xyz;
     hitNormal = normalize(transpose(mat3(s.objectFromWorld)) * (pObject - s.centerRadius.xyz));
     hitMaterial = s.materialIndex;
+    hitTMin = secondaryTMin(s.rayOffset, hitPoint);
   } else {
     GpuTriangle tri = loadTriangle(hitPrim);
     if (kHasSmoothNormals && tri.normalsIndex != kNoNormals) {
       GpuTriangleNormals n = loadTriangleNormals(tri.normalsIndex);
       hitNormal = normalize((1.0 - bestB1 - bestB2) * n.n0.xyz + bestB1 * n.n1.xyz + bestB2 * n.n2.xyz);
     } else {
-      hitNormal = normalize(cross(tri.p1.xyz - tri.p0.xyz, tri.p2.xyz - tri.p0.xyz));
+      hitNormal = vec3(tri.p0.w, tri.p1.w, tri.p2.w);
     }
     hitMaterial = tri.materialIndex;
+    hitTMin = secondaryTMin(tri.rayOffset, hitPoint);
   }
   GpuMaterial m = loadMaterial(hitMaterial);
   radiance += throughput * (m.ambient.rgb + m.emission.rgb);

@@ -87,18 +87,6 @@ INSTANTIATE_TEST_SUITE_P(Stiff, ScaleInvariance,
                                            Variant{"milliMoved", 1e-3, 10, false}),
                          [](const auto& p) { return std::string(p.param.name); });
 
-TEST(RayOffset, CourseSizedScenesKeepTheCourseOffsetAndOthersScaleByDecades) {
-  auto epsilonAt = [](double k) { return secondaryRayEpsilon(parseScene(stiffScene(k, dvec3(0), false), "s.test")); };
-  EXPECT_EQ(epsilonAt(1), double{gpu::kSecondaryRayTMin});
-  EXPECT_NEAR(epsilonAt(1e-3) / epsilonAt(1), 1e-3, 1e-12);
-  EXPECT_NEAR(epsilonAt(1e4) / epsilonAt(1), 1e4, 1e-6);
-  EXPECT_EQ(secondaryRayEpsilon(parseScene("size 4 4\ncamera 0 0 1 0 0 0 0 1 0 45\n", "e.test")),
-            double{gpu::kSecondaryRayTMin});
-  // Far from the camera, the offset grows with the hit point's magnitude (float32 rounding).
-  EXPECT_EQ(secondaryRayTMin(1e-3, dvec3(1, -2, 3)), 1e-3);
-  EXPECT_NEAR(secondaryRayTMin(1e-3, dvec3(0, -1e6, 3)), 1e6 * gpu::kOffsetPerMagnitude, 1e-9);
-}
-
 // A fan of 1000 thin triangles around the point the centre pixel looks at, filling the view,
 // emitting white: a ray that slipped between two of them would leave a black pixel. Flat and
 // tilted, so that edges meet pixel centres exactly (axis-aligned edges, the shared vertex) and

@@ -96,7 +96,9 @@ class Tracer {
     halfH_ = scene.height / 2.0;
     tanY_ = std::tan(glm::radians(c.fovyDegrees) / 2.0);
     tanX_ = tanY_ * scene.width / scene.height;
-    sceneEpsilon_ = secondaryRayEpsilon(scene);
+    offsets_ = primitiveOffsets(scene);
+    dvec3 lo, hi;
+    frameOrigin_ = sceneBounds(scene, lo, hi) ? 0.5 * (lo + hi) : c.from;
   }
 
   // Nearest hit with t in (tMin, tMax), or the first one found when anyHit.
@@ -153,7 +155,9 @@ class Tracer {
       materialIndex = t.material;
     }
     const Material& m = scene_.materials[materialIndex];
-    const double offset = secondaryRayTMin(sceneEpsilon_, p - scene_.camera.from);
+    const double offset = secondaryRayTMin((hit.prim & gpu::kPrimSphereBit) ? offsets_.spheres[hit.prim & ~gpu::kPrimSphereBit]
+                                                                            : offsets_.triangles[hit.prim],
+                                           p - frameOrigin_, p - scene_.camera.from);
     dvec3 eye = -ray.dir;
     dvec3 color = m.ambient + m.emission;
     for (const Light& light : scene_.lights) {
@@ -201,7 +205,8 @@ class Tracer {
   const Bvh& bvh_;
   dvec3 u_, v_, w_;
   double halfW_, halfH_, tanX_, tanY_;
-  double sceneEpsilon_;   // the scene part of the secondary-ray offset (gpu_types.h)
+  PrimitiveOffsets offsets_;   // the secondary-ray offsets (gpu_types.h, "Secondary rays")
+  dvec3 frameOrigin_;          // where the shader's float32 frame has its origin (flatten())
 };
 
 }  // namespace

@@ -93,14 +93,24 @@ GpuScene flatten(const SceneDesc& scene) {
   g.origin = origin;
   g.push = cameraConstants(scene, origin);
   cutoffConstants(scene, g.push);
-  g.push.sceneEpsilon = static_cast<float>(secondaryRayEpsilon(scene));
+  const PrimitiveOffsets offsets = primitiveOffsets(scene);
   const dmat4 fromOrigin = glm::translate(dmat4(1.0), origin);
   g.triangles.reserve(scene.triangles.size());
-  for (const Triangle& t : scene.triangles) {
+  for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+    const Triangle& t = scene.triangles[i];
     gpu::GpuTriangle gt{};
-    gt.p0 = f4(t.p[0] - origin);
-    gt.p1 = f4(t.p[1] - origin);
-    gt.p2 = f4(t.p[2] - origin);
+    gt.rayOffset = static_cast<float>(offsets.triangles[i]);
+    // The plane, in double: the shader measures t from it, so that a vast triangle's float32
+    // corners do not make its hits less exact than the ray's own origin allows.
+    const dvec3 a = t.p[0] - origin, b = t.p[1] - origin, c = t.p[2] - origin;
+    dvec3 normal = glm::cross(b - a, c - a);
+    const double area2 = glm::length(normal);
+    normal = area2 > 0.0 && std::isfinite(area2) ? normal / area2 : dvec3(0.0);
+    gt.p0 = f4(a, static_cast<float>(normal.x));
+    gt.p1 = f4(b, static_cast<float>(normal.y));
+    gt.p2 = f4(c, static_cast<float>(normal.z));
+    const dvec3 normalAsStored(gt.p0.w, gt.p1.w, gt.p2.w);
+    gt.planeOffset = static_cast<float>(glm::dot(normalAsStored, a));
     gt.materialIndex = t.material;
     gt.normalsIndex = gpu::kNoNormals;
     if (t.smooth) {
@@ -110,8 +120,10 @@ GpuScene flatten(const SceneDesc& scene) {
     g.triangles.push_back(gt);
   }
   g.spheres.reserve(scene.spheres.size());
-  for (const Sphere& s : scene.spheres) {
+  for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+    const Sphere& s = scene.spheres[i];
     gpu::GpuSphere gs{};
+    gs.rayOffset = static_cast<float>(offsets.spheres[i]);
     // From the scene-centred frame to coordinates centred on the sphere, in double: a
     // sphere far from the world's origin keeps float32's precision.
     gs.objectFromWorld = gpu::mat4(glm::translate(dmat4(1.0), -s.center) * s.objectFromWorld * fromOrigin);

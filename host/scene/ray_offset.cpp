@@ -1,54 +1,237 @@
-// The secondary-ray offset's scene scale (the policy: gpu_types.h, "Secondary rays").
+// The secondary-ray offset of every primitive (the policy: gpu_types.h, "Secondary rays").
 #include "scene/ray_offset.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <numeric>
 
 #include "gpu_types.h"
 #include "scene/bvh.h"
 
 namespace vkrt {
+namespace {
+
+struct Box {
+  dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
+  void add(const dvec3& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  void add(const Box& b) {
+    lo = glm::min(lo, b.lo);
+    hi = glm::max(hi, b.hi);
+  }
+  bool overlaps(const Box& b, double margin) const {
+    return lo.x - margin <= b.hi.x && b.lo.x <= hi.x + margin && lo.y - margin <= b.hi.y && b.lo.y <= hi.y + margin &&
+           lo.z - margin <= b.hi.z && b.lo.z <= hi.z + margin;
+  }
+  double diagonal() const { return lo.x <= hi.x ? glm::length(hi - lo) : 0.0; }
+};
+
+Box triangleBox(const Triangle& t) {
+  Box b;
+  for (const dvec3& p : t.p) b.add(p);
+  return b;
+}
+
+Box sphereBox(const Sphere& s) {
+  Box b;
+  sphereBounds(s, b.lo, b.hi);
+  return b;
+}
+
+// Union-find over triangles, with path halving.
+struct DisjointSets {
+  std::vector<std::uint32_t> parent;
+  explicit DisjointSets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+// Joins triangles that share a vertex position (exactly equal doubles), through an
+// open-addressing table from position to the first triangle seen there.
+void joinSharedVertices(const std::vector<Triangle>& triangles, DisjointSets& sets) {
+  std::size_t capacity = 16;
+  while (capacity < 6 * triangles.size()) capacity *= 2;
+  struct Slot {
+    dvec3 p;
+    std::uint32_t triangle = 0xFFFFFFFFu;
+  };
+  std::vector<Slot> table(capacity);
+  auto hash = [](const dvec3& p) {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (int k = 0; k < 3; ++k) {
+      double v = p[k] + 0.0;   // -0 and +0 alike
+      std::uint64_t bits;
+      std::memcpy(&bits, &v, sizeof bits);
+      h = (h ^ bits) * 0xBF58476D1CE4E5B9ull;
+      h ^= h >> 31;
+    }
+    return h;
+  };
+  for (std::uint32_t i = 0; i < triangles.size(); ++i)
+    for (const dvec3& p : triangles[i].p) {
+      for (std::size_t s = hash(p) & (capacity - 1);; s = (s + 1) & (capacity - 1)) {
+        if (table[s].triangle == 0xFFFFFFFFu) {
+          table[s] = {p, i};
+          break;
+        }
+        if (table[s].p == p) {
+          sets.unite(table[s].triangle, i);
+          break;
+        }
+      }
+    }
+}
+
+// A tree over boxes that answers "does any of them come within `margin` of this box?".
+class BoxTree {
+ public:
+  explicit BoxTree(std::vector<Box> boxes) : boxes_(std::move(boxes)) {
+    if (boxes_.empty()) return;
+    nodes_.resize(1);
+    build(0, 0, boxes_.size());
+  }
+  bool anyNear(const Box& query, double margin) const {
+    if (nodes_.empty()) return false;
+    std::vector<std::uint32_t> stack{0};
+    while (!stack.empty()) {
+      const Node& n = nodes_[stack.back()];
+      stack.pop_back();
+      if (!n.box.overlaps(query, margin)) continue;
+      if (n.count > 0) {
+        for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
+          if (boxes_[i].overlaps(query, margin)) return true;
+      } else {
+        stack.push_back(n.first);
+        stack.push_back(n.first + 1);
+      }
+    }
+    return false;
+  }
+
+ private:
+  struct Node {
+    Box box;
+    std::uint32_t first = 0, count = 0;   // leaf: boxes [first, first + count); interior: children first, first + 1
+  };
+  // Fills node `index` with boxes [begin, end): median split on the longest axis.
+  void build(std::uint32_t index, std::size_t begin, std::size_t end) {
+    Box box;
+    for (std::size_t i = begin; i < end; ++i) box.add(boxes_[i]);
+    nodes_[index].box = box;
+    if (end - begin <= 4) {
+      nodes_[index].first = static_cast<std::uint32_t>(begin);
+      nodes_[index].count = static_cast<std::uint32_t>(end - begin);
+      return;
+    }
+    dvec3 extent = box.hi - box.lo;
+    int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    std::size_t mid = begin + (end - begin) / 2;
+    std::nth_element(boxes_.begin() + begin, boxes_.begin() + mid, boxes_.begin() + end,
+                     [axis](const Box& a, const Box& b) { return a.lo[axis] + a.hi[axis] < b.lo[axis] + b.hi[axis]; });
+    std::uint32_t children = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.resize(children + 2);
+    nodes_[index].first = children;
+    build(children, begin, mid);
+    build(children + 1, mid, end);
+  }
+  std::vector<Box> boxes_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace
 
 bool sceneBounds(const SceneDesc& scene, dvec3& boxLo, dvec3& boxHi) {
-  dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (const Triangle& t : scene.triangles)
-    for (const dvec3& p : t.p) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-  for (const Sphere& s : scene.spheres) {
-    dvec3 slo, shi;
-    sphereBounds(s, slo, shi);
-    lo = glm::min(lo, slo);
-    hi = glm::max(hi, shi);
-  }
-  if (!(lo.x <= hi.x)) return false;
-  boxLo = lo;
-  boxHi = hi;
+  Box box;
+  for (const Triangle& t : scene.triangles) box.add(triangleBox(t));
+  for (const Sphere& s : scene.spheres) box.add(sphereBox(s));
+  if (!(box.lo.x <= box.hi.x)) return false;
+  boxLo = box.lo;
+  boxHi = box.hi;
   return true;
 }
 
-double sceneSize(const SceneDesc& scene) {
-  dvec3 lo, hi;
-  return sceneBounds(scene, lo, hi) ? glm::length(hi - lo) : 0.0;
-}
-
-double secondaryRayEpsilon(const SceneDesc& scene) {
+double offsetForSize(double size) {
   const double base = gpu::kSecondaryRayTMin;
-  double size = sceneSize(scene);
   if (!(size > 0.0) || !std::isfinite(size)) return base;
-  // Whole decades away from the course's sizes: 0 for the course's scenes (their images stay
+  // Whole decades away from the course's sizes: 0 for the course's objects (their images stay
   // as they were), and exactly k under scaling by 10^k.
   double decades = 0.0;
-  if (size < gpu::kCourseSceneSizeLow) decades = -std::ceil(std::log10(gpu::kCourseSceneSizeLow / size));
-  if (size > gpu::kCourseSceneSizeHigh) decades = std::ceil(std::log10(size / gpu::kCourseSceneSizeHigh));
+  if (size < gpu::kCourseSizeLow) decades = -std::ceil(std::log10(gpu::kCourseSizeLow / size));
+  if (size > gpu::kCourseSizeHigh) decades = std::ceil(std::log10(size / gpu::kCourseSizeHigh));
   return base * std::pow(10.0, decades);
 }
 
-double secondaryRayTMin(double sceneEpsilon, const dvec3& p) {
-  double magnitude = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-  return std::max(sceneEpsilon, double{gpu::kOffsetPerMagnitude} * magnitude);
+PrimitiveOffsets primitiveOffsets(const SceneDesc& scene) {
+  const std::size_t nt = scene.triangles.size(), ns = scene.spheres.size();
+  PrimitiveOffsets result;
+  result.triangles.resize(nt);
+  result.spheres.resize(ns);
+
+  // Objects: connected triangles, and each sphere. Their boxes and sizes.
+  DisjointSets sets(nt);
+  joinSharedVertices(scene.triangles, sets);
+  std::vector<std::uint32_t> objectOf(nt);
+  std::vector<Box> objectBoxes;
+  std::vector<std::uint32_t> objectOfRoot(nt, 0xFFFFFFFFu);
+  for (std::uint32_t i = 0; i < nt; ++i) {
+    std::uint32_t root = sets.find(i);
+    if (objectOfRoot[root] == 0xFFFFFFFFu) {
+      objectOfRoot[root] = static_cast<std::uint32_t>(objectBoxes.size());
+      objectBoxes.emplace_back();
+    }
+    objectOf[i] = objectOfRoot[root];
+    objectBoxes[objectOf[i]].add(triangleBox(scene.triangles[i]));
+  }
+  std::vector<Box> sphereBoxes(ns);
+  for (std::size_t i = 0; i < ns; ++i) sphereBoxes[i] = sphereBox(scene.spheres[i]);
+  const std::size_t firstSphereObject = objectBoxes.size();
+  objectBoxes.insert(objectBoxes.end(), sphereBoxes.begin(), sphereBoxes.end());
+  result.objects = static_cast<int>(objectBoxes.size());
+
+  // Each primitive starts from its own object's offset.
+  std::vector<double> objectOffset(objectBoxes.size());
+  for (std::size_t o = 0; o < objectBoxes.size(); ++o) objectOffset[o] = offsetForSize(objectBoxes[o].diagonal());
+  for (std::size_t i = 0; i < nt; ++i) result.triangles[i] = objectOffset[objectOf[i]];
+  for (std::size_t i = 0; i < ns; ++i) result.spheres[i] = objectOffset[firstSphereObject + i];
+
+  // Then takes the smallest offset of the objects within its own offset's reach: a ray from
+  // it ignores hits closer than that, and theirs must not be ignored beyond their own offset.
+  std::vector<double> levels(objectOffset);
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  for (std::size_t l = 0; l + 1 < levels.size(); ++l) {   // the largest level lowers nothing
+    std::vector<Box> boxes;
+    for (std::size_t o = 0; o < objectBoxes.size(); ++o)
+      if (objectOffset[o] == levels[l]) boxes.push_back(objectBoxes[o]);
+    BoxTree tree(std::move(boxes));
+    auto lower = [&](double& offset, double own, const Box& box) {
+      if (offset > levels[l] && tree.anyNear(box, own)) offset = levels[l];
+    };
+    for (std::size_t i = 0; i < nt; ++i)
+      lower(result.triangles[i], objectOffset[objectOf[i]], triangleBox(scene.triangles[i]));
+    for (std::size_t i = 0; i < ns; ++i)
+      lower(result.spheres[i], objectOffset[firstSphereObject + i], sphereBoxes[i]);
+  }
+  return result;
+}
+
+double secondaryRayTMin(double primitiveOffset, const dvec3& pFromOrigin, const dvec3& pFromCamera) {
+  double magnitude = std::max({std::abs(pFromOrigin.x), std::abs(pFromOrigin.y), std::abs(pFromOrigin.z),
+                               std::abs(pFromCamera.x), std::abs(pFromCamera.y), std::abs(pFromCamera.z)});
+  return std::max(primitiveOffset, double{gpu::kOffsetPerMagnitude} * magnitude);
 }
 
 }  // namespace vkrt

@@ -1,6 +1,9 @@
-// The scene part of the secondary-ray offset. The whole policy is stated in gpu_types.h
-// ("Secondary rays"); both backends take their numbers from there and from here.
+// The secondary-ray offset policy: how far a shadow or mirror ray leaving a primitive ignores
+// hits. The policy is stated once, in gpu_types.h ("Secondary rays"); both backends take their
+// numbers from here. Depends on the scene description only.
 #pragma once
+
+#include <vector>
 
 #include "scene/scene_desc.h"
 
@@ -9,14 +12,23 @@ namespace vkrt {
 // The box around the scene's triangles and spheres; false (and nothing set) without geometry.
 bool sceneBounds(const SceneDesc& scene, dvec3& lo, dvec3& hi);
 
-// The scene's own length scale: the diagonal of that box (0 without geometry).
-double sceneSize(const SceneDesc& scene);
+// The course's offset (1e-3) for an object of the course's sizes, scaled by whole decades for
+// an object of another size (its size: the diagonal of its box).
+double offsetForSize(double size);
 
-// sceneEpsilon: 1e-3 for a scene of the course's size, scaled by whole decades with the
-// scene's size.
-double secondaryRayEpsilon(const SceneDesc& scene);
+// The offset of every primitive: its own object's, or the smallest of the objects whose boxes
+// come within that distance of it, whichever is smaller. An object is a sphere, or a set of
+// triangles connected through shared vertex positions.
+struct PrimitiveOffsets {
+  std::vector<double> triangles;   // one per SceneDesc triangle
+  std::vector<double> spheres;     // one per SceneDesc sphere
+  int objects = 0;                 // how many objects the scene has (for --stats and tests)
+};
+PrimitiveOffsets primitiveOffsets(const SceneDesc& scene);
 
-// The offset of secondary rays from a hit point p given relative to the camera.
-double secondaryRayTMin(double sceneEpsilon, const dvec3& pFromCamera);
+// The tMin of a secondary ray leaving a hit point: the primitive's offset, or more far from
+// the float32 frame's origin and from the camera (pFromOrigin, pFromCamera), where float32
+// rounds the hit point more coarsely.
+double secondaryRayTMin(double primitiveOffset, const dvec3& pFromOrigin, const dvec3& pFromCamera);
 
 }  // namespace vkrt

@@ -25,23 +25,27 @@ using uint = std::uint32_t;
 // centre of its box in double precision), so a scene far from the origin gives float32 the
 // same small numbers.
 // A secondary ray (shadow or mirror) starts at the hit point p and ignores hits with
-//     t <= max(sceneEpsilon, kOffsetPerMagnitude * max(|d.x|, |d.y|, |d.z|)),  d = p - camera
-// along its unit direction, where
-//  - sceneEpsilon = kSecondaryRayTMin * 10^k (secondaryRayEpsilon, host/scene/ray_offset.cpp):
-//    the course's 1e-3 (SPEC section 7) for a scene whose size S (the diagonal of the box
-//    around its geometry) is within [kCourseSceneSizeLow, kCourseSceneSizeHigh] (the course's
-//    scenes measure 2.8 to 54), else k = the whole decades needed to bring S into that band,
-//    negative for small scenes. So the offset follows the scene under scaling: exactly, for
-//    a scale by 10^k of a scene with S in [2.5, 25] (down) or [6, 60] (up); otherwise
-//    within a factor of 10 of exactly;
-//  - the second term, 32 float32 ulps of the hit point's distance from the camera, keeps a
-//    ray off its own surface when the surface is far from the camera relative to its size
-//    (float32 rounding of p grows with that distance). For the course's scenes it is below
-//    1e-3 (distances < 260).
+//     t <= max(rayOffset, kOffsetPerMagnitude * max(|p - o|_max, |p - camera|_max))
+// along its unit direction (o: the centre of the geometry's box), where rayOffset belongs to
+// the primitive that was hit (GpuTriangle, GpuSphere; host/scene/ray_offset.cpp):
+//  - Objects: each sphere, and each set of triangles connected through shared vertex
+//    positions (a mesh, a quad, a box). An object's size S is the diagonal of its box.
+//  - An object's offset is the course's kSecondaryRayTMin (1e-3, SPEC section 7) when S is
+//    within [kCourseSizeLow, kCourseSizeHigh], else 1e-3 * 10^k, k = the whole decades that
+//    bring S into that band (negative for small objects). Under scaling by 10^k it scales
+//    exactly for objects with S in [2.5, 6] (down) or [25, 60] (up), within 10x otherwise.
+//  - A primitive's rayOffset is its object's, lowered to the smallest offset of any object
+//    whose box comes within that distance of the primitive's box: a ray leaving a vast floor
+//    where a small box stands on it ignores no more of the box than a ray leaving the box.
+//    So one vast object (a quad scaled by 100, a ground plane 20,000 units wide) changes
+//    nothing for the small objects on it, and the course's scenes keep 1e-3 everywhere.
+//  - The second term, 32 float32 ulps of the hit point's magnitude in the float32 frame and
+//    from the camera, keeps a ray off its own surface where float32 rounds p more coarsely
+//    than rayOffset. For the course's scenes it is below 1e-3 (magnitudes < 260).
 // The primary (camera) ray takes every hit with t > 0.
 GPU_CONST float kSecondaryRayTMin = 1e-3f;
-GPU_CONST float kCourseSceneSizeLow = 2.5f;
-GPU_CONST float kCourseSceneSizeHigh = 60.0f;
+GPU_CONST float kCourseSizeLow = 0.25f;   // the band of object sizes that keep 1e-3
+GPU_CONST float kCourseSizeHigh = 60.0f;
 GPU_CONST float kOffsetPerMagnitude = 3.814697265625e-6f;   // 2^-18: 32 ulps of float32
 
 // A BVH leaf's primitive reference: triangle index, or sphere index with this bit set.
@@ -54,19 +58,22 @@ GPU_CONST float kPointLight = 1.0f;
 // std430, and only vec4/mat4/uint/float members: a vec3 lives in a vec4 whose .w holds a
 // scalar that belongs with it, and named pad fields bring each struct to a multiple of 16.
 
-struct GpuTriangle {        // world space, counter-clockwise
-  vec4 p0;                  // xyz = vertex 0, w unused (0)
-  vec4 p1;                  // xyz = vertex 1, w unused (0)
-  vec4 p2;                  // xyz = vertex 2, w unused (0)
+struct GpuTriangle {        // scene-centred frame (flatten()), counter-clockwise
+  vec4 p0;                  // xyz = vertex 0, w = x of the unit face normal N
+  vec4 p1;                  // xyz = vertex 1, w = N.y
+  vec4 p2;                  // xyz = vertex 2, w = N.z (N = 0 for a degenerate triangle)
   uint materialIndex;
   uint normalsIndex;        // into the GpuTriangleNormals array, or kNoNormals
-  uint pad0, pad1;          // array stride 64
+  float rayOffset;          // secondary rays leaving it ignore hits closer than this (above)
+  float planeOffset;        // dot(N, p) for the points p of its plane (computed in double)
 };
 GPU_ASSERT_SIZE(GpuTriangle, 64)
 GPU_ASSERT_OFFSET(GpuTriangle, materialIndex, 48)
 GPU_ASSERT_OFFSET(GpuTriangle, normalsIndex, 52)
+GPU_ASSERT_OFFSET(GpuTriangle, rayOffset, 56)
+GPU_ASSERT_OFFSET(GpuTriangle, planeOffset, 60)
 
-struct GpuTriangleNormals { // world-space unit normals at the three vertices (`trinormal`)
+struct GpuTriangleNormals { // unit normals at the three vertices (`trinormal`)
   vec4 n0;
   vec4 n1;
   vec4 n2;
@@ -77,14 +84,16 @@ struct GpuSphere {          // an ellipsoid: the sphere (center, radius) under a
   mat4 objectFromWorld;     // inverse of the transform current at the `sphere` line
   vec4 centerRadius;        // xyz = center in object space, w = radius
   uint materialIndex;
-  uint pad0, pad1, pad2;    // array stride 96
+  float rayOffset;          // secondary rays leaving it ignore hits closer than this (above)
+  uint pad0, pad1;          // array stride 96
 };
 GPU_ASSERT_SIZE(GpuSphere, 96)
 GPU_ASSERT_OFFSET(GpuSphere, centerRadius, 64)
 GPU_ASSERT_OFFSET(GpuSphere, materialIndex, 80)
+GPU_ASSERT_OFFSET(GpuSphere, rayOffset, 84)
 
 struct GpuLight {
-  vec4 positionOrDirection; // world space; w = kPointLight (point) or 0 (direction toward light)
+  vec4 positionOrDirection; // scene-centred frame; w = kPointLight (point) or 0 (direction toward light)
   vec4 color;               // rgb, w unused
   vec4 attenuation;         // xyz = constant, linear, quadratic (point lights), w unused
 };
@@ -188,8 +197,7 @@ struct GpuPushConstants {
   vec4 cutoffSpecular;      // rgb = the largest |specular| of any material, per channel; w unused
   uint bandY0;              // first image row of this band
   uint resume;              // 0: every pixel starts fresh; 1: continue suspended pixels
-  float sceneEpsilon;       // the scene part of the secondary-ray offset (above)
-  uint pad0;                // size 112 (push constants: at most 128 bytes)
+  uint pad0, pad1;          // size 112 (push constants: at most 128 bytes)
 };
 GPU_ASSERT_SIZE(GpuPushConstants, 112)
 GPU_ASSERT_OFFSET(GpuPushConstants, cutoffBound, 64)

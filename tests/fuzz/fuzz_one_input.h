@@ -30,7 +30,7 @@ inline void oneInput(const std::uint8_t* data, std::size_t size) {
   scene.width = std::min(scene.width, 6);
   scene.height = std::min(scene.height, 4);
   scene.maxDepth = std::min(scene.maxDepth, 3);
-  (void)secondaryRayEpsilon(scene);
+  (void)primitiveOffsets(scene);
   GpuScene flat = flatten(scene);
   CpuOptions options;
   options.threads = 1;

@@ -23,12 +23,12 @@ void put(vec4 v) { put(v.x); put(v.y); put(v.z); put(v.w); }
 void main() {
   // Element 1 of each array, so that the array stride is checked as well as the offsets.
   GpuTriangle t = triangles[1];
-  put(t.p0); put(t.p1); put(t.p2); put(t.materialIndex); put(t.normalsIndex); put(t.pad0); put(t.pad1);
+  put(t.p0); put(t.p1); put(t.p2); put(t.materialIndex); put(t.normalsIndex); put(t.rayOffset); put(t.planeOffset);
   GpuTriangleNormals tn = triangleNormals[1];
   put(tn.n0); put(tn.n1); put(tn.n2);
   GpuSphere s = spheres[1];
   put(s.objectFromWorld[0]); put(s.objectFromWorld[1]); put(s.objectFromWorld[2]); put(s.objectFromWorld[3]);
-  put(s.centerRadius); put(s.materialIndex); put(s.pad0); put(s.pad1); put(s.pad2);
+  put(s.centerRadius); put(s.materialIndex); put(s.rayOffset); put(s.pad0); put(s.pad1);
   GpuLight l = lights[1];
   put(l.positionOrDirection); put(l.color); put(l.attenuation);
   GpuMaterial m = materials[1];
