@@ -2,7 +2,13 @@
 // handler: an atomic store, unlink and _exit.
 #include "interrupt.h"
 
+#include <chrono>
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <thread>
 
 #include <unistd.h>
 
@@ -34,6 +40,17 @@ int pendingInterrupt() { return received.load(std::memory_order_relaxed); }
 
 void throwIfInterrupted() {
   if (int s = pendingInterrupt()) throw Interrupted(s);
+}
+
+void waitForSignalIfTesting(const char* stage) {
+  static const char* const wanted = std::getenv("VKRT_TEST_WAIT_FOR_SIGNAL");
+  if (!wanted || std::strcmp(wanted, stage) != 0) return;
+  static std::once_flag announced;
+  std::call_once(announced,
+                 [stage] { std::fprintf(stderr, "vkrt: test hook: waiting for a signal during the %s\n", stage); });
+  const auto giveUp = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while (pendingInterrupt() == 0 && std::chrono::steady_clock::now() < giveUp)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }
 
 void registerTemporaryFile(const char* path) { temporaryFile.store(path); }

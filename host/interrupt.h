@@ -26,6 +26,13 @@ int pendingInterrupt();
 // Throws Interrupted when a signal has been received.
 void throwIfInterrupted();
 
+// For the tests of interruption only: when the environment variable VKRT_TEST_WAIT_FOR_SIGNAL
+// equals `stage` ("render" or "write"), says so on stderr once ("vkrt: test hook: waiting for
+// a signal during the STAGE") and waits until a signal has been received (at most a minute),
+// so that a test's signal arrives at that point whatever the machine's speed. Otherwise it
+// returns at once.
+void waitForSignalIfTesting(const char* stage);
+
 // The temporary file being written (or nullptr): the second signal removes it before exiting.
 // The string must outlive the registration.
 void registerTemporaryFile(const char* path);

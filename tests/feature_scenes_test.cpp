@@ -1,5 +1,6 @@
 // The project's own scenes (scenes/*.test): each parses, renders, is deterministic across
 // thread counts, and shows the feature it is named for.
+#include <cmath>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -58,14 +59,25 @@ TEST(FeatureScenes, DeepMirrorsDependOnMaxDepth) {
   EXPECT_LT(compare(deep, almost).maxChannelDiff, 8) << "reflection 12 should be faint (0.9^12 throughput)";
 }
 
+// Two floor pixels inside the sphere's shadows, where the camera sees the floor (not the
+// sphere) with and without the sphere, so the images differ there only by the shadow rays.
+// The floor: ambient 0.1, diffuse 0.7, no specular, normal +z. In the point light's shadow
+// (22, 21) only the directional light (0.3, N.L = cos 45 deg) is left:
+// 0.1 + 0.7 * 0.3 * 0.7071 = 0.2485 -> 63. In the directional light's shadow (40, 24) the
+// pixel loses that directional term, 37.87 steps, against the scene without the sphere.
 TEST(FeatureScenes, ShadowsDarkenTheFloor) {
   SceneDesc s = load("shadows");
   Image with = render(s, 0);
   s.spheres.clear();
   Image without = render(s, 0);
-  // Without the sphere, no pixel gets darker; with it, the floor under it is shadowed.
-  ImageDiff d = compare(with, without);
-  EXPECT_GT(d.differing.size(), 50u);
+  const double directionalSteps = 255.0 * 0.7 * 0.3 * std::sqrt(0.5);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(static_cast<int>(with.pixel(22, 21)[c]), 63) << "in the point light's shadow, channel " << c;
+    EXPECT_GT(static_cast<int>(without.pixel(22, 21)[c]), 63 + 50)
+        << "lit by the point light without the sphere, channel " << c;
+    EXPECT_NEAR(without.pixel(40, 24)[c] - with.pixel(40, 24)[c], directionalSteps, 1.0)
+        << "in the directional light's shadow, channel " << c;
+  }
 }
 
 TEST(FeatureScenes, AttenuationIsPerLight) {

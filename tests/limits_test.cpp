@@ -109,8 +109,21 @@ TEST(LargeImage, Size16384RendersOnBothBackendsWithinTwiceTheImageSize) {
   }
 }
 
+// Waits (up to a minute) until vkrt's log shows the line of its test hook
+// (VKRT_TEST_WAIT_FOR_SIGNAL: interrupt.h), which it prints once it is in `stage` and waiting
+// for a signal. The signal sent after that cannot come too early or too late.
+::testing::AssertionResult waitingForSignal(const std::string& logPath, const std::string& stage) {
+  const std::string line = "vkrt: test hook: waiting for a signal during the " + stage;
+  for (int i = 0; i < 60000; ++i) {
+    if (readFile(logPath).find(line) != std::string::npos) return ::testing::AssertionSuccess();
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return ::testing::AssertionFailure() << "vkrt never got to the " << stage << ": " << readFile(logPath);
+}
+
 // A render stopped by SIGTERM or Ctrl-C (SIGINT) exits with 128 + the signal, says so, and
-// leaves the existing output as it was and no temporary file.
+// leaves the existing output as it was and no temporary file. The signal is sent while vkrt
+// waits for it in its first progress report, with most of the image still to render.
 TEST(Interrupt, DuringTheRenderLeavesTheOldImageAndNoTemporaryFile) {
   std::string dir = freshDir("interrupt/render");
   std::string scene = "size 3000 3000\ncamera 0 0 4 0 0 0 0 1 0 45\ndiffuse 0.5 0.5 0.5\nsphere 0 0 0 1\n";
@@ -120,37 +133,37 @@ TEST(Interrupt, DuringTheRenderLeavesTheOldImageAndNoTemporaryFile) {
   if (gpuContextOrSkip()) runs.emplace_back("vulkan", SIGINT);
   for (auto [backend, sig] : runs) {
     writeFile(dir + "/o.png", kPrecious);
-    Spawned p = spawnVkrt({"--backend", backend, "-o", dir + "/o.png", dir + "/slow.test"}, dir + "/log");
-    std::this_thread::sleep_for(std::chrono::milliseconds(700));
+    Spawned p = spawnVkrt({"--backend", backend, "-o", dir + "/o.png", dir + "/slow.test"}, dir + "/log",
+                          {"VKRT_TEST_WAIT_FOR_SIGNAL=render"});
+    EXPECT_TRUE(waitingForSignal(p.logPath, "render")) << backend;
     ::kill(p.pid, sig);
     auto t0 = std::chrono::steady_clock::now();
     Finished r = waitVkrt(p);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     EXPECT_EQ(r.exitCode, 128 + sig) << backend << ": " << r.output;
     EXPECT_NE(r.output.find("interrupted; nothing written"), std::string::npos) << r.output;
-    EXPECT_EQ(readFile(dir + "/o.png"), kPrecious) << backend;
+    EXPECT_TRUE(readFile(dir + "/o.png") == kPrecious) << backend << ": the old image was replaced";
     EXPECT_TRUE(leftovers(dir).empty()) << backend;
     std::printf("[ stats    ] %s stopped %.2f s after the signal\n", backend.c_str(), seconds);
   }
 }
 
-// Interrupted while the PNG is being written (the temporary file exists): the temporary file
-// goes, the old image stays.
+// Interrupted while the PNG is being written (the temporary file exists; vkrt waits for the
+// signal right after creating it): the temporary file goes, the old image stays.
 TEST(Interrupt, DuringTheWriteLeavesTheOldImageAndNoTemporaryFile) {
   std::string dir = freshDir("interrupt/write");
-  writeFile(dir + "/wide.test", "size 16384 8192\ncamera 0 0 4 0 0 0 0 1 0 45\n");   // empty: quick to render
+  writeFile(dir + "/small.test", "size 64 48\ncamera 0 0 4 0 0 0 0 1 0 45\nsphere 0 0 0 1\n");
   writeFile(dir + "/o.png", kPrecious);
-  Spawned p = spawnVkrt({"--backend", "cpu", "-q", "-o", dir + "/o.png", dir + "/wide.test"}, dir + "/log");
+  Spawned p = spawnVkrt({"--backend", "cpu", "-q", "-o", dir + "/o.png", dir + "/small.test"}, dir + "/log",
+                        {"VKRT_TEST_WAIT_FOR_SIGNAL=write"});
+  EXPECT_TRUE(waitingForSignal(p.logPath, "write"));
   bool sawTemporary = false;
-  for (int i = 0; i < 60000 && !sawTemporary; ++i) {
-    for (const std::string& f : leftovers(dir))
-      if (f.find(".png.tmp") != std::string::npos) sawTemporary = true;
-    if (!sawTemporary) std::this_thread::sleep_for(std::chrono::microseconds(500));
-  }
-  ASSERT_TRUE(sawTemporary) << "never saw the temporary file";
+  for (const std::string& f : leftovers(dir)) sawTemporary |= f.find(".png.tmp") != std::string::npos;
+  EXPECT_TRUE(sawTemporary) << "no temporary file while writing";
   ::kill(p.pid, SIGINT);
   Finished r = waitVkrt(p);
   EXPECT_EQ(r.exitCode, 128 + SIGINT) << r.output;
-  EXPECT_EQ(readFile(dir + "/o.png"), kPrecious);
+  EXPECT_NE(r.output.find("interrupted; nothing written"), std::string::npos) << r.output;
+  EXPECT_TRUE(readFile(dir + "/o.png") == kPrecious) << "the old image was replaced";
   EXPECT_TRUE(leftovers(dir).empty());
 }

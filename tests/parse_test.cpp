@@ -167,12 +167,3 @@ TEST(Parse, UpNeedNotBePerpendicular) {
   SceneDesc s = parseScene("size 4 4\ncamera 0 -4 4 0 -1 0 0 1 1 45\n", "t");
   EXPECT_EQ(s.camera.up, dvec3(0, 1, 1));
 }
-
-TEST(Parse, CourseScene7ParsesQuickly) {
-  // Smoke check of the token loop on a large generated file (timing is the benchmark's job).
-  std::string text = "size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\n";
-  for (int i = 0; i < 30000; ++i) text += "vertex 1.6831 3.0852 -0.9792\n";
-  for (int i = 0; i < 10000; ++i) text += "tri 0 1 2\n";
-  SceneDesc s = parseScene(text, "big");
-  EXPECT_EQ(s.triangles.size(), 10000u);
-}

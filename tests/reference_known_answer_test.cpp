@@ -1,8 +1,12 @@
 // Known-answer tests for the CPU reference: scenes whose pixels are computed by hand.
 // Values are chosen to be exact in binary, so the expected byte is floor(value * 255).
+#include <cmath>
+
 #include <gtest/gtest.h>
 
+#include "cpu/reference.h"
 #include "image/image.h"
+#include "scene/parse.h"
 #include "test_support.h"
 
 using namespace vkrt;
@@ -116,6 +120,28 @@ TEST(KnownAnswer, MaxDepthCountsReflections) {
   for (int d = 0; d <= 5; ++d)
     EXPECT_EQ(centre(renderText(kCentreCamera + "maxdepth " + std::to_string(d) + "\n" + mirrors)), expected[d])
         << "maxdepth " << d;
+}
+
+// The largest maxdepth the parser accepts: a million reflections between two parallel mirrors
+// (test_support.h), every one of them traced, the pixel the closed form of the geometric
+// series. Each channel's value lies at least 0.3 of a step from a byte boundary (checked),
+// far beyond double rounding, so the bytes are exact.
+TEST(KnownAnswer, AMillionReflectionsBetweenParallelMirrors) {
+  constexpr int kDepth = 1'000'000;
+  SceneDesc scene = parseScene(parallelMirrorsScene(kDepth), "mirrors.test");
+  ASSERT_EQ(scene.maxDepth, kDepth);
+  Bvh bvh = buildBvh(scene);
+  RayCounts rays;
+  Image img = renderReference(scene, bvh, CpuOptions{}, &rays);
+  EXPECT_EQ(rays.primary, 1u);
+  EXPECT_EQ(rays.reflection, static_cast<std::uint64_t>(kDepth));
+  EXPECT_EQ(rays.nonFinite, 0u);
+  for (int c = 0; c < 3; ++c) {
+    double steps = 255.0 * parallelMirrorsRadiance(kParallelMirrorChannels[c], kDepth);
+    ASSERT_GT(std::abs(steps - std::round(steps)), 0.3) << "channel " << c << " too near a byte boundary";
+    EXPECT_EQ(static_cast<int>(img.pixel(0, 0)[c]), static_cast<int>(steps))
+        << "channel " << c << ": 255 x radiance = " << steps;
+  }
 }
 
 TEST(KnownAnswer, MissIsBlack) {

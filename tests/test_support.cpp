@@ -2,6 +2,7 @@
 #include "test_support.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -151,6 +152,32 @@ Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget, VulkanTimings*
   EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";
   EXPECT_EQ(rays.nonFinite, 0u) << "the shader produced NaN or infinite colours";
   return image;
+}
+
+std::string parallelMirrorsScene(int maxDepth) {
+  auto exact = [](double v) {   // enough digits to read back the same double
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return std::string(buf);
+  };
+  std::string emission, specular;
+  for (const MirrorChannel& c : kParallelMirrorChannels) {
+    emission += " " + exact(c.emission);
+    specular += " " + exact(c.specular);
+  }
+  // Mirror A in z = 0 facing +z, mirror B in z = 10 facing -z; the ray runs along the z axis,
+  // through the inside of both triangles (away from their edges).
+  return "size 1 1\ncamera 0 0 5 0 0 0 0 1 0 30\nmaxdepth " + std::to_string(maxDepth) +
+         "\nambient 0 0 0\nemission" + emission + "\nspecular" + specular +
+         "\nvertex -10 -10 0\nvertex 10 -10 0\nvertex 0 10 0\ntri 0 1 2\n"
+         "vertex -10 -10 10\nvertex 10 -10 10\nvertex 0 10 10\ntri 3 5 4\n";
+}
+
+double parallelMirrorsRadiance(const MirrorChannel& c, int maxDepth) {
+  const double segments = maxDepth + 1.0;
+  if (c.specular == 1.0) return c.emission * segments;
+  // s^(D+1) through exp and log1p, which stay accurate for s near 1.
+  return c.emission * -std::expm1(segments * std::log1p(c.specular - 1.0)) / (1.0 - c.specular);
 }
 
 Spawned spawnVkrt(const std::vector<std::string>& args, const std::string& logPath,

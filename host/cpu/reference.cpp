@@ -1,5 +1,5 @@
-// CPU reference renderer. Double precision throughout; recursion for reflections (the
-// shader's loop is iterative, so the two are written differently on purpose).
+// CPU reference renderer. Double precision throughout; a plain loop over the mirror bounces
+// (the shader's is a suspendable state machine in float, written apart on purpose).
 #include "cpu/reference.h"
 
 #include <algorithm>
@@ -135,30 +135,26 @@ class Tracer {
     return found;
   }
 
-  dvec3 shade(const Ray& ray, int depth, double tMin, RayCounts& counts) const {
-    Hit hit;
-    if (!intersect(ray, tMin, kInf, false, hit)) return dvec3(0.0);
-    dvec3 p = ray.origin + hit.t * ray.dir;
-    dvec3 normal;
-    std::uint32_t materialIndex;
+  // The unit normal at hit point p (SPEC 4: never flipped toward the ray) and the material.
+  std::uint32_t surfaceAt(const Hit& hit, const dvec3& p, dvec3& normal) const {
     if (hit.prim & gpu::kPrimSphereBit) {
       const Sphere& s = scene_.spheres[hit.prim & ~gpu::kPrimSphereBit];
       dvec3 pObject = dvec3(s.objectFromWorld * glm::dvec4(p, 1.0));
       normal = glm::normalize(glm::transpose(glm::dmat3(s.objectFromWorld)) * (pObject - s.center));
-      materialIndex = s.material;
-    } else {
-      const Triangle& t = scene_.triangles[hit.prim];
-      if (t.smooth)
-        normal = glm::normalize((1.0 - hit.b1 - hit.b2) * t.n[0] + hit.b1 * t.n[1] + hit.b2 * t.n[2]);
-      else
-        normal = glm::normalize(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
-      materialIndex = t.material;
+      return s.material;
     }
-    const Material& m = scene_.materials[materialIndex];
-    const double offset = secondaryRayTMin((hit.prim & gpu::kPrimSphereBit) ? offsets_.spheres[hit.prim & ~gpu::kPrimSphereBit]
-                                                                            : offsets_.triangles[hit.prim],
-                                           p - frameOrigin_, p - scene_.camera.from);
-    dvec3 eye = -ray.dir;
+    const Triangle& t = scene_.triangles[hit.prim];
+    if (t.smooth)
+      normal = glm::normalize((1.0 - hit.b1 - hit.b2) * t.n[0] + hit.b1 * t.n[1] + hit.b2 * t.n[2]);
+    else
+      normal = glm::normalize(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
+    return t.material;
+  }
+
+  // A hit's own colour, everything of SPEC 5 but the mirror term: A + Em + the lights, each
+  // behind its shadow ray (which starts `offset` from p).
+  dvec3 localShading(const Material& m, const dvec3& p, const dvec3& normal, const dvec3& eye, double offset,
+                     RayCounts& counts) const {
     dvec3 color = m.ambient + m.emission;
     for (const Light& light : scene_.lights) {
       dvec3 toLight;
@@ -185,12 +181,41 @@ class Tracer {
       constexpr double kMax = std::numeric_limits<double>::max();
       color += glm::clamp(light.color / divisor, dvec3(-kMax), dvec3(kMax)) * lit;
     }
-    if (depth < scene_.maxDepth && m.specular != dvec3(0.0)) {
-      ++counts.reflection;
-      dvec3 r = ray.dir - 2.0 * glm::dot(ray.dir, normal) * normal;
-      color += m.specular * shade({p, glm::normalize(r)}, depth + 1, offset, counts);
-    }
     return color;
+  }
+
+  // The colour seen along a camera ray: SPEC section 5 with the mirror term unrolled into a
+  // loop. Segment k adds throughput_k * local_k, where local_k is its hit's own shading and
+  // throughput_k the product of the specular colours of the k hits before it, so
+  //   radiance = local_0 + s_0 local_1 + s_0 s_1 local_2 + ...   (at most maxDepth + 1 segments)
+  // which is the recursion I = local + S * I_R of SPEC 5, evaluated from the front (rounded
+  // unlike the nested form only in the last bits: every course and project scene gives the
+  // same bytes either way). The loop needs no stack, so every maxdepth the parser accepts
+  // (up to 1,000,000) is safe.
+  dvec3 trace(Ray ray, RayCounts& counts) const {
+    dvec3 radiance(0.0), throughput(1.0);
+    double tMin = 0.0;   // the primary ray starts at the camera; secondary rays at their offset
+    for (int depth = 0;; ++depth) {
+      Hit hit;
+      if (!intersect(ray, tMin, kInf, false, hit)) break;   // a miss is black
+      dvec3 p = ray.origin + hit.t * ray.dir;
+      dvec3 normal;
+      std::uint32_t materialIndex = surfaceAt(hit, p, normal);
+      const Material& m = scene_.materials[materialIndex];
+      const double offset =
+          secondaryRayTMin((hit.prim & gpu::kPrimSphereBit) ? offsets_.spheres[hit.prim & ~gpu::kPrimSphereBit]
+                                                            : offsets_.triangles[hit.prim],
+                           p - frameOrigin_, p - scene_.camera.from);
+      radiance += throughput * localShading(m, p, normal, -ray.dir, offset, counts);
+      // Possibly continue along the mirror direction.
+      if (depth >= scene_.maxDepth || m.specular == dvec3(0.0)) break;
+      ++counts.reflection;
+      throughput *= m.specular;
+      dvec3 r = ray.dir - 2.0 * glm::dot(ray.dir, normal) * normal;
+      ray = {p, glm::normalize(r)};
+      tMin = offset;
+    }
+    return radiance;
   }
 
   // SPEC section 3: the ray through the centre of pixel (column, row).
@@ -231,7 +256,7 @@ Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& 
       for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
           ++local.primary;
-          dvec3 c = tracer.shade(tracer.cameraRay(x, y), 0, 0.0, local);
+          dvec3 c = tracer.trace(tracer.cameraRay(x, y), local);
           std::uint8_t* px = image.pixel(x, y);
           for (int k = 0; k < 3; ++k) px[k] = radianceToByte(c[k]);
           if (!std::isfinite(c.x + c.y + c.z)) ++local.nonFinite;

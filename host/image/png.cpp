@@ -167,6 +167,7 @@ void writePngAtomic(const Image& image, const std::string& path) {
     mode_t mask = ::umask(0);
     ::umask(mask);
     ::fchmod(fd, 0666 & ~mask);
+    waitForSignalIfTesting("write");
     writePngStream(fd, image, path);
     if (::fsync(fd) != 0 && errno != EINVAL) throw IoError("cannot write '" + path + "': " + std::strerror(errno));
     int closed = ::close(fd);

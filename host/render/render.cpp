@@ -27,7 +27,10 @@ Image renderWithCpu(const RenderRequest& request, const SceneDesc& scene, Progre
   t0 = std::chrono::steady_clock::now();
   CpuOptions options;
   options.threads = request.threads;
-  options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
+  options.progress = [&progress](std::uint64_t done, std::uint64_t total) {
+    progress.update(done, total);
+    waitForSignalIfTesting("render");
+  };
   options.stop = [] { return pendingInterrupt() != 0; };
   report.backend = "cpu";
   report.threads = request.threads > 0 ? request.threads : static_cast<int>(std::thread::hardware_concurrency());
@@ -57,7 +60,10 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
   options.reads = request.reads;
   options.specialize = request.specialize;
   options.cutoff = request.cutoff;
-  options.progress = [&progress](std::uint64_t done, std::uint64_t total) { progress.update(done, total); };
+  options.progress = [&progress](std::uint64_t done, std::uint64_t total) {
+    progress.update(done, total);
+    waitForSignalIfTesting("render");
+  };
   options.stop = [] { return pendingInterrupt() != 0; };
   Image image = renderVulkan(context, gpuScene, options, &report.rays, &report.vulkan);
   report.renderSeconds = setup + secondsSince(t0);
