@@ -60,39 +60,46 @@ struct DisjointSets {
 };
 
 // Joins triangles that share a vertex position (exactly equal doubles), through an
-// open-addressing table from position to the first triangle seen there.
+// open-addressing table of corners (3 * triangle + k), the first corner seen at a position.
 void joinSharedVertices(const std::vector<Triangle>& triangles, DisjointSets& sets) {
+  constexpr std::uint32_t kEmpty = 0xFFFFFFFFu;
   std::size_t capacity = 16;
-  while (capacity < 6 * triangles.size()) capacity *= 2;
+  while (capacity < 2 * 3 * triangles.size()) capacity *= 2;
   struct Slot {
-    dvec3 p;
-    std::uint32_t triangle = 0xFFFFFFFFu;
+    std::uint32_t hash;            // the position's hash, checked before the position itself
+    std::uint32_t corner = kEmpty;
   };
   std::vector<Slot> table(capacity);
+  auto corner = [&triangles](std::uint32_t c) -> const dvec3& { return triangles[c / 3].p[c % 3]; };
   auto hash = [](const dvec3& p) {
-    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    std::uint64_t h = 0;
     for (int k = 0; k < 3; ++k) {
       double v = p[k] + 0.0;   // -0 and +0 alike
       std::uint64_t bits;
       std::memcpy(&bits, &v, sizeof bits);
-      h = (h ^ bits) * 0xBF58476D1CE4E5B9ull;
-      h ^= h >> 31;
+      h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
     }
-    return h;
+    h ^= h >> 31;   // the finish of splitmix64: every bit reaches the low bits used as the slot
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 27;
+    h *= 0x94D049BB133111EBull;
+    return h ^ (h >> 31);
   };
-  for (std::uint32_t i = 0; i < triangles.size(); ++i)
-    for (const dvec3& p : triangles[i].p) {
-      for (std::size_t s = hash(p) & (capacity - 1);; s = (s + 1) & (capacity - 1)) {
-        if (table[s].triangle == 0xFFFFFFFFu) {
-          table[s] = {p, i};
-          break;
-        }
-        if (table[s].p == p) {
-          sets.unite(table[s].triangle, i);
-          break;
-        }
+  for (std::uint32_t c = 0; c < 3 * triangles.size(); ++c) {
+    const dvec3& p = corner(c);
+    const std::uint64_t h = hash(p);
+    const std::uint32_t tag = static_cast<std::uint32_t>(h >> 32);
+    for (std::size_t s = h & (capacity - 1);; s = (s + 1) & (capacity - 1)) {
+      if (table[s].corner == kEmpty) {
+        table[s] = {tag, c};
+        break;
+      }
+      if (table[s].hash == tag && corner(table[s].corner) == p) {
+        sets.unite(table[s].corner / 3, c / 3);
+        break;
       }
     }
+  }
 }
 
 // A tree over boxes that answers "does any of them come within `margin` of this box?".
