@@ -1,12 +1,14 @@
-// vkrt command line: parse arguments, call renderSceneFile(), turn exceptions into exit codes.
+// vkrt command line: parse arguments, call renderSceneFile(), turn exceptions into exit
+// statuses (through reportError: host/cli/exit_status.h).
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "cli/exit_status.h"
 #include "cli/options.h"
 #include "gpu/context.h"
-#include "gpu/device_error.h"
 #include "image/png.h"
 #include "interrupt.h"
 #include "render/render.h"
@@ -14,7 +16,16 @@
 
 namespace {
 
-constexpr int kExitOk = 0, kExitUsage = 1, kExitScene = 2, kExitDevice = 3, kExitIo = 4, kExitDiffers = 5;
+using vkrt::kExitDiffers;
+using vkrt::kExitOk;
+
+// The scene's warnings, on stderr before the render starts; -q leaves them out.
+std::function<void(const std::vector<vkrt::Diagnostic>&)> warningPrinter(bool quiet) {
+  if (quiet) return nullptr;
+  return [](const std::vector<vkrt::Diagnostic>& warnings) {
+    for (const vkrt::Diagnostic& w : warnings) std::fprintf(stderr, "%s\n", w.format().c_str());
+  };
+}
 
 // The heatmap of --diff, when asked for.
 void writeHeatmap(const vkrt::Options& o, const vkrt::ImageDiff& diff) {
@@ -112,6 +123,7 @@ int compareBackends(const vkrt::Options& o) {
   for (int i = 0; i < 2; ++i) {
     vkrt::RenderRequest request = o.request;
     request.backend = backends[i];
+    request.onWarnings = warningPrinter(o.quiet || i > 0);   // the same scene twice: once
     vkrt::ProgressBar progress(!o.quiet && !o.json);
     images[i] = vkrt::renderSceneInMemory(request, progress, reports[i], false);
     if (!o.json && !o.quiet) printStats(request, reports[i]);
@@ -140,9 +152,8 @@ int main(int argc, char** argv) {
   vkrt::Options options;
   try {
     options = vkrt::parseOptions(std::vector<std::string>(argv + 1, argv + argc));
-  } catch (const vkrt::UsageError& e) {
-    std::fprintf(stderr, "vkrt: error: %s\n\n%s", e.what(), vkrt::usageText());
-    return kExitUsage;
+  } catch (...) {
+    return vkrt::reportError(std::current_exception(), {}, stderr);
   }
   if (options.help) {
     std::fputs(vkrt::usageText(), stdout);
@@ -166,10 +177,11 @@ int main(int argc, char** argv) {
     if (options.compare) return compareBackends(options);
     vkrt::ProgressBar progress(!options.quiet);
     vkrt::Image image;
+    options.request.onWarnings = warningPrinter(options.quiet);
     vkrt::RenderReport report =
         vkrt::renderSceneFile(options.request, progress, options.checkAgainst ? &image : nullptr);
     if (options.stats) printStats(options.request, report);
-    if (report.rays.nonFinite > 0)
+    if (report.rays.nonFinite > 0 && !options.quiet)
       std::fprintf(stderr,
                    "vkrt: warning: %llu pixels had a NaN or infinite colour (written as 0, or 1 for +infinity); "
                    "the scene has extreme values\n",
@@ -183,24 +195,7 @@ int main(int argc, char** argv) {
       return reportComparison(options, image, vkrt::readImage(*options.checkAgainst),
                               report.outputPath + " vs " + *options.checkAgainst);
     return kExitOk;
-  } catch (const vkrt::Interrupted& e) {
-    std::fprintf(stderr, "\nvkrt: interrupted; nothing written\n");
-    return 128 + e.signal();
-  } catch (const vkrt::SceneError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return kExitScene;
-  } catch (const vkrt::DeviceError& e) {
-    std::fprintf(stderr, "vkrt: error: %s\n", e.what());
-    return kExitDevice;
-  } catch (const vkrt::IoError& e) {
-    std::fprintf(stderr, "vkrt: error: %s\n", e.what());
-    return kExitIo;
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "vkrt: error: out of memory: %s needs more than the %llu MB this machine has available\n",
-                 options.request.scenePath.c_str(), vkrt::availableMemoryBytes() >> 20);
-    return kExitIo;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "vkrt: internal error: %s\n", e.what());
-    return 70;
+  } catch (...) {
+    return vkrt::reportError(std::current_exception(), {options.request.scenePath, options.quiet}, stderr);
   }
 }

@@ -1,7 +1,19 @@
 // The vkrt command line: options, exit statuses, messages, and what gets written where.
+#include <cstdio>
+#include <new>
+
+#include <sys/wait.h>
+
 #include <gtest/gtest.h>
 
+#include "cli/exit_status.h"
+#include "cli/options.h"
+#include "errors.h"
+#include "gpu/context.h"
+#include "gpu/device_error.h"
 #include "image/png.h"
+#include "interrupt.h"
+#include "scene/diagnostic.h"
 #include "test_support.h"
 
 using namespace vkrt;
@@ -19,6 +31,9 @@ TEST(Cli, HelpAndVersion) {
   EXPECT_EQ(h.exitCode, 0);
   EXPECT_NE(h.output.find("usage: vkrt [options] SCENE.test"), std::string::npos) << h.output;
   EXPECT_NE(h.output.find("--backend"), std::string::npos);
+  for (const char* line : {"--strict", "  2    scene error", "  3    device error", "  4    I/O error",
+                           "  6    out of memory", "  70   internal error", "128+N"})
+    EXPECT_NE(h.output.find(line), std::string::npos) << line << "\n" << h.output;
   RunResult v = runVkrt("--version");
   EXPECT_EQ(v.exitCode, 0);
   EXPECT_EQ(v.output.rfind("vkrt ", 0), 0u) << v.output;
@@ -77,4 +92,146 @@ TEST(Cli, NonTerminalGetsAPlainFinalLineAndNoProgressBar) {
   ASSERT_EQ(r.exitCode, 0);
   EXPECT_EQ(r.output.find('\r'), std::string::npos) << "progress bar drawn into a pipe";
   EXPECT_EQ(r.output.rfind("vkrt: wrote ", 0), 0u) << r.output;
+}
+
+// The scene's warnings go to stderr as FILE:LINE: warning: MESSAGE and the render goes on;
+// -q leaves them out.
+TEST(Cli, WarningsArePrintedAndTheRenderGoesOn) {
+  std::string dir = freshDir("cli/warnings");
+  writeFile(dir + "/s.test", kScene + "antialias 4\n");
+  RunResult r = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/s.test");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.rfind(dir + "/s.test:6: warning: unknown command 'antialias' (line skipped)\n", 0), 0u)
+      << r.output;
+  EXPECT_NE(r.output.find("vkrt: wrote"), std::string::npos) << r.output;
+  EXPECT_TRUE(fileExists(dir + "/o.png"));
+  RunResult q = runVkrt("-q --backend cpu -o " + dir + "/q.png " + dir + "/s.test");
+  EXPECT_EQ(q.exitCode, 0) << q.output;
+  EXPECT_EQ(q.output, "");
+  EXPECT_TRUE(fileExists(dir + "/q.png"));
+}
+
+// Pixels whose colour came out NaN or infinite: a warning, or with --strict an error (exit
+// 2) before anything is written.
+TEST(Cli, StrictRefusesNonFinitePixels) {
+  std::string dir = freshDir("cli/strict-nan");
+  writeFile(dir + "/s.test", "size 20 10\ncamera 0 0 5 0 0 0 0 1 0 45\nambient 1e308 1e308 1e308\n"
+                             "emission 1e308 0 0\nsphere 0 0 0 1\n");
+  RunResult r = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/s.test");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("vkrt: warning: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("pixels had a NaN or infinite colour"), std::string::npos) << r.output;
+  RunResult strict = runVkrt("--strict --backend cpu -o " + dir + "/strict.png " + dir + "/s.test");
+  EXPECT_EQ(strict.exitCode, 2) << strict.output;
+  EXPECT_NE(strict.output.find(dir + "/s.test: error: "), std::string::npos) << strict.output;
+  EXPECT_NE(strict.output.find("pixels had a NaN or infinite colour"), std::string::npos) << strict.output;
+  EXPECT_FALSE(fileExists(dir + "/strict.png"));
+}
+
+// Exit statuses that a run can provoke (0, 1 and 5 have tests of their own; 2: the parse
+// error and warning tests; 128+N: limits_test.cpp).
+TEST(ExitStatus, NoSuchVulkanDeviceIs3) {
+  std::string dir = freshDir("exit-status/device");
+  writeFile(dir + "/s.test", kScene);
+  // Without a Vulkan loader or driver the status is the same.
+  RunResult r = runVkrt("--backend vulkan --device no-such-gpu-xyz -o " + dir + "/o.png " + dir + "/s.test");
+  EXPECT_EQ(r.exitCode, 3) << r.output;
+  EXPECT_EQ(r.output.rfind("vkrt: error: ", 0), 0u) << r.output;
+  EXPECT_FALSE(fileExists(dir + "/o.png"));
+}
+
+TEST(ExitStatus, UnreadableFilesAre4) {
+  std::string dir = freshDir("exit-status/io");
+  writeFile(dir + "/s.test", kScene);
+  RunResult scene = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/missing.test");
+  EXPECT_EQ(scene.exitCode, 4) << scene.output;
+  RunResult check = runVkrt("-q --backend cpu -o " + dir + "/o.png " + dir + "/s.test --check " + dir + "/none.png");
+  EXPECT_EQ(check.exitCode, 4) << check.output;
+  EXPECT_NE(check.output.find("cannot read image"), std::string::npos) << check.output;
+}
+
+// Out of memory is exit 6 whenever it is found: before allocating (an image larger than the
+// memory available, refused up front; also limits_test.cpp), and when an allocation fails
+// mid-way (here the 768 MB image under a 500 MB address-space limit, past that check).
+TEST(ExitStatus, OutOfMemoryIs6WheneverFound) {
+  std::string dir = freshDir("exit-status/memory");
+  writeFile(dir + "/big.test", "size 16384 16384\ncamera 0 0 1 0 0 0 0 1 0 45\n");
+  RunResult before = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/big.test",
+                             "VKRT_TEST_MEMORY_AVAILABLE_MB=100");
+  EXPECT_EQ(before.exitCode, 6) << before.output;
+  EXPECT_NE(before.output.find("vkrt: error: out of memory: a 16384x16384 image"), std::string::npos)
+      << before.output;
+#if !defined(__SANITIZE_ADDRESS__)
+  // (AddressSanitizer reserves more address space than the limit, and ends the process
+  // itself when an allocation fails: this half runs in the plain build only.)
+  std::string cmd = "ulimit -v 500000 && exec env VKRT_TEST_MEMORY_AVAILABLE_MB=100000 '" +
+                    std::string(VKRT_BINARY) + "' --backend cpu --threads 1 -o '" + dir + "/o.png' '" + dir +
+                    "/big.test' 2>&1";
+  std::FILE* p = ::popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string output;
+  char buf[4096];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) output.append(buf, n);
+  int status = ::pclose(p);
+  ASSERT_TRUE(WIFEXITED(status)) << output;
+  EXPECT_EQ(WEXITSTATUS(status), 6) << output;
+  EXPECT_NE(output.find("vkrt: error: out of memory: " + dir + "/big.test needs more than"), std::string::npos)
+      << output;
+#endif
+  EXPECT_FALSE(fileExists(dir + "/o.png"));
+}
+
+namespace {
+
+// What reportError prints for `error`, and the status it returns.
+std::pair<int, std::string> reported(std::exception_ptr error, bool quiet = false) {
+  std::FILE* f = std::tmpfile();
+  int status = reportError(error, ErrorContext{"s.test", quiet}, f);
+  std::rewind(f);
+  std::string text;
+  char buf[4096];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+  std::fclose(f);
+  return {status, text};
+}
+
+}  // namespace
+
+// Every kind of error to its one status and its message; the statuses no run can provoke
+// on purpose (a bug, the device's memory) are checked here.
+TEST(ExitStatus, EachKindOfErrorHasOneStatus) {
+  using std::make_exception_ptr;
+  EXPECT_EQ(reported(make_exception_ptr(UsageError("bad option"))).first, 1);
+  auto scene = reported(make_exception_ptr(SceneError(
+      {{"s.test", 3, "unknown command 'x' (line skipped)", Severity::Warning}, {"s.test", 4, "rotate axis"}})));
+  EXPECT_EQ(scene.first, 2);
+  EXPECT_EQ(scene.second, "s.test:3: warning: unknown command 'x' (line skipped)\ns.test:4: error: rotate axis\n");
+  EXPECT_EQ(reported(make_exception_ptr(SceneError({{"s.test", 3, "w", Severity::Warning}, {"s.test", 4, "e"}})),
+                     true)
+                .second,
+            "s.test:4: error: e\n");
+  EXPECT_EQ(reported(make_exception_ptr(DeviceError("no Vulkan device"))),
+            std::make_pair(3, std::string("vkrt: error: no Vulkan device\n")));
+  EXPECT_EQ(reported(make_exception_ptr(IoError("cannot write"))).first, 4);
+  EXPECT_EQ(reported(make_exception_ptr(OutOfMemory("a big image"))),
+            std::make_pair(6, std::string("vkrt: error: out of memory: a big image\n")));
+  auto badAlloc = reported(make_exception_ptr(std::bad_alloc()));
+  EXPECT_EQ(badAlloc.first, 6);
+  EXPECT_EQ(badAlloc.second.rfind("vkrt: error: out of memory: s.test needs more", 0), 0u) << badAlloc.second;
+  EXPECT_EQ(reported(make_exception_ptr(InternalError("unfinished pixels"))),
+            std::make_pair(70, std::string("vkrt: internal error (a bug in vkrt): unfinished pixels\n")));
+  EXPECT_EQ(reported(make_exception_ptr(std::runtime_error("?"))).first, 70);
+  EXPECT_EQ(reported(make_exception_ptr(42)).first, 70);
+  EXPECT_EQ(reported(make_exception_ptr(Interrupted(15))).first, 143);
+}
+
+// A Vulkan call that runs out of memory, host or device, is out of memory (6), not a device
+// error (3).
+TEST(ExitStatus, VulkanOutOfMemoryIsOutOfMemory) {
+  EXPECT_THROW(checkVk(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory()", __FILE__, __LINE__), OutOfMemory);
+  EXPECT_THROW(checkVk(VK_ERROR_OUT_OF_HOST_MEMORY, "vkCreateBuffer()", __FILE__, __LINE__), OutOfMemory);
+  EXPECT_THROW(checkVk(VK_ERROR_DEVICE_LOST, "vkQueueSubmit()", __FILE__, __LINE__), DeviceError);
+  EXPECT_NO_THROW(checkVk(VK_SUCCESS, "vkQueueSubmit()", __FILE__, __LINE__));
 }

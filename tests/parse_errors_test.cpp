@@ -1,9 +1,11 @@
 // Every kind of bad input of SPEC section 8: the parser's located message, and through the
 // CLI: exit status 2, the message on stderr, no image written, an existing image untouched.
+#include <algorithm>
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
+#include "errors.h"
 #include "render/render.h"
 #include "scene/parse.h"
 #include "test_support.h"
@@ -30,17 +32,16 @@ std::vector<BadInput> badInputs() {
       {"Infinity", kOk + "sphere 0 0 0 inf\n", 3, "expected a finite number, got 'inf'"},
       {"Overflow", kOk + "translate 1e999 0 0\n", 3, "expected a finite number, got '1e999'"},
       {"MissingArgument", kOk + "vertex 1 2\n", 3, "'vertex' expects 3 arguments (x y z), got 2"},
-      {"ExtraArgument", kOk + "sphere 0 0 0 1 2\n", 3, "'sphere' expects 4 arguments (x y z radius), got 5"},
-      {"ArgumentToPush", kOk + "pushTransform 1\n", 3, "'pushTransform' takes no arguments"},
-      {"UnknownCommand", kOk + "spheres 0 0 0 1\n", 3, "unknown command 'spheres'"},
-      {"SizeAbsent", "camera 0 0 5 0 0 0 0 1 0 45\n", 1, "'camera' before 'size'"},
+      {"MissingOutputName", kOk + "output\n", 3, "'output' expects 1 argument (a file name without spaces), got 0"},
+      {"SizeAbsent", "camera 0 0 5 0 0 0 0 1 0 45\n", 1, "no 'size' command"},
       {"SizeAbsentEmptyFile", "", 1, "no 'size' command"},
       {"SizeZero", "size 0 48\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1, "expected an integer from 1 to 16384, got '0'"},
       {"SizeNegative", "size 64 -1\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1, "got '-1'"},
       {"SizeTooLarge", "size 100000 100000\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1, "from 1 to 16384, got '100000'"},
       {"SizeNotInteger", "size 64.5 48\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1, "got '64.5'"},
-      {"SizeNotFirst", "camera 0 0 5 0 0 0 0 1 0 45\nsize 64 48\n", 1, "the size command must come first"},
+      {"RepeatedSizeLastInvalid", kOk + "size 64 0\n", 3, "'size' argument 2: expected an integer from 1 to 16384"},
       {"NegativeMaxDepth", kOk + "maxdepth -1\n", 3, "expected a non-negative integer, got '-1'"},
+      {"NegativeMaxDepthInAnotherCase", kOk + "maxDepth -1\n", 3, "expected a non-negative integer, got '-1'"},
       {"IndexOutOfRange", kOk + "vertex 0 0 0\nvertex 1 0 0\ntri 0 1 2\n", 5,
        "'tri' index 2 out of range (2 vertices defined so far)"},
       {"NegativeIndex", kOk + "vertex 0 0 0\ntri 0 -1 0\n", 4, "'tri' index -1 out of range"},
@@ -58,6 +59,8 @@ std::vector<BadInput> badInputs() {
       {"MissingCamera", "size 64 48\nsphere 0 0 0 1\n\n", 3, "no 'camera' command"},
       {"OutputDirectoryMissing", kOk + "output no-such-dir/x.png\n", 3,
        "output directory 'no-such-dir' does not exist"},
+      {"OutputDirectoryMissingQuotedEscaped", kOk + "output caf\xC3\xA9/x.png\n", 3,
+       "output directory 'caf\\xC3\\xA9' does not exist"},
       {"OutputDirectoryNotWritable", kOk + "output /proc/vkrt-test.png\n", 3,
        "output directory '/proc' is not writable"},
       {"NotText", std::string("size 64 48\ncam\0era\n", 19), 2, "file is not text (byte 0x00 in column 4)"},
@@ -83,8 +86,10 @@ TEST_P(ParseError, ParserReportsFileLineAndMessage) {
     resolveOutput(s, std::nullopt);
     FAIL() << "no error for " << c.name;
   } catch (const SceneError& e) {
-    ASSERT_FALSE(e.diagnostics().empty());
-    const Diagnostic& d = e.diagnostics().front();
+    auto firstError = std::find_if(e.diagnostics().begin(), e.diagnostics().end(),
+                                   [](const Diagnostic& d) { return d.isError(); });
+    ASSERT_NE(firstError, e.diagnostics().end()) << e.what();
+    const Diagnostic& d = *firstError;
     EXPECT_EQ(d.file, "bad.test");
     EXPECT_EQ(d.line, c.line) << e.what();
     EXPECT_NE(d.message.find(c.message), std::string::npos) << "message: " << d.message;
@@ -126,14 +131,34 @@ TEST(ParseErrors, AllProblemsAreReportedInOneRun) {
     EXPECT_EQ(e.diagnostics()[2].line, 5);
     EXPECT_EQ(std::string(e.what()),
               "multi.test:3: error: 'vertex' expects 3 arguments (x y z), got 2\n"
-              "multi.test:4: error: unknown command 'foo'\n"
+              "multi.test:4: warning: unknown command 'foo' (line skipped)\n"
               "multi.test:5: error: rotate axis must not be zero");
   }
 }
 
+// With -q the errors are printed and the warnings beside them are not; with --strict the
+// warnings are errors and always printed.
+TEST(ParseErrors, QuietLeavesOutTheWarningsButNotTheErrors) {
+  std::string dir = freshDir("parse-errors/quiet");
+  writeFile(dir + "/bad.test", kOk + "foo\nrotate 0 0 0 1\n");
+  RunResult loud = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/bad.test");
+  EXPECT_EQ(loud.exitCode, 2) << loud.output;
+  EXPECT_NE(loud.output.find("bad.test:3: warning: unknown command 'foo'"), std::string::npos) << loud.output;
+  EXPECT_NE(loud.output.find("bad.test:4: error: rotate axis"), std::string::npos) << loud.output;
+  RunResult quiet = runVkrt("-q --backend cpu -o " + dir + "/o.png " + dir + "/bad.test");
+  EXPECT_EQ(quiet.exitCode, 2) << quiet.output;
+  EXPECT_EQ(quiet.output, dir + "/bad.test:4: error: rotate axis must not be zero\n");
+  RunResult strict = runVkrt("-q --strict --backend cpu -o " + dir + "/o.png " + dir + "/bad.test");
+  EXPECT_EQ(strict.exitCode, 2) << strict.output;
+  EXPECT_NE(strict.output.find("bad.test:3: error: unknown command 'foo' (line skipped) [--strict]"),
+            std::string::npos)
+      << strict.output;
+  EXPECT_FALSE(fileExists(dir + "/o.png"));
+}
+
 TEST(ParseErrors, ManyErrorsStopAtALimit) {
   std::string text = kOk;
-  for (int i = 0; i < 1000; ++i) text += "bogus\n";
+  for (int i = 0; i < 1000; ++i) text += "vertex 1\n";
   try {
     parseScene(text, "many.test");
     FAIL() << "no error";
@@ -143,8 +168,12 @@ TEST(ParseErrors, ManyErrorsStopAtALimit) {
   }
 }
 
-TEST(ParseErrors, MissingSceneFile) {
+// A scene file that cannot be read is an I/O error (exit 4), not a scene error.
+TEST(ParseErrors, MissingSceneFileIsAnIoError) {
   RunResult r = runVkrt("-q no-such-scene.test");
-  EXPECT_EQ(r.exitCode, 2) << r.output;
-  EXPECT_NE(r.output.find("no-such-scene.test: error: cannot open scene file"), std::string::npos) << r.output;
+  EXPECT_EQ(r.exitCode, 4) << r.output;
+  EXPECT_NE(r.output.find("vkrt: error: cannot open scene file 'no-such-scene.test': No such file or directory"),
+            std::string::npos)
+      << r.output;
+  EXPECT_THROW(parseSceneFile("no-such-scene.test"), IoError);
 }

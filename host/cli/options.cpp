@@ -31,6 +31,8 @@ const char* usageText() {
          "  --check REF.png        compare the rendered image with REF.png (exit 5 when it fails)\n"
          "  --compare              render with both backends (nothing written) and print each\n"
          "                         one's times and the difference between their images\n"
+         "  --strict               every warning is an error (exit 2, nothing written): the scene's\n"
+         "                         unknown commands, repeated commands and the like, NaN pixels\n"
          "\n"
          "comparison options (diff and --check):\n"
          "  --max-pixels-over S:L  fail when more than L pixels (a count, or a share with %,\n"
@@ -41,12 +43,21 @@ const char* usageText() {
          "  --diff FILE.png        write a heatmap of the differences, with its legend\n"
          "  --diff-scale N         differences of N/255 or more are red in the heatmap (default 16)\n"
          "\n"
-         "  -q, --quiet            print nothing but errors\n"
+         "  -q, --quiet            print nothing but errors (no warnings, no progress)\n"
          "  -h, --help             show this help\n"
          "  --version              show the version\n"
          "\n"
-         "exit status: 0 ok, 1 usage error, 2 scene error, 3 device error, 4 I/O error,\n"
-         "5 images differ beyond the thresholds, 128+N stopped by signal N\n";
+         "exit status:\n"
+         "  0    ok (warnings, if any, on stderr)\n"
+         "  1    usage error (the command line)\n"
+         "  2    scene error: the scene file cannot be rendered as meant (with --strict: any warning)\n"
+         "  3    device error: the Vulkan backend cannot render here (no driver or device, a failed\n"
+         "       call, a scene beyond its limits); --backend cpu may\n"
+         "  4    I/O error: a file cannot be read or written\n"
+         "  5    images differ beyond the thresholds (diff, --check, --compare)\n"
+         "  6    out of memory (host or device), also when found before allocating\n"
+         "  70   internal error: a bug in vkrt\n"
+         "  128+N  stopped by signal N (130: Ctrl-C, 143: SIGTERM); nothing written\n";
 }
 
 namespace {
@@ -156,6 +167,8 @@ Options parseOptions(const std::vector<std::string>& args) {
       o.heatmapPath = take(name);
     } else if (name == "--diff-scale") {
       o.heatmapScale = integerValue(name, take(name), 1, 255);
+    } else if (a == "--strict") {
+      o.request.strict = true;
     } else if (a == "--stats") {
       o.stats = true;
     } else if (a == "-q" || a == "--quiet") {

@@ -20,7 +20,7 @@ class UsageError : public std::runtime_error {
 struct Options {
   RenderRequest request;
   bool stats = false;
-  bool quiet = false;
+  bool quiet = false;            // print nothing but errors (warnings left out)
   bool help = false;
   bool version = false;
   bool listDevices = false;

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "errors.h"
 #include "gpu/device_error.h"
 #include "timing.h"
 
@@ -109,8 +110,12 @@ VkPhysicalDevice chooseDevice(const std::vector<VkPhysicalDevice>& devices, cons
 void checkVk(VkResult result, const char* expr, const char* file, int line) {
   if (result == VK_SUCCESS) return;
   const char* base = std::strrchr(file, '/');
-  throw DeviceError(std::string(expr) + " failed: " + vk::resultName(result) + " (" + (base ? base + 1 : file) + ":" +
-                    std::to_string(line) + ")");
+  std::string what = std::string(expr) + " failed: " + vk::resultName(result) + " (" + (base ? base + 1 : file) +
+                     ":" + std::to_string(line) + ")";
+  if (result == VK_ERROR_OUT_OF_HOST_MEMORY) throw OutOfMemory(what);
+  if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY)
+    throw OutOfMemory(what + ": the scene needs more memory than the device has (--backend cpu uses the host's)");
+  throw DeviceError(what);
 }
 
 const char* DeviceInfo::typeName() const {

@@ -10,7 +10,8 @@
 
 namespace vkrt {
 
-// Checks a VkResult; throws DeviceError naming the call, the result and where.
+// Checks a VkResult; throws DeviceError naming the call, the result and where (OutOfMemory
+// for VK_ERROR_OUT_OF_HOST_MEMORY and VK_ERROR_OUT_OF_DEVICE_MEMORY).
 #define VK_CHECK(expr) ::vkrt::checkVk((expr), #expr, __FILE__, __LINE__)
 void checkVk(VkResult result, const char* expr, const char* file, int line);
 

@@ -1,4 +1,6 @@
-// Errors of the Vulkan environment (no loader, no device, a failed call): exit status 3.
+// Errors of the Vulkan environment (no loader, no driver, no such device, a failed call) and
+// scenes beyond the Vulkan backend's or the device's limits: exit status 3. The scene itself
+// is valid, and --backend cpu renders it.
 #pragma once
 
 #include <stdexcept>

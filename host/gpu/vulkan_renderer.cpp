@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "gpu/compute_pipeline.h"
+#include "errors.h"
 #include "gpu/device_error.h"
 #include "timing.h"
 #include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
@@ -99,7 +100,8 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   // The shader packs a leaf's first primRef into 28 bits (kStackFirstMask).
   if (scene.bvh.primRefs.size() > gpu::kStackFirstMask)
     throw DeviceError("the scene has " + std::to_string(scene.bvh.primRefs.size()) +
-                      " primitives; the Vulkan backend takes at most " + std::to_string(gpu::kStackFirstMask));
+                      " primitives; the Vulkan backend takes at most " + std::to_string(gpu::kStackFirstMask) +
+                      " (--backend cpu has no such limit)");
 
   auto t0 = std::chrono::steady_clock::now();
   Buffer triangles = Buffer::withContents(context, scene.triangles);
@@ -155,7 +157,7 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   t.texelReads = options.reads == SceneReads::Texel || (options.reads == SceneReads::Auto && texelsFit);
   if (t.texelReads && !texelsFit)
     throw DeviceError("the scene is too large for texel-buffer reads on this device (limit " +
-                      std::to_string(maxTexels) + " texels); use storage-buffer reads");
+                      std::to_string(maxTexels) + " texels); use storage-buffer reads (--reads storage)");
   std::vector<VkDescriptorType> types(gpu::kBindingCount, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
   if (t.texelReads)
     std::fill(types.begin(), types.begin() + gpu::kBindingPixels, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
@@ -194,7 +196,7 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
       // Each round advances every unfinished pixel by the full step budget, and no pixel's
       // work is unbounded (maxdepth, lights and the BVH are finite): this is a bug guard.
       if (++rounds > kMaxRoundsPerBand)
-        throw DeviceError("internal error: pixels of rows " + std::to_string(y0) + "+ still unfinished after " +
+        throw InternalError("pixels of rows " + std::to_string(y0) + "+ still unfinished after " +
                           std::to_string(kMaxRoundsPerBand) + " dispatches");
       if (options.stop && options.stop()) return image;
       t0 = std::chrono::steady_clock::now();

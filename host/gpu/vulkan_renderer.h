@@ -42,7 +42,8 @@ struct VulkanTimings {
   std::string leftOut;             // the features compiled out, e.g. "spheres, specular (maxdepth 0)"
 };
 
-// Throws DeviceError.
+// Throws DeviceError (also for a scene beyond the backend's or the device's limits),
+// OutOfMemory, InternalError.
 Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options, RayCounts* rays,
                    VulkanTimings* timings);
 

@@ -108,7 +108,10 @@ void writePngStream(int fd, const Image& image, const std::string& path) {
   writeChunk(fd, "IHDR", header.data(), header.size(), path);
 
   z_stream z{};
-  if (deflateInit(&z, 1) != Z_OK) throw IoError("cannot write '" + path + "': zlib failed to start");
+  if (int rc = deflateInit(&z, 1); rc != Z_OK) {
+    if (rc == Z_MEM_ERROR) throw OutOfMemory("no memory for the PNG compressor writing '" + path + "'");
+    throw IoError("cannot write '" + path + "': zlib failed to start");
+  }
   std::vector<std::uint8_t> compressed(1u << 20);
   const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3;
   std::vector<std::uint8_t> filtered(rowBytes + 1), trial(rowBytes + 1);

@@ -1,18 +1,12 @@
 // PNG files: atomic writing (temporary file + rename) and reading (for tests and diffs).
 #pragma once
 
-#include <stdexcept>
 #include <string>
 
+#include "errors.h"
 #include "image/image.h"
 
 namespace vkrt {
-
-// A problem with files on disk: exit status 4.
-class IoError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // Throws IoError unless `path` can be created or replaced: its directory exists and is
 // writable, and `path` itself is not a directory.

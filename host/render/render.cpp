@@ -6,6 +6,7 @@
 #include <fstream>
 #include <thread>
 
+#include "errors.h"
 #include "gpu/vulkan_renderer.h"
 #include "image/png.h"
 #include "interrupt.h"
@@ -79,10 +80,20 @@ void checkImageFitsInMemory(const SceneDesc& scene) {
   if (have == 0) return;   // unknown: let the allocation decide
   const unsigned long long need = 3ULL * static_cast<unsigned>(scene.width) * static_cast<unsigned>(scene.height);
   if (need > have)
-    throw SceneError({{scene.sourcePath, scene.sizeLine,
-                       "a " + std::to_string(scene.width) + "x" + std::to_string(scene.height) + " image needs " +
-                           std::to_string(need >> 20) + " MB of memory, and this machine has " +
-                           std::to_string(have >> 20) + " MB available"}});
+    throw OutOfMemory("a " + std::to_string(scene.width) + "x" + std::to_string(scene.height) + " image (" +
+                      scene.sourcePath + ":" + std::to_string(scene.sizeLine) + ") needs " +
+                      std::to_string(need >> 20) + " MB, and this machine has " + std::to_string(have >> 20) +
+                      " MB available");
+}
+
+// --strict: pixels whose colour was NaN or infinite (the scene's extreme values) are an
+// error, reported before anything is written.
+void checkFinite(const RenderRequest& request, const SceneDesc& scene, const RenderReport& report) {
+  if (request.strict && report.rays.nonFinite > 0)
+    throw SceneError({{scene.sourcePath, 0,
+                       std::to_string(report.rays.nonFinite) +
+                           " pixels had a NaN or infinite colour: the scene has extreme values",
+                       Severity::Error}});
 }
 
 }  // namespace
@@ -107,7 +118,7 @@ std::string resolveOutput(const SceneDesc& scene, const std::optional<std::strin
     checkOutputWritable(scene.output);
   } catch (const IoError& e) {
     if (scene.outputLine == 0) throw;
-    throw SceneError({{scene.sourcePath, scene.outputLine, e.what()}});
+    throw SceneError({{scene.sourcePath, scene.outputLine, escapedBytes(e.what())}});   // the path is the file's
   }
   return scene.output;
 }
@@ -115,8 +126,10 @@ std::string resolveOutput(const SceneDesc& scene, const std::optional<std::strin
 Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
                           bool checkOutput) {
   auto t0 = std::chrono::steady_clock::now();
-  SceneDesc scene = parseSceneFile(request.scenePath);
+  ParsedScene parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict});
+  SceneDesc& scene = parsed.scene;
   report.parseSeconds = secondsSince(t0);
+  if (!parsed.warnings.empty() && request.onWarnings) request.onWarnings(parsed.warnings);
   if (request.maxDepth >= 0) scene.maxDepth = request.maxDepth;
   if (checkOutput) report.outputPath = resolveOutput(scene, request.output);
   checkImageFitsInMemory(scene);
@@ -131,6 +144,7 @@ Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, R
                                                 : renderWithVulkan(request, scene, progress, report);
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
+  checkFinite(request, scene, report);
   return image;
 }
 

@@ -3,12 +3,15 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cpu/reference.h"
 #include "gpu/vulkan_renderer.h"
 #include "render/progress.h"
+#include "scene/diagnostic.h"
 #include "scene/scene_desc.h"
 
 namespace vkrt {
@@ -27,6 +30,12 @@ struct RenderRequest {
   bool specialize = true;              // Vulkan: compile out what the scene does not use
   Cutoff cutoff = Cutoff::Auto;        // Vulkan: the exactness cut-off of the mirror loop
   int maxDepth = -1;                   // overrides the scene's `maxdepth` when >= 0
+  // Every warning is an error: the scene's (SPEC section 8), and pixels whose colour came
+  // out NaN or infinite (then no image is written).
+  bool strict = false;
+  // Called once with the scene's warnings, if it has any, after parsing and before the
+  // render starts (not called with --strict: they are errors then).
+  std::function<void(const std::vector<Diagnostic>&)> onWarnings;
 };
 
 struct RenderReport {
@@ -42,7 +51,8 @@ struct RenderReport {
 };
 
 // Throws SceneError (bad scene, including an unwritable `output`), IoError (files),
-// DeviceError (Vulkan), Interrupted.
+// DeviceError (Vulkan), OutOfMemory (also before allocating an image larger than the memory
+// available), InternalError, Interrupted.
 // `image`, when given, receives the rendered image (for --check).
 RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image = nullptr);
 

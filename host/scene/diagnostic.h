@@ -1,23 +1,55 @@
-// Located diagnostics for bad input: FILE:LINE: error: MESSAGE, collected then thrown once.
+// Located diagnostics for bad input: FILE:LINE: error|warning: MESSAGE. The parser collects
+// them; errors are thrown once, at the end, as one SceneError (SPEC section 8).
 #pragma once
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vkrt {
 
+// An error: the scene cannot be rendered as its author meant. A warning: it can, and the
+// message says how the line was read (skipped, accepted, the last one counts).
+enum class Severity { Warning, Error };
+
 struct Diagnostic {
   std::string file;
-  int line = 0;
+  int line = 0;   // 0: the file as a whole
   std::string message;
-  // FILE:LINE: error: MESSAGE (or FILE: error: MESSAGE for the file as a whole, line 0).
+  Severity severity = Severity::Error;
+
+  bool isError() const { return severity == Severity::Error; }
+  // FILE:LINE: error: MESSAGE (or FILE: warning: MESSAGE for the file as a whole, line 0).
   std::string format() const {
-    return file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": error: " + message;
+    return file + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+           (isError() ? ": error: " : ": warning: ") + message;
   }
 };
 
-// Every problem found in one scene file. what() lists them all, one per line.
+// `text` with every byte outside printable ASCII written as \xHH (a byte-order mark, a
+// control character, the bytes of UTF-8), so that a message never carries invisible or
+// terminal-controlling bytes.
+inline std::string escapedBytes(std::string_view text) {
+  static const char kHex[] = "0123456789ABCDEF";
+  std::string s;
+  s.reserve(text.size());
+  for (char ch : text) {
+    auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c < 0x7F) {
+      s += ch;
+    } else {
+      s += "\\x";
+      s += kHex[c >> 4];
+      s += kHex[c & 15];
+    }
+  }
+  return s;
+}
+
+// A scene that cannot be rendered. diagnostics() holds every problem found in the file, in
+// line order: at least one error, and the warnings beside them. what() lists them all, one
+// per line.
 class SceneError : public std::runtime_error {
  public:
   explicit SceneError(std::vector<Diagnostic> diagnostics)

@@ -2,6 +2,7 @@
 // Parser-only state (transform stack, current material, vertex lists) stays in this file.
 #include "scene/parse.h"
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -14,13 +15,61 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "errors.h"
 #include "scene/number.h"
 
 namespace vkrt {
 namespace {
 
-constexpr std::size_t kMaxDiagnostics = 50;
+constexpr int kMaxErrors = 50;
 constexpr int kMaxArgs = 10;   // camera has the most
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+
+// The commands of the format. kCommandNames spells them as the format does, in this order,
+// which is also the order of lookup: the commands of big meshes first.
+enum class Command {
+  Vertex, Tri, VertexNormal, TriNormal, Size, MaxDepth, Output, Camera, Sphere, MaxVerts, MaxVertNorms,
+  Translate, Rotate, Scale, PushTransform, PopTransform, Directional, Point, Attenuation, Ambient, Diffuse,
+  Specular, Emission, Shininess, Count
+};
+constexpr std::string_view kCommandNames[] = {
+    "vertex", "tri", "vertexnormal", "trinormal", "size", "maxdepth", "output", "camera", "sphere", "maxverts",
+    "maxvertnorms", "translate", "rotate", "scale", "pushTransform", "popTransform", "directional", "point",
+    "attenuation", "ambient", "diffuse", "specular", "emission", "shininess"};
+static_assert(std::size(kCommandNames) == static_cast<std::size_t>(Command::Count));
+
+std::string_view nameOf(Command c) { return kCommandNames[static_cast<std::size_t>(c)]; }
+
+std::optional<Command> commandNamed(std::string_view name) {
+  for (std::size_t i = 0; i < std::size(kCommandNames); ++i)
+    if (kCommandNames[i] == name) return static_cast<Command>(i);
+  return std::nullopt;
+}
+
+char lowerAscii(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+
+bool equalIgnoringCase(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
+                                            [](char x, char y) { return lowerAscii(x) == lowerAscii(y); });
+}
+
+// `maxDepth`, `pushtransform`: a command in another case (no two commands differ only in case).
+std::optional<Command> commandNamedIgnoringCase(std::string_view name) {
+  for (std::size_t i = 0; i < std::size(kCommandNames); ++i)
+    if (equalIgnoringCase(kCommandNames[i], name)) return static_cast<Command>(i);
+  return std::nullopt;
+}
+
+// A token as messages quote it: in quotes, its non-printable bytes escaped.
+std::string quoted(std::string_view token) { return "'" + escapedBytes(token) + "'"; }
+
+// The kinds of warning (SPEC section 8); each kind is summarised after kMaxWarningsPerKind.
+enum class WarningKind { UnknownCommand, KeywordCase, ExtraArguments, Repeated, BeforeSize, OutputName, Count };
+constexpr const char* kWarningKindNames[] = {
+    "unknown commands", "keywords in another case", "extra arguments", "repeated commands",
+    "commands before 'size'", "output names"};
+static_assert(std::size(kWarningKindNames) == static_cast<std::size_t>(WarningKind::Count));
+constexpr std::size_t kWarningKinds = static_cast<std::size_t>(WarningKind::Count);
 
 // What each byte is to the tokenizer: one table lookup per byte.
 enum ByteClass : unsigned char { kToken, kBlank, kComment, kBinary };
@@ -51,15 +100,20 @@ glm::dmat3 normalMatrix(const dmat4& m) {
 
 class Parser {
  public:
-  Parser(std::string_view text, const std::string& fileName) : text_(text) {
+  Parser(std::string_view text, const std::string& fileName, const ParseOptions& options)
+      : text_(text), options_(options) {
     scene_.sourcePath = fileName;
   }
 
-  SceneDesc run() {
+  ParsedScene run() {
     reserveArrays();
     parseLines();
-    if (!diagnostics_.empty()) throw SceneError(std::move(diagnostics_));
-    return std::move(scene_);
+    if (!binary_) summariseWarnings();
+    // Deferred diagnostics (the end of file, summaries) go to their lines.
+    std::stable_sort(diagnostics_.begin(), diagnostics_.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) { return a.line < b.line; });
+    if (errorCount_ > 0) throw SceneError(std::move(diagnostics_));
+    return {std::move(scene_), std::move(diagnostics_)};
   }
 
  private:
@@ -84,13 +138,15 @@ class Parser {
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02X", c);
     diagnostics_.clear();
+    errorCount_ = 0;
     error(std::string("file is not text (byte ") + hex + " in column " + std::to_string(column) +
           "); expected a CSE167 scene file");
     binary_ = true;
   }
 
   void parseLines() {
-    std::size_t pos = 0;
+    // A UTF-8 byte-order mark (some Windows editors write one) is not part of the first line.
+    std::size_t pos = text_.substr(0, kByteOrderMark.size()) == kByteOrderMark ? kByteOrderMark.size() : 0;
     while (pos < text_.size() && !tooMany()) {
       std::size_t end = text_.find('\n', pos);
       if (end == std::string_view::npos) end = text_.size();
@@ -103,14 +159,44 @@ class Parser {
   }
 
   // ---- diagnostics --------------------------------------------------------------------------
-  bool tooMany() const { return diagnostics_.size() >= kMaxDiagnostics; }
+  bool tooMany() const { return errorCount_ >= kMaxErrors; }
 
   void error(std::string message) { errorAt(line_, std::move(message)); }
   void errorAt(int line, std::string message) {
     if (tooMany()) return;
-    diagnostics_.push_back({scene_.sourcePath, line, std::move(message)});
-    if (tooMany())
-      diagnostics_.push_back({scene_.sourcePath, line, "too many errors; stopping here"});
+    diagnostics_.push_back({scene_.sourcePath, line, std::move(message), Severity::Error});
+    if (++errorCount_ == kMaxErrors)
+      diagnostics_.push_back({scene_.sourcePath, line, "too many errors; stopping here", Severity::Error});
+  }
+
+  // A warning (with --strict, an error). After kMaxWarningsPerKind of its kind, only counted.
+  void warn(WarningKind kind, std::string message) { warnAt(line_, kind, std::move(message)); }
+  void warnAt(int line, WarningKind kind, std::string message) {
+    const auto k = static_cast<std::size_t>(kind);
+    if (++warnings_[k] > kMaxWarningsPerKind) {
+      if (suppressedFrom_[k] == 0) suppressedFrom_[k] = line;
+      suppressedTo_[k] = line;
+      return;
+    }
+    if (options_.strict) return errorAt(line, std::move(message) + " [--strict]");
+    diagnostics_.push_back({scene_.sourcePath, line, std::move(message), Severity::Warning});
+  }
+
+  // "... and N more of this kind", one per kind that went over the limit, at the first line
+  // not listed.
+  void summariseWarnings() {
+    for (std::size_t k = 0; k < kWarningKinds; ++k) {
+      if (warnings_[k] <= kMaxWarningsPerKind) continue;
+      const int more = warnings_[k] - kMaxWarningsPerKind;
+      std::string lines = more == 1 ? "on line " + std::to_string(suppressedFrom_[k])
+                                    : "on lines " + std::to_string(suppressedFrom_[k]) + " to " +
+                                          std::to_string(suppressedTo_[k]);
+      diagnostics_.push_back({scene_.sourcePath, suppressedFrom_[k],
+                              "... and " + std::to_string(more) + " more of this kind (" + kWarningKindNames[k] +
+                                  "), " + lines + (options_.strict ? " [--strict]" : ""),
+                              options_.strict ? Severity::Error : Severity::Warning});
+      if (options_.strict) ++errorCount_;
+    }
   }
 
   // ---- one line -------------------------------------------------------------------------------
@@ -141,59 +227,90 @@ class Parser {
     dispatch(command);
   }
 
-  void dispatch(std::string_view cmd) {
-    if (!sawSize_ && !sizeErrorReported_ && cmd != "size") {
-      error("'" + std::string(cmd) + "' before 'size': the size command must come first");
-      sizeErrorReported_ = true;
+  // Commands of other courses' extensions are skipped, and a known keyword in another case
+  // is read as that keyword, each with a warning (SPEC section 8).
+  void dispatch(std::string_view name) {
+    std::optional<Command> cmd = commandNamed(name);
+    if (!cmd) {
+      cmd = commandNamedIgnoringCase(name);
+      if (!cmd) return warn(WarningKind::UnknownCommand, "unknown command " + quoted(name) + " (line skipped)");
+      warn(WarningKind::KeywordCase, quoted(name) + " read as '" + std::string(nameOf(*cmd)) +
+                                         "' (keywords are case-sensitive)");
     }
-    // The commands of big meshes first.
-    if (cmd == "vertex") return cmdVertex();
-    if (cmd == "tri") return cmdTri();
-    if (cmd == "size") return cmdSize();
-    if (cmd == "maxdepth") return cmdMaxDepth();
-    if (cmd == "output") return cmdOutput();
-    if (cmd == "camera") return cmdCamera();
-    if (cmd == "sphere") return cmdSphere();
-    if (cmd == "maxverts" || cmd == "maxvertnorms") return cmdSizeHint(cmd);
-    if (cmd == "vertex") return cmdVertex();
-    if (cmd == "vertexnormal") return cmdVertexNormal();
-    if (cmd == "tri") return cmdTri();
-    if (cmd == "trinormal") return cmdTriNormal();
-    if (cmd == "translate") return cmdTranslate();
-    if (cmd == "rotate") return cmdRotate();
-    if (cmd == "scale") return cmdScale();
-    if (cmd == "pushTransform") return cmdPush();
-    if (cmd == "popTransform") return cmdPop();
-    if (cmd == "directional" || cmd == "point") return cmdLight(cmd == "point");
-    if (cmd == "attenuation") return cmdAttenuation();
-    if (cmd == "ambient") return cmdColor(cmd, material_.ambient);
-    if (cmd == "diffuse") return cmdColor(cmd, material_.diffuse);
-    if (cmd == "specular") return cmdColor(cmd, material_.specular);
-    if (cmd == "emission") return cmdColor(cmd, material_.emission);
-    if (cmd == "shininess") return cmdShininess();
-    error("unknown command '" + std::string(cmd) + "'");
+    if (!sawSize_ && beforeSizeLine_ == 0 && *cmd != Command::Size) {
+      beforeSizeLine_ = line_;
+      beforeSizeCommand_ = nameOf(*cmd);
+    }
+    switch (*cmd) {
+      case Command::Vertex: return cmdVertex();
+      case Command::Tri: return cmdTri();
+      case Command::VertexNormal: return cmdVertexNormal();
+      case Command::TriNormal: return cmdTriNormal();
+      case Command::Size: return cmdSize();
+      case Command::MaxDepth: return cmdMaxDepth();
+      case Command::Output: return cmdOutput();
+      case Command::Camera: return cmdCamera();
+      case Command::Sphere: return cmdSphere();
+      case Command::MaxVerts:
+      case Command::MaxVertNorms: return cmdSizeHint(nameOf(*cmd));
+      case Command::Translate: return cmdTranslate();
+      case Command::Rotate: return cmdRotate();
+      case Command::Scale: return cmdScale();
+      case Command::PushTransform: return cmdPush();
+      case Command::PopTransform: return cmdPop();
+      case Command::Directional: return cmdLight(false);
+      case Command::Point: return cmdLight(true);
+      case Command::Attenuation: return cmdAttenuation();
+      case Command::Ambient: return cmdColor("ambient", material_.ambient);
+      case Command::Diffuse: return cmdColor("diffuse", material_.diffuse);
+      case Command::Specular: return cmdColor("specular", material_.specular);
+      case Command::Emission: return cmdColor("emission", material_.emission);
+      case Command::Shininess: return cmdShininess();
+      case Command::Count: break;
+    }
+  }
+
+  // A repeated `size`, `camera`, `maxdepth` or `output`: the last one counts. `previousLine`
+  // is the line of the one before (0: none).
+  void noteRepeat(std::string_view cmd, int previousLine) {
+    if (previousLine > 0)
+      warn(WarningKind::Repeated, "'" + std::string(cmd) + "' given again (before at line " +
+                                      std::to_string(previousLine) + "): the last one counts");
   }
 
   // ---- arguments --------------------------------------------------------------------------
-  // Checks the argument count and parses every argument as a finite number.
+  // More arguments than `cmd` takes: the first `n` are read, the rest ignored.
+  void ignoreExtraArguments(std::string_view cmd, int n, const char* usage) {
+    if (argCount_ <= n) return;
+    const int extra = argCount_ - n;
+    std::string takes = n == 0 ? "takes no arguments"
+                               : "takes " + std::to_string(n) + " argument" + (n == 1 ? "" : "s") + " (" + usage + ")";
+    std::string ignored = extra == 1 ? std::string("the extra one is ignored")
+                                     : "the extra " + std::to_string(extra) + " are ignored";
+    warn(WarningKind::ExtraArguments,
+         "'" + std::string(cmd) + "' " + takes + ", got " + std::to_string(argCount_) + ": " + ignored);
+  }
+
+  // Checks the argument count and parses the first `n` arguments as finite numbers.
   bool numbers(std::string_view cmd, int n, const char* usage, double* out) {
-    if (argCount_ != n) {
+    if (argCount_ < n) {
       error("'" + std::string(cmd) + "' expects " + std::to_string(n) + " argument" + (n == 1 ? "" : "s") +
             " (" + usage + "), got " + std::to_string(argCount_));
       return false;
     }
+    ignoreExtraArguments(cmd, n, usage);
     bool ok = true;
     for (int k = 0; k < n; ++k) {
       switch (parseNumber(args_[k], out[k])) {
         case NumberStatus::Ok: break;
         case NumberStatus::NotANumber:
-          error("'" + std::string(cmd) + "' argument " + std::to_string(k + 1) + ": expected a number, got '" +
-                std::string(args_[k]) + "'");
+          error("'" + std::string(cmd) + "' argument " + std::to_string(k + 1) + ": expected a number, got " +
+                quoted(args_[k]));
           ok = false;
           break;
         case NumberStatus::NotFinite:
           error("'" + std::string(cmd) + "' argument " + std::to_string(k + 1) +
-                ": expected a finite number, got '" + std::string(args_[k]) + "'");
+                ": expected a finite number, got " + quoted(args_[k]));
           ok = false;
           break;
       }
@@ -206,7 +323,7 @@ class Parser {
                                    long long hi) {
     if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi)) {
       error("'" + std::string(cmd) + "' argument " + std::to_string(argIndex + 1) + ": expected " + what +
-            ", got '" + std::string(args_[argIndex]) + "'");
+            ", got " + quoted(args_[argIndex]));
       return std::nullopt;
     }
     return static_cast<long long>(v);
@@ -215,12 +332,9 @@ class Parser {
   // ---- commands ---------------------------------------------------------------------------
   void cmdSize() {
     double a[2];
-    if (sawSize_) {
-      error("'size' given again (first at line " + std::to_string(sizeLine_) + ")");
-      return;
-    }
+    noteRepeat("size", scene_.sizeLine);
+    if (!sawSize_) firstSizeLine_ = line_;
     sawSize_ = true;
-    sizeLine_ = line_;
     scene_.sizeLine = line_;
     if (!numbers("size", 2, "width height", a)) return;
     const std::string range = "an integer from 1 to " + std::to_string(kMaxImageEdge);
@@ -234,22 +348,35 @@ class Parser {
 
   void cmdMaxDepth() {
     double a[1];
+    noteRepeat("maxdepth", maxDepthLine_);
+    maxDepthLine_ = line_;
     if (!numbers("maxdepth", 1, "depth", a)) return;
     if (auto d = integer("maxdepth", a[0], 0, "a non-negative integer", 0, 1'000'000))
       scene_.maxDepth = static_cast<int>(*d);
   }
 
   void cmdOutput() {
-    if (argCount_ != 1) {
-      error("'output' expects 1 argument (a file name without spaces), got " + std::to_string(argCount_));
+    const char* usage = "a file name without spaces";
+    noteRepeat("output", scene_.outputLine);
+    if (argCount_ < 1) {
+      error(std::string("'output' expects 1 argument (") + usage + "), got 0");
       return;
     }
-    scene_.output = std::string(args_[0]);
+    ignoreExtraArguments("output", 1, usage);
+    std::string_view name = args_[0];
+    std::string_view base = name.substr(name.find_last_of('/') + 1);   // npos + 1 == 0
+    std::size_t dot = base.rfind('.');
+    if (dot == std::string_view::npos || !equalIgnoringCase(base.substr(dot + 1), "png"))
+      warn(WarningKind::OutputName, "output file " + quoted(name) +
+                                        " is not named .png: vkrt writes PNG only, and writes it under that name");
+    scene_.output = std::string(name);
     scene_.outputLine = line_;
   }
 
   void cmdCamera() {
     double a[10];
+    noteRepeat("camera", cameraLine_);
+    cameraLine_ = line_;
     if (!numbers("camera", 10, "fromx fromy fromz atx aty atz upx upy upz fovy", a)) return;
     Camera c{{a[0], a[1], a[2]}, {a[3], a[4], a[5]}, {a[6], a[7], a[8]}, a[9]};
     bool ok = true;
@@ -265,11 +392,10 @@ class Parser {
       ok = false;
     }
     if (!(c.fovyDegrees > 0.0 && c.fovyDegrees < 180.0)) {
-      error("camera field of view must be in (0, 180) degrees, got " + std::string(args_[9]));
+      error("camera field of view must be in (0, 180) degrees, got " + quoted(args_[9]));
       ok = false;
     }
     if (ok) scene_.camera = c;
-    sawCamera_ = true;
   }
 
   std::uint32_t currentMaterial() {
@@ -282,7 +408,7 @@ class Parser {
     double a[4];
     if (!numbers("sphere", 4, "x y z radius", a)) return;
     if (a[3] < 0.0) {
-      error("sphere radius must not be negative, got " + std::string(args_[3]));
+      error("sphere radius must not be negative, got " + quoted(args_[3]));
       return;
     }
     if (glm::determinant(glm::dmat3(transform_)) == 0.0) {
@@ -328,7 +454,7 @@ class Parser {
     bool ok = true;
     for (int k = 0; k < 3; ++k) {
       if (a[k] != std::floor(a[k]) || a[k] < 0.0 || a[k] >= static_cast<double>(available)) {
-        error("'" + std::string(cmd) + "' index " + std::string(args_[k]) + " out of range (" +
+        error("'" + std::string(cmd) + "' index " + escapedBytes(args_[k]) + " out of range (" +
               std::to_string(available) + " " + listName + " defined so far)");
         ok = false;
       } else {
@@ -400,12 +526,12 @@ class Parser {
   }
 
   void cmdPush() {
-    if (argCount_ != 0) return error("'pushTransform' takes no arguments, got " + std::to_string(argCount_));
+    ignoreExtraArguments("pushTransform", 0, "");
     stack_.push_back(transform_);
   }
 
   void cmdPop() {
-    if (argCount_ != 0) return error("'popTransform' takes no arguments, got " + std::to_string(argCount_));
+    ignoreExtraArguments("popTransform", 0, "");
     if (stack_.empty()) return error("popTransform with an empty transform stack (no matching pushTransform)");
     transform_ = stack_.back();
     stack_.pop_back();
@@ -450,25 +576,36 @@ class Parser {
   void cmdShininess() {
     double a[1];
     if (!numbers("shininess", 1, "s", a)) return;
-    if (a[0] < 0.0) return error("shininess must not be negative, got " + std::string(args_[0]));
+    if (a[0] < 0.0) return error("shininess must not be negative, got " + quoted(args_[0]));
     material_.shininess = a[0];
   }
 
   // ---- end of file ------------------------------------------------------------------------
   void finish() {
     int last = line_ > 0 ? line_ : 1;
-    if (!sawSize_) errorAt(1, "no 'size' command: the file must start with 'size WIDTH HEIGHT'");
-    if (!sawCamera_) errorAt(last, "no 'camera' command in the scene");
+    if (!sawSize_) errorAt(1, "no 'size' command: the image size must be given ('size WIDTH HEIGHT')");
+    if (cameraLine_ == 0) errorAt(last, "no 'camera' command in the scene");
+    // The course's files put `size` first; its absence altogether is the error above.
+    if (sawSize_ && beforeSizeLine_ > 0)
+      warnAt(beforeSizeLine_, WarningKind::BeforeSize,
+             "'" + std::string(beforeSizeCommand_) + "' before 'size' (line " + std::to_string(firstSizeLine_) +
+                 "): accepted, though the format puts 'size' first");
     // Unbalanced pushTransforms at the end are valid (SPEC section 8).
   }
 
   std::string_view text_;
+  ParseOptions options_;
   SceneDesc scene_;
-  std::vector<Diagnostic> diagnostics_;
+  std::vector<Diagnostic> diagnostics_;   // errors and warnings, as found
+  int errorCount_ = 0;
+  std::array<int, kWarningKinds> warnings_{}, suppressedFrom_{}, suppressedTo_{};   // per WarningKind
   int line_ = 0;
   bool binary_ = false;
-  bool sawSize_ = false, sizeErrorReported_ = false, sawCamera_ = false;
-  int sizeLine_ = 0;
+  bool sawSize_ = false;
+  int firstSizeLine_ = 0;
+  int cameraLine_ = 0, maxDepthLine_ = 0;   // 0: not seen yet (the scene keeps the others)
+  int beforeSizeLine_ = 0;                  // the first command before `size`
+  std::string_view beforeSizeCommand_;
   const std::string_view* args_ = nullptr;
   int argCount_ = 0;
 
@@ -482,13 +619,19 @@ class Parser {
 
 }  // namespace
 
-SceneDesc parseScene(std::string_view text, const std::string& fileName) {
-  return Parser(text, fileName).run();
+ParsedScene parseSceneWithWarnings(std::string_view text, const std::string& fileName, const ParseOptions& options) {
+  return Parser(text, fileName, options).run();
 }
 
-SceneDesc parseSceneFile(const std::string& path) {
+SceneDesc parseScene(std::string_view text, const std::string& fileName) {
+  return parseSceneWithWarnings(text, fileName).scene;
+}
+
+SceneDesc parseSceneFile(const std::string& path) { return parseSceneFileWithWarnings(path).scene; }
+
+ParsedScene parseSceneFileWithWarnings(const std::string& path, const ParseOptions& options) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!f) throw SceneError({{path, 0, "cannot open scene file: " + std::string(std::strerror(errno))}});
+  if (!f) throw IoError("cannot open scene file '" + path + "': " + std::strerror(errno));
   // One read of the whole file into a buffer of its size (no regrowth, no copies).
   std::string text;
   struct stat st {};
@@ -499,8 +642,8 @@ SceneDesc parseSceneFile(const std::string& path) {
   std::size_t n;
   while ((n = std::fread(buf, 1, sizeof buf, f.get())) > 0) text.append(buf, n);   // grew, or not a regular file
   if (std::ferror(f.get()))
-    throw SceneError({{path, 0, "cannot read scene file: " + std::string(std::strerror(errno))}});
-  return parseScene(text, path);
+    throw IoError("cannot read scene file '" + path + "': " + std::strerror(errno));
+  return parseSceneWithWarnings(text, path, options);
 }
 
 }  // namespace vkrt

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/diagnostic.h"
 #include "scene/scene_desc.h"
@@ -13,11 +14,32 @@ namespace vkrt {
 // Largest image edge we accept, in pixels (and so the largest image: 16384 x 16384).
 inline constexpr int kMaxImageEdge = 16384;
 
-// Parses scene text. `fileName` is used in diagnostics only. Throws SceneError holding
-// every problem found (it reads on after each one).
-SceneDesc parseScene(std::string_view text, const std::string& fileName);
+// After this many warnings of one kind (unknown commands, repeated commands, ...) the rest
+// of that kind are summarised in one more: "... and N more of this kind".
+inline constexpr int kMaxWarningsPerKind = 3;
 
-// Reads and parses a file. An unreadable file is a SceneError at line 0.
+struct ParseOptions {
+  bool strict = false;   // every warning is an error (for graders and CI)
+};
+
+struct ParsedScene {
+  SceneDesc scene;
+  // What the file does that the format does not say but vkrt accepts (SPEC section 8),
+  // in line order: each says how its line was read. Empty for a clean file.
+  std::vector<Diagnostic> warnings;
+};
+
+// Parses scene text. `fileName` is used in diagnostics only. Throws SceneError holding every
+// diagnostic, warnings included, when there is an error (with `strict`: a warning); it reads
+// on after each one.
+ParsedScene parseSceneWithWarnings(std::string_view text, const std::string& fileName,
+                                   const ParseOptions& options = {});
+
+// Reads and parses a file. Throws IoError when it cannot be opened or read.
+ParsedScene parseSceneFileWithWarnings(const std::string& path, const ParseOptions& options = {});
+
+// The same, for callers with no use for warnings (tests, tools): the warnings are dropped.
+SceneDesc parseScene(std::string_view text, const std::string& fileName);
 SceneDesc parseSceneFile(const std::string& path);
 
 }  // namespace vkrt

@@ -1,0 +1,32 @@
+// The exit statuses of `vkrt`, one meaning each, and the one place that turns an error into
+// its status and its message. Documented in `vkrt --help` and the README ("Usage").
+#pragma once
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+namespace vkrt {
+
+enum ExitStatus : int {
+  kExitOk = 0,
+  kExitUsage = 1,         // a bad command line
+  kExitScene = 2,         // the scene file is wrong: SPEC section 8's errors (with --strict, its warnings)
+  kExitDevice = 3,        // the Vulkan backend cannot render here: no loader, driver or device, a failed
+                          // call, or a scene beyond the backend's or the device's limits
+  kExitIo = 4,            // a file cannot be read or written (the scene, an image, the output)
+  kExitDiffers = 5,       // images differ beyond the thresholds (diff, --check, --compare)
+  kExitOutOfMemory = 6,   // host or device memory ran out, or would have (found before allocating)
+  kExitInternal = 70,     // a bug in vkrt (EX_SOFTWARE of sysexits.h)
+  kExitSignalBase = 128,  // + N: stopped by signal N (Ctrl-C: 130, SIGTERM: 143)
+};
+
+struct ErrorContext {
+  std::string scenePath;   // named in the message of an allocation failure
+  bool quiet = false;      // leave a SceneError's warnings out (its errors are always printed)
+};
+
+// Prints the message of `error` (any exception) on `err` and returns its exit status.
+int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE* err);
+
+}  // namespace vkrt

@@ -1,0 +1,261 @@
+// What real files do and vkrt accepts with a warning (SPEC section 8): one case per kind,
+// checking the message, its line and that the scene was read as its author meant; with
+// --strict each one is an error (exit 2, nothing written). Parsed from strings.
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+
+#include <gtest/gtest.h>
+
+#include "scene/parse.h"
+#include "test_support.h"
+
+using namespace vkrt;
+using namespace vkrt::test;
+
+namespace {
+
+const std::string kOk = "size 64 48\ncamera 0 0 5 0 0 0 0 1 0 45\n";   // lines 1-2
+
+struct Accepted {
+  const char* name;
+  std::string text;
+  int line;              // expected line of the (first) warning
+  const char* message;   // expected part of its message
+  std::function<void(const SceneDesc&)> check;   // the scene as its author meant it
+};
+
+std::vector<Accepted> acceptedInputs() {
+  return {
+      {"UnknownCommand", kOk + "refraction 1.5\nsphere 0 0 0 1\n", 3, "unknown command 'refraction' (line skipped)",
+       [](const SceneDesc& s) { EXPECT_EQ(s.spheres.size(), 1u); }},
+      {"UnknownCommandWithNumbers", kOk + "area 0 0 1 1 1 1 0.5\nsphere 0 0 0 1\n", 3, "unknown command 'area'",
+       [](const SceneDesc& s) { EXPECT_EQ(s.spheres.size(), 1u); }},
+      {"KeywordCaseMaxDepth", kOk + "maxDepth 3\n", 3, "'maxDepth' read as 'maxdepth' (keywords are case-sensitive)",
+       [](const SceneDesc& s) { EXPECT_EQ(s.maxDepth, 3); }},
+      {"KeywordCaseTransforms", kOk + "vertex 1 0 0\npushTransform\ntranslate 5 0 0\nPopTransform\ntri 0 0 0\n", 6,
+       "'PopTransform' read as 'popTransform'",
+       [](const SceneDesc& s) {
+         ASSERT_EQ(s.triangles.size(), 1u);
+         EXPECT_EQ(s.triangles[0].p[0], dvec3(1, 0, 0));   // the pop restored the transform
+       }},
+      {"KeywordCaseSize", "SIZE 20 10\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1, "'SIZE' read as 'size'",
+       [](const SceneDesc& s) { EXPECT_EQ(s.width, 20); }},
+      {"RepeatedSize", kOk + "size 32 16\n", 3, "'size' given again (before at line 1): the last one counts",
+       [](const SceneDesc& s) {
+         EXPECT_EQ(s.width, 32);
+         EXPECT_EQ(s.height, 16);
+         EXPECT_EQ(s.sizeLine, 3);
+       }},
+      {"RepeatedCamera", kOk + "camera 0 0 9 0 0 0 0 1 0 60\n", 3, "'camera' given again (before at line 2)",
+       [](const SceneDesc& s) {
+         EXPECT_EQ(s.camera.from, dvec3(0, 0, 9));
+         EXPECT_EQ(s.camera.fovyDegrees, 60.0);
+       }},
+      {"RepeatedMaxDepth", kOk + "maxdepth 2\nmaxdepth 7\n", 4, "'maxdepth' given again (before at line 3)",
+       [](const SceneDesc& s) { EXPECT_EQ(s.maxDepth, 7); }},
+      {"RepeatedOutput", kOk + "output a.png\noutput b.png\n", 4, "'output' given again (before at line 3)",
+       [](const SceneDesc& s) {
+         EXPECT_EQ(s.output, "b.png");
+         EXPECT_EQ(s.outputLine, 4);
+       }},
+      {"OutputBeforeSize", "output first.png\nmaxdepth 2\nsize 64 48\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1,
+       "'output' before 'size' (line 3): accepted",
+       [](const SceneDesc& s) {
+         EXPECT_EQ(s.output, "first.png");
+         EXPECT_EQ(s.maxDepth, 2);
+         EXPECT_EQ(s.width, 64);
+       }},
+      {"CameraBeforeSize", "camera 0 0 5 0 0 0 0 1 0 45\nsize 64 48\n", 1, "'camera' before 'size' (line 2)",
+       [](const SceneDesc& s) { EXPECT_EQ(s.camera.from, dvec3(0, 0, 5)); }},
+      {"ExtraArguments", kOk + "sphere 0 0 0 1 2\n", 3,
+       "'sphere' takes 4 arguments (x y z radius), got 5: the extra one is ignored",
+       [](const SceneDesc& s) {
+         ASSERT_EQ(s.spheres.size(), 1u);
+         EXPECT_EQ(s.spheres[0].radius, 1.0);
+       }},
+      {"ExtraArgumentsToPush", kOk + "pushTransform 1 2\ntranslate 1 0 0\npopTransform\nsphere 0 0 0 1\n", 3,
+       "'pushTransform' takes no arguments, got 2: the extra 2 are ignored",
+       [](const SceneDesc& s) { EXPECT_EQ(s.spheres[0].worldFromObject, dmat4(1.0)); }},
+      {"ExtraArgumentsToOutput", kOk + "output a.png b.png\n", 3, "'output' takes 1 argument",
+       [](const SceneDesc& s) { EXPECT_EQ(s.output, "a.png"); }},
+      {"OutputNotPng", kOk + "output render.ppm\n", 3,
+       "output file 'render.ppm' is not named .png: vkrt writes PNG only, and writes it under that name",
+       [](const SceneDesc& s) { EXPECT_EQ(s.output, "render.ppm"); }},
+      {"OutputWithoutExtension", kOk + "output out.d/render\n", 3, "output file 'out.d/render' is not named .png",
+       [](const SceneDesc& s) { EXPECT_EQ(s.output, "out.d/render"); }},
+  };
+}
+
+void PrintTo(const Accepted& c, std::ostream* os) { *os << c.name; }
+
+class ParseWarning : public ::testing::TestWithParam<Accepted> {};
+
+}  // namespace
+
+TEST_P(ParseWarning, ParsedAsMeantWithALocatedWarning) {
+  const Accepted& c = GetParam();
+  ParsedScene p = parseSceneWithWarnings(c.text, "w.test");
+  ASSERT_EQ(p.warnings.size(), 1u) << c.name;
+  const Diagnostic& w = p.warnings.front();
+  EXPECT_EQ(w.severity, Severity::Warning);
+  EXPECT_EQ(w.file, "w.test");
+  EXPECT_EQ(w.line, c.line) << w.format();
+  EXPECT_NE(w.message.find(c.message), std::string::npos) << "message: " << w.message;
+  EXPECT_EQ(w.format().rfind("w.test:" + std::to_string(c.line) + ": warning: ", 0), 0u) << w.format();
+  c.check(p.scene);
+}
+
+TEST_P(ParseWarning, StrictMakesItAnError) {
+  const Accepted& c = GetParam();
+  try {
+    parseSceneWithWarnings(c.text, "w.test", ParseOptions{true});
+    FAIL() << "no error with --strict for " << c.name;
+  } catch (const SceneError& e) {
+    ASSERT_EQ(e.diagnostics().size(), 1u) << e.what();
+    const Diagnostic& d = e.diagnostics().front();
+    EXPECT_TRUE(d.isError());
+    EXPECT_EQ(d.line, c.line);
+    EXPECT_NE(d.message.find(c.message), std::string::npos) << d.message;
+    EXPECT_NE(d.message.find("[--strict]"), std::string::npos) << d.message;
+  }
+}
+
+// Through the CLI: the warning on stderr and the image written; with --strict exit 2, the
+// message as an error, nothing written and an existing image untouched.
+TEST_P(ParseWarning, CliWarnsAndRendersButStrictRefuses) {
+  const Accepted& c = GetParam();
+  std::string dir = freshDir(std::string("parse-warnings/") + c.name);
+  std::string scene = dir + "/w.test";
+  writeFile(scene, c.text);
+  std::string image = dir + "/o.png";
+  RunResult r = runVkrt("--backend cpu -o '" + image + "' '" + scene + "'");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  std::string expected = scene + ":" + std::to_string(c.line) + ": warning: ";
+  EXPECT_NE(r.output.find(expected + c.message), std::string::npos) << "expected '" << expected << "' in:\n"
+                                                                    << r.output;
+  EXPECT_TRUE(fileExists(image));
+
+  writeFile(image, "precious");
+  RunResult strict = runVkrt("--strict --backend cpu -o '" + image + "' '" + scene + "'");
+  EXPECT_EQ(strict.exitCode, 2) << strict.output;
+  EXPECT_NE(strict.output.find(scene + ":" + std::to_string(c.line) + ": error: " + c.message), std::string::npos)
+      << strict.output;
+  EXPECT_EQ(readFile(image), "precious");
+  std::size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) (void)entry, ++files;
+  EXPECT_EQ(files, 2u) << "a file was written beside the scene";
+}
+
+INSTANTIATE_TEST_SUITE_P(Section8, ParseWarning, ::testing::ValuesIn(acceptedInputs()),
+                         [](const auto& p) { return std::string(p.param.name); });
+
+TEST(ParseWarnings, OfThreeSizesTheLastCounts) {
+  ParsedScene p = parseSceneWithWarnings(kOk + "size 20 10\nsize 32 16\n", "w.test");
+  EXPECT_EQ(p.scene.width, 32);
+  EXPECT_EQ(p.scene.height, 16);
+  EXPECT_EQ(p.scene.sizeLine, 4);
+  ASSERT_EQ(p.warnings.size(), 2u);
+  EXPECT_EQ(p.warnings[0].format(), "w.test:3: warning: 'size' given again (before at line 1): the last one counts");
+  EXPECT_EQ(p.warnings[1].format(), "w.test:4: warning: 'size' given again (before at line 3): the last one counts");
+}
+
+// Another course's keywords in other cases: each read as the keyword, each said once.
+TEST(ParseWarnings, KeywordsInAnyCase) {
+  ParsedScene p = parseSceneWithWarnings(
+      kOk + "maxVerts 3\nVertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nDIFFUSE 1 0 0\nTri 0 1 2\n", "w.test");
+  ASSERT_EQ(p.scene.triangles.size(), 1u);
+  EXPECT_EQ(p.scene.materials[p.scene.triangles[0].material].diffuse, dvec3(1, 0, 0));
+  ASSERT_EQ(p.warnings.size(), static_cast<std::size_t>(kMaxWarningsPerKind + 1));   // 4 of one kind
+  EXPECT_EQ(p.warnings[0].message, "'maxVerts' read as 'maxverts' (keywords are case-sensitive)");
+  EXPECT_EQ(p.warnings[3].message, "... and 1 more of this kind (keywords in another case), on line 8");
+}
+
+TEST(ParseWarnings, ByteOrderMarkIsSkippedSilently) {
+  const std::string bom = "\xEF\xBB\xBF";
+  for (const std::string& text :
+       {bom + kOk, bom + "size 64 48\r\ncamera 0 0 5 0 0 0 0 1 0 45\r\n", bom + "# a comment first\n" + kOk}) {
+    ParsedScene p = parseSceneWithWarnings(text, "bom.test", ParseOptions{true});
+    EXPECT_TRUE(p.warnings.empty());
+    EXPECT_EQ(p.scene.width, 64);
+    EXPECT_EQ(p.scene.camera.from, dvec3(0, 0, 5));
+  }
+}
+
+TEST(ParseWarnings, CleanFilesHaveNone) {
+  EXPECT_TRUE(parseSceneWithWarnings(kOk + "maxdepth 2\noutput x.PNG\nsphere 0 0 0 1\n", "ok.test").warnings.empty());
+  for (const std::string& name : projectSceneNames()) {
+    ParsedScene p = parseSceneFileWithWarnings(sourcePath("scenes/" + name + ".test"));
+    EXPECT_TRUE(p.warnings.empty()) << name << ": " << p.warnings.front().format();
+  }
+  if (auto dir = cse167Dir()) {
+    for (const auto& e : std::filesystem::directory_iterator(*dir + "/scenes")) {
+      if (e.path().extension() != ".test") continue;
+      ParsedScene p = parseSceneFileWithWarnings(e.path().string());
+      EXPECT_TRUE(p.warnings.empty()) << e.path() << ": " << p.warnings.front().format();
+    }
+  }
+}
+
+// Messages quote what the file says with its non-printable bytes escaped, never raw: a
+// byte-order mark in the middle of a file, UTF-8, bytes of no encoding.
+TEST(ParseWarnings, MessagesEscapeNonPrintableBytes) {
+  ParsedScene p = parseSceneWithWarnings(kOk + "\xEF\xBB\xBFsphere 0 0 0 1\ncam\xC3\xA9ra 1\n", "w.test");
+  ASSERT_EQ(p.warnings.size(), 2u);
+  EXPECT_EQ(p.warnings[0].message, "unknown command '\\xEF\\xBB\\xBFsphere' (line skipped)");
+  EXPECT_EQ(p.warnings[1].message, "unknown command 'cam\\xC3\\xA9ra' (line skipped)");
+  try {
+    parseScene(kOk + "vertex 1 \xFF\xFE 0\n", "e.test");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "e.test:3: error: 'vertex' argument 2: expected a number, got '\\xFF\\xFE'");
+  }
+}
+
+TEST(ParseWarnings, RepeatsOfOneKindAreSummarisedAfterTheFirstFew) {
+  std::string text = kOk;
+  for (int i = 0; i < 10; ++i) text += "antialias 4\n";   // lines 3-12
+  text += "Sphere 0 0 0 1\nSphere 1 0 0 1\n";            // another kind: listed on its own
+  ParsedScene p = parseSceneWithWarnings(text, "w.test");
+  EXPECT_EQ(p.scene.spheres.size(), 2u);
+  ASSERT_EQ(p.warnings.size(), static_cast<std::size_t>(kMaxWarningsPerKind + 1 + 2));
+  for (int i = 0; i < kMaxWarningsPerKind; ++i) EXPECT_EQ(p.warnings[i].line, 3 + i);
+  const Diagnostic& summary = p.warnings[kMaxWarningsPerKind];
+  EXPECT_EQ(summary.line, 3 + kMaxWarningsPerKind);
+  EXPECT_EQ(summary.format(), "w.test:6: warning: ... and 7 more of this kind (unknown commands), on lines 6 to 12");
+  EXPECT_EQ(p.warnings[4].line, 13);
+  EXPECT_EQ(p.warnings[5].line, 14);
+}
+
+TEST(ParseWarnings, AFileOfUnknownCommandsParsesWithFourWarnings) {
+  std::string text = kOk;
+  for (int i = 0; i < 100000; ++i) text += "vt 0.5 0.5\n";
+  ParsedScene p = parseSceneWithWarnings(text, "obj.test");
+  ASSERT_EQ(p.warnings.size(), 4u);
+  EXPECT_NE(p.warnings.back().message.find("99997 more"), std::string::npos) << p.warnings.back().message;
+}
+
+// Errors stay errors, and the SceneError lists the warnings beside them, in line order.
+TEST(ParseWarnings, ErrorsStayErrorsAndWarningsComeWithThem) {
+  try {
+    parseSceneWithWarnings("maxdepth 2\nsize 64 48\nrefraction 1\nmaxdepth -1\ncamera 0 0 5 0 0 0 0 1 0 45\n"
+                           "vertex 1 nan 0\n",
+                           "e.test");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "e.test:1: warning: 'maxdepth' before 'size' (line 2): accepted, though the format puts 'size' first\n"
+              "e.test:3: warning: unknown command 'refraction' (line skipped)\n"
+              "e.test:4: warning: 'maxdepth' given again (before at line 1): the last one counts\n"
+              "e.test:4: error: 'maxdepth' argument 1: expected a non-negative integer, got '-1'\n"
+              "e.test:6: error: 'vertex' argument 2: expected a finite number, got 'nan'");
+  }
+  // No size at all is an error, and then commands before it are not warned about.
+  try {
+    parseSceneWithWarnings("output a.png\ncamera 0 0 5 0 0 0 0 1 0 45\n", "e.test");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    ASSERT_EQ(e.diagnostics().size(), 1u) << e.what();
+    EXPECT_NE(e.diagnostics()[0].message.find("no 'size' command"), std::string::npos);
+  }
+}
