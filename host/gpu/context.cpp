@@ -19,6 +19,22 @@
 namespace vkrt {
 namespace {
 
+#ifdef VKRT_SANITIZE_BUILD
+// Sanitizer builds only: keeps every library loaded so far (the Vulkan driver and what it
+// loaded) in memory for good. The loader unloads the driver when the instance is destroyed;
+// lavapipe keeps a heap block reachable only from its own static data, so once that data is
+// unmapped LeakSanitizer reports the block as a leak (128 bytes, "<unknown module>") although
+// the driver still holds it. Pinned, the block stays reachable and our own leaks still show.
+void pinLoadedLibraries() {
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, std::size_t, void*) {
+        if (info->dlpi_name && info->dlpi_name[0] != '\0') dlopen(info->dlpi_name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+        return 0;
+      },
+      nullptr);
+}
+#endif
+
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
 bool hasLayer(const char* name) {
@@ -51,6 +67,9 @@ VkInstance createInstance(bool validation) {
   if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
     throw DeviceError(std::string("no Vulkan driver found: ") + kVulkanInstallHint);
   VK_CHECK(r);
+#ifdef VKRT_SANITIZE_BUILD
+  pinLoadedLibraries();   // the driver is loaded now
+#endif
   vk::loadInstanceFunctions(instance);
   return instance;
 }
@@ -160,21 +179,6 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onMessage(VkDebugUtilsMessageSeverityFla
   return VK_FALSE;
 }
 
-#ifdef VKRT_SANITIZE_BUILD
-// Sanitizer builds only: keeps every library loaded so far (the Vulkan driver and what it
-// loaded) in memory for good. The loader unloads the driver when the instance is destroyed;
-// lavapipe keeps a heap block reachable only from its own static data, so once that data is
-// unmapped LeakSanitizer reports the block as a leak (128 bytes, "<unknown module>") although
-// the driver still holds it. Pinned, the block stays reachable and our own leaks still show.
-static void pinLoadedLibraries() {
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, std::size_t, void*) {
-        if (info->dlpi_name && info->dlpi_name[0] != '\0') dlopen(info->dlpi_name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
-        return 0;
-      },
-      nullptr);
-}
-#endif
 
 Context::Context(const ContextOptions& options) {
   auto t0 = std::chrono::steady_clock::now();
@@ -220,9 +224,6 @@ Context::Context(const ContextOptions& options) {
     VK_CHECK(vk::vkCreateDevice(physical_, &deviceInfo, nullptr, &device_));
     vk::vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
     deviceSeconds_ = secondsSince(t0);
-#ifdef VKRT_SANITIZE_BUILD
-    pinLoadedLibraries();
-#endif
   } catch (...) {
     if (messenger_) vk::vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
     vk::vkDestroyInstance(instance_, nullptr);
