@@ -248,7 +248,7 @@ Outcome runChecks(const std::string& text, const std::string& name, const CheckO
     }
   }
 
-  // d. A vast black ground far below changes nothing.
+  // d. A vast black ground just below everything changes nothing.
   if (options.checks & kGround) {
     std::optional<std::string> grounded = withVastBlackGround(text, *base);
     if (!grounded) {

@@ -18,7 +18,7 @@ enum Check : unsigned {
   kBackends = 1u,      // a: the Vulkan backend (cut-off off) against the CPU reference
   kCutoff = 2u,        // b: cut-off on against off, and with a small step budget: bit for bit
   kMetamorphic = 4u,   // c: the scene x1e-3, x1e4 and moved by 1e4 against itself (both backends)
-  kGround = 8u,        // d: the scene with a vast black ground far below it against itself
+  kGround = 8u,        // d: the scene with a vast black ground just below everything against itself
   kAllChecks = 15u,
 };
 const char* checkLetter(Check c);   // "a" ... "d"

@@ -47,7 +47,7 @@ std::string sceneKind(std::uint64_t seed);
 // must be the same.
 std::string scaledAndMoved(std::string_view text, double k, const dvec3& offset);
 
-// The same scene with a vast black ground added far below it: a flat ellipsoid 2,000 times
+// The same scene with a vast black ground added just below it: a flat ellipsoid 2,000 times
 // the scene's size across, with no ambient, emission, diffuse or specular term, placed below
 // the camera, every light and every primitive, on the side away from every directional light.
 // Whatever sees it sees black, as it would see nothing; no shadow ray can reach it (it lies
