@@ -56,12 +56,16 @@ std::string testName(std::string name) {
 
 std::string sourcePath(const std::string& relative) { return (fs::path(VKRT_SOURCE_DIR) / relative).string(); }
 
-std::string freshDir(const std::string& name) {
+std::string outputPath(const std::string& name) {
   const char* env = std::getenv("VKRT_TEST_OUTPUT");
-  fs::path dir = fs::path(env ? env : "test-output") / name;
+  return fs::absolute(fs::path(env ? env : "test-output") / name).string();
+}
+
+std::string freshDir(const std::string& name) {
+  fs::path dir = outputPath(name);
   fs::remove_all(dir);
   fs::create_directories(dir);
-  return fs::absolute(dir).string();
+  return dir.string();
 }
 
 std::string readFile(const std::string& path) {

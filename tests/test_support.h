@@ -32,6 +32,8 @@ std::string sourcePath(const std::string& relative);
 
 // A fresh, empty directory for one test's files, under the build's test-output folder.
 std::string freshDir(const std::string& name);
+// The absolute path of `name` under the test-output folder (nothing created or removed).
+std::string outputPath(const std::string& name);
 
 // Reads a whole file.
 std::string readFile(const std::string& path);
@@ -45,7 +47,7 @@ Image renderScene(const SceneDesc& scene);
 
 // Compares two images: passes when at most `maxPixelsOver` pixels differ by more than
 // `stepTolerance` 8-bit steps in some channel. On failure writes actual.png, expected.png and
-// an amplified diff.png under the test-output folder and names them in the message.
+// an amplified diff.png in outputPath("failures/" + name) and names them in the message.
 ::testing::AssertionResult imagesClose(const std::string& name, const Image& actual, const Image& expected,
                                        int stepTolerance, long long maxPixelsOver);
 
