@@ -11,26 +11,15 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;   // kWorkgroupSize
 
-layout(constant_id = 0) const uint kWidth = 1u;
-layout(constant_id = 1) const uint kHeight = 1u;
-layout(constant_id = 2) const uint kMaxDepth = 5u;
-layout(constant_id = 3) const uint kLightCount = 0u;
-layout(constant_id = 4) const uint kStepBudget = 8192u;
-layout(constant_id = 5) const uint kBandHeight = 1u;
-layout(constant_id = 6) const uint kTilesX = 1u;
-layout(constant_id = 7) const uint kTileOrderStride = 1u;
-layout(constant_id = 8) const uint kPrimCount = 0u;
-// A local array is per-lane scratch memory in llvmpipe: size it to the BVH's depth.
-layout(constant_id = 9) const uint kStackSize = kTraversalStackSize;
-layout(constant_id = 10) const uint kRootEntry = 0u;
-layout(constant_id = 11) const bool kHasTriangles = true;
-layout(constant_id = 12) const bool kHasSpheres = true;
-layout(constant_id = 13) const bool kHasSmoothNormals = true;
-layout(constant_id = 14) const bool kHasPointLights = true;
-layout(constant_id = 15) const bool kHasDirectionalLights = true;
-layout(constant_id = 16) const bool kHasAttenuation = true;
-layout(constant_id = 17) const bool kHasSpecular = true;
-layout(constant_id = 18) const bool kCutoff = true;
+// Specialization constants: only what changes the code (gpu_types.h, kSpec*).
+layout(constant_id = 0) const bool kHasTriangles = true;
+layout(constant_id = 1) const bool kHasSpheres = true;
+layout(constant_id = 2) const bool kHasSmoothNormals = true;
+layout(constant_id = 3) const bool kHasPointLights = true;
+layout(constant_id = 4) const bool kHasDirectionalLights = true;
+layout(constant_id = 5) const bool kHasAttenuation = true;
+layout(constant_id = 6) const bool kHasSpecular = true;
+layout(constant_id = 7) const bool kCutoff = true;
 
 // Scene reads: storage buffers, or (VKRT_TEXEL_READS) the same bytes through uint texel-buffer
 // views, which lavapipe reads 2.7-3x faster inside loops (bench/ measures both). Only uint
@@ -121,6 +110,7 @@ layout(std430, binding = kBindingPixels) buffer Pixels { uint pixels[]; };   // 
 layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathState states[]; };
 layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
 
+layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
 layout(push_constant) uniform Push { GpuPushConstants pc; };
 
 const float kInfinity = 3.402823466e38;
@@ -131,8 +121,9 @@ float rayTMin, bestT, bestB1, bestB2;
 vec3 throughput, radiance, hitPoint, hitNormal, shadowDir, lightColor;
 float shadowTMax, nDotL, hitTMin;
 uint phase, depth, lightIndex, sp, hitPrim, hitMaterial;
-uint stack[kStackSize];     // entries (kStackLeafBit) of nodes whose boxes the ray enters
-float stackT[kStackSize];   // the entry distance of each, to skip it once a nearer hit is known
+// A local array is per-lane scratch memory in llvmpipe; its size must be a constant.
+uint stack[kTraversalStackSize];     // entries (kStackLeafBit) of nodes whose boxes the ray enters
+float stackT[kTraversalStackSize];   // the entry distance of each, to skip it once a nearer hit is known
 uint shadowRays = 0u, reflectionRays = 0u;
 
 // ---- intersection (float32) ------------------------------------------------------------------
@@ -243,8 +234,8 @@ void startRay(vec3 origin, vec3 dir, float tMin) {
   rayTMin = tMin;
   bestT = kInfinity;
   hitPrim = kNoHit;
-  sp = kPrimCount > 0u ? 1u : 0u;   // an empty scene's root is an empty leaf: nothing to visit
-  stack[0] = kRootEntry;
+  sp = params.primCount > 0u ? 1u : 0u;   // an empty scene's root is an empty leaf: nothing to visit
+  stack[0] = params.rootEntry;
   stackT[0] = 0.0;
   phase = kPhaseTrace;
 }
@@ -314,7 +305,7 @@ bool restCannotChangePixel(vec3 weight, uint nextDepth) {
   if (nonNegative && all(greaterThanEqual(radiance, vec3(1.0)))) return true;   // saturated
   // 1 + s + ... + s^(n-1) for the n segments left: at most n, and at most 1 / (1 - s) when
   // s < 1 (cheaper than the exact sum, and still an upper bound).
-  float n = float(kMaxDepth - nextDepth + 1u);
+  float n = float(params.maxDepth - nextDepth + 1u);
   vec3 s = pc.cutoffSpecular.rgb;
   vec3 series = mix(vec3(n), min(vec3(n), 1.0 / max(1.0 - s, vec3(1e-30))), lessThan(s, vec3(1.0)));
   // A margin for float rounding in the sums the bound stands for.
@@ -328,7 +319,7 @@ bool restCannotChangePixel(vec3 weight, uint nextDepth) {
 // After the last light: the mirror ray, or the end of the path.
 void reflectOrFinish() {
   vec3 specular = loadMaterial(hitMaterial).specular.rgb;
-  if (kHasSpecular && depth < kMaxDepth && any(notEqual(specular, vec3(0.0))) &&
+  if (kHasSpecular && depth < params.maxDepth && any(notEqual(specular, vec3(0.0))) &&
       !(kCutoff && restCannotChangePixel(throughput * specular, depth + 1u))) {
     ++depth;
     ++reflectionRays;
@@ -341,7 +332,7 @@ void reflectOrFinish() {
 
 // Prepares light `lightIndex`: its shadow ray, or skips a light that cannot contribute.
 void lightStep() {
-  if (lightIndex >= kLightCount) {
+  if (lightIndex >= params.lightCount) {
     reflectOrFinish();
     return;
   }
@@ -368,8 +359,8 @@ void lightStep() {
   shadowDir = toLight;
   // Finite even for a tiny divisor, so that a zero material term times it stays 0, not NaN.
   lightColor = clamp(light.color.rgb / divisor, -kInfinity, kInfinity);
-  sp = kPrimCount > 0u ? 1u : 0u;
-  stack[0] = kRootEntry;
+  sp = params.primCount > 0u ? 1u : 0u;
+  stack[0] = params.rootEntry;
   stackT[0] = 0.0;
   phase = kPhaseShadow;
 }
@@ -408,7 +399,7 @@ void traversalStep(inout uint step) {
   float tMax = shadow ? shadowTMax : bestT;
   if (nextIsInterior()) {
     vec3 invDir = safeInverse(dir);
-    while (nextIsInterior() && step < kStepBudget) {
+    while (nextIsInterior() && step < params.stepBudget) {
       --sp;
       ++step;
       if (stackT[sp] < tMax) pushChildren(stack[sp], origin, invDir, tMin, tMax);
@@ -504,21 +495,21 @@ void loadState(uint slot) {
 void main() {
   // Workgroups visit the band's tiles in a scattered order, so that each of lavapipe's threads
   // (which take contiguous runs of workgroups) gets a share of every part of the image.
-  const uint tilesInBand = kTilesX * ((kBandHeight + kWorkgroupSize - 1u) / kWorkgroupSize);
-  uint tile = (gl_WorkGroupID.x * kTileOrderStride) % tilesInBand;
-  uint x = (tile % kTilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
-  uint yInBand = (tile / kTilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
+  uint tilesInBand = params.tilesX * ((params.bandHeight + kWorkgroupSize - 1u) / kWorkgroupSize);
+  uint tile = (gl_WorkGroupID.x * params.tileOrderStride) % tilesInBand;
+  uint x = (tile % params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
+  uint yInBand = (tile / params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
   uint y = pc.bandY0 + yInBand;
-  if (x >= kWidth || yInBand >= kBandHeight || y >= kHeight) return;
-  uint slot = yInBand * kWidth + x;
+  if (x >= params.width || yInBand >= params.bandHeight || y >= params.height) return;
+  uint slot = yInBand * params.width + x;
 
   if (pc.resume != 0u) {
     if ((pixels[slot] >> 24) != 0u) return;   // finished in an earlier round
     loadState(slot);
   } else {
     // Camera ray through the pixel centre (SPEC section 3).
-    float a = (float(x) + 0.5) - 0.5 * float(kWidth);
-    float b = 0.5 * float(kHeight) - (float(y) + 0.5);
+    float a = (float(x) + 0.5) - 0.5 * float(params.width);
+    float b = 0.5 * float(params.height) - (float(y) + 0.5);
     vec3 dir = normalize(a * pc.cameraRight.xyz + b * pc.cameraUp.xyz - pc.cameraBack.xyz);
     throughput = vec3(1.0);
     radiance = vec3(0.0);
@@ -526,7 +517,7 @@ void main() {
     startRay(pc.cameraOrigin.xyz, dir, 0.0);
   }
 
-  for (uint step = 0u; step < kStepBudget && phase != kPhaseDone; ++step) {
+  for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
     if (phase == kPhaseLight)
       lightStep();
     else

@@ -40,6 +40,7 @@ TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
   auto lights = patterned<gpu::GpuLight>(4);
   auto materials = patterned<gpu::GpuMaterial>(5);
   auto nodes = patterned<gpu::GpuBvhNode>(6);
+  auto params = patterned<gpu::GpuRenderParams>(7);
   std::vector<std::uint32_t> expected;
   appendSecond(expected, triangles);
   appendSecond(expected, normals);
@@ -47,15 +48,24 @@ TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
   appendSecond(expected, lights);
   appendSecond(expected, materials);
   appendSecond(expected, nodes);
+  const auto* paramWords = reinterpret_cast<const std::uint32_t*>(&params[0]);   // one element, not an array
+  expected.insert(expected.end(), paramWords, paramWords + sizeof(gpu::GpuRenderParams) / 4);
 
   Buffer b0 = Buffer::withContents(*context, triangles), b1 = Buffer::withContents(*context, normals),
          b2 = Buffer::withContents(*context, spheres), b3 = Buffer::withContents(*context, lights),
-         b4 = Buffer::withContents(*context, materials), b5 = Buffer::withContents(*context, nodes);
+         b4 = Buffer::withContents(*context, materials), b5 = Buffer::withContents(*context, nodes),
+         b6 = Buffer::withContents(*context, params);
   Buffer out(*context, expected.size() * 4, true);
-  ComputePipeline probe(*context, kLayoutProbeSpirv, sizeof(kLayoutProbeSpirv),
-                        std::vector<VkDescriptorType>(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER), {}, 0);
-  const Buffer* all[] = {&b0, &b1, &b2, &b3, &b4, &b5, &out};
-  for (std::uint32_t i = 0; i < 7; ++i) probe.bind(i, *all[i]);
+  std::vector<VkDescriptorType> types(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  types[6] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  ComputePipeline probe(*context, kLayoutProbeSpirv, sizeof(kLayoutProbeSpirv), types, {}, 0);
+  const Buffer* all[] = {&b0, &b1, &b2, &b3, &b4, &b5, &b6, &out};
+  for (std::uint32_t i = 0; i < 8; ++i) {
+    if (i == 6)
+      probe.bindUniform(i, *all[i]);
+    else
+      probe.bind(i, *all[i]);
+  }
   probe.run(nullptr, 1);
   std::vector<std::uint32_t> got(expected.size());
   std::memcpy(got.data(), out.mapped(), got.size() * 4);

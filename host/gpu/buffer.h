@@ -1,4 +1,4 @@
-// A storage buffer in host-visible memory, mapped for its whole life: uploads are a memcpy
+// A buffer (storage, uniform or texel) in host-visible memory, mapped for its whole life: uploads are a memcpy
 // into the mapping (no staging copy), readback a read from it.
 #pragma once
 

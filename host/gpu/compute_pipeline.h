@@ -1,6 +1,6 @@
-// A compute pipeline over buffers at bindings 0..N-1 of set 0 (storage buffers or uniform
-// texel buffers), with uint specialization constants (ids 0..) and a push-constant block,
-// plus the command buffer and fence to run it synchronously.
+// A compute pipeline over buffers at bindings 0..N-1 of set 0 (storage buffers, uniform texel
+// buffers or uniform buffers), with uint specialization constants (ids 0..) and a push-constant
+// block, plus the command buffer and fence to run it synchronously.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +22,8 @@ class ComputePipeline {
 
   // A storage buffer at `binding`.
   void bind(std::uint32_t binding, const Buffer& buffer);
+  // A uniform buffer at `binding`.
+  void bindUniform(std::uint32_t binding, const Buffer& buffer);
   // A uniform texel buffer at `binding`: a view of `buffer` as texels of `format`
   // (`texelBytes` each). The pipeline owns the view.
   void bindTexels(std::uint32_t binding, const Buffer& buffer, VkFormat format, std::size_t texelBytes);

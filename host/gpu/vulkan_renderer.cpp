@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 #include "gpu/compute_pipeline.h"
@@ -118,20 +119,30 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   t.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  std::vector<std::uint32_t> spec(gpu::kSpecCount);   // bools as 0/1 (SPIR-V bool spec constants are 32 bits)
-  spec[gpu::kSpecWidth] = width;
-  spec[gpu::kSpecHeight] = height;
   const Features features = sceneFeatures(scene, options.specialize);
   t.leftOut = features.leftOut;
+  gpu::GpuRenderParams params{};
+  params.width = width;
+  params.height = height;
   // Without a specular surface no mirror ray is ever traced.
-  spec[gpu::kSpecMaxDepth] = features.specular ? scene.maxDepth : 0;
-  spec[gpu::kSpecLightCount] = static_cast<std::uint32_t>(scene.lights.size());
-  spec[gpu::kSpecStepBudget] = options.stepBudget ? options.stepBudget : gpu::kDefaultStepBudget;
-  spec[gpu::kSpecBandHeight] = bandHeight;
-  spec[gpu::kSpecTilesX] = tilesX;
-  spec[gpu::kSpecTileOrderStride] = scatterStride(tilesInBand);
-  spec[gpu::kSpecPrimCount] = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
-  spec[gpu::kSpecStackSize] = static_cast<std::uint32_t>(scene.bvh.depth + 1);
+  params.maxDepth = features.specular ? scene.maxDepth : 0;
+  params.lightCount = static_cast<std::uint32_t>(scene.lights.size());
+  params.stepBudget = options.stepBudget ? options.stepBudget : gpu::kDefaultStepBudget;
+  params.bandHeight = bandHeight;
+  params.tilesX = tilesX;
+  params.tileOrderStride = scatterStride(tilesInBand);
+  params.primCount = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
+  const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
+  params.rootEntry = root.primCount > 0 ? gpu::kStackLeafBit | root.primCount << gpu::kStackCountShift |
+                                              root.leftOrFirst
+                                        : root.leftOrFirst;
+  // The shader's traversal stack has a fixed size; the builder keeps the BVH within it.
+  if (scene.bvh.depth + 1 > static_cast<int>(gpu::kTraversalStackSize))
+    throw InternalError("BVH depth " + std::to_string(scene.bvh.depth) + " exceeds the traversal stack");
+  Buffer paramsBuffer(context, sizeof params);
+  std::memcpy(paramsBuffer.mapped(), &params, sizeof params);
+
+  std::vector<std::uint32_t> spec(gpu::kSpecCount);   // bools as 0/1 (SPIR-V bool spec constants are 32 bits)
   spec[gpu::kSpecHasTriangles] = features.triangles;
   spec[gpu::kSpecHasSpheres] = features.spheres;
   spec[gpu::kSpecHasSmoothNormals] = features.smoothNormals;
@@ -145,10 +156,6 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
                        (!options.specialize || (features.specular && cutoffPays(scene.push, scene.maxDepth))));
   spec[gpu::kSpecCutoff] = cutoff;
   if (!cutoff) t.leftOut += std::string(t.leftOut.empty() ? "" : ", ") + "exactness cut-off";
-  const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
-  spec[gpu::kSpecRootEntry] = root.primCount > 0 ? gpu::kStackLeafBit | root.primCount << gpu::kStackCountShift |
-                                                       root.leftOrFirst
-                                                 : root.leftOrFirst;
   // Texel reads where every scene buffer fits the device's texel-count limit.
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const Buffer* sceneBuffers[] = {&triangles, &normals, &spheres, &lights, &materials, &nodes};
@@ -161,6 +168,7 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   std::vector<VkDescriptorType> types(gpu::kBindingCount, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
   if (t.texelReads)
     std::fill(types.begin(), types.begin() + gpu::kBindingPixels, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
+  types[gpu::kBindingParams] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   ComputePipeline pipeline(context, t.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv,
                            t.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv), types, spec,
                            sizeof(gpu::GpuPushConstants));
@@ -175,8 +183,11 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   bound[gpu::kBindingPixels] = &pixels;
   bound[gpu::kBindingPathStates] = &states;
   bound[gpu::kBindingCounters] = &counters;
+  bound[gpu::kBindingParams] = &paramsBuffer;
   for (std::uint32_t b = 0; b < gpu::kBindingCount; ++b) {
-    if (!t.texelReads || b >= gpu::kBindingPixels)
+    if (b == gpu::kBindingParams)
+      pipeline.bindUniform(b, *bound[b]);
+    else if (!t.texelReads || b >= gpu::kBindingPixels)
       pipeline.bind(b, *bound[b]);
     else if (b == gpu::kBindingPrimRefs)
       pipeline.bindTexels(b, *bound[b], VK_FORMAT_R32_UINT, 4);

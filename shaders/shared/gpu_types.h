@@ -131,31 +131,22 @@ GPU_CONST uint kBindingPrimRefs = 6u;
 GPU_CONST uint kBindingPixels = 7u;       // output: one packed RGBA8 uint per pixel of the band
 GPU_CONST uint kBindingPathStates = 8u;   // suspended pixels' state, one GpuPathState per pixel of the band
 GPU_CONST uint kBindingCounters = 9u;     // GpuCounters
-GPU_CONST uint kBindingCount = 10u;
+GPU_CONST uint kBindingParams = 10u;      // GpuRenderParams (a uniform buffer)
+GPU_CONST uint kBindingCount = 11u;
 
-// Specialization constant ids: sizes and loop bounds are compile-time constants for the
-// driver (lavapipe re-JITs on every submit when they come from a buffer).
-GPU_CONST uint kSpecWidth = 0u;
-GPU_CONST uint kSpecHeight = 1u;
-GPU_CONST uint kSpecMaxDepth = 2u;
-GPU_CONST uint kSpecLightCount = 3u;
-GPU_CONST uint kSpecStepBudget = 4u;
-GPU_CONST uint kSpecBandHeight = 5u;
-GPU_CONST uint kSpecTilesX = 6u;
-GPU_CONST uint kSpecTileOrderStride = 7u;
-GPU_CONST uint kSpecPrimCount = 8u;       // 0: no geometry (the BVH root is then an empty leaf)
-GPU_CONST uint kSpecStackSize = 9u;       // traversal stack entries: the BVH's depth + 1
-GPU_CONST uint kSpecRootEntry = 10u;      // the root as a traversal-stack entry (below)
-// What the scene contains (1) or not (0): the driver compiles out the code of absent features.
-GPU_CONST uint kSpecHasTriangles = 11u;
-GPU_CONST uint kSpecHasSpheres = 12u;
-GPU_CONST uint kSpecHasSmoothNormals = 13u;   // `trinormal`
-GPU_CONST uint kSpecHasPointLights = 14u;
-GPU_CONST uint kSpecHasDirectionalLights = 15u;
-GPU_CONST uint kSpecHasAttenuation = 16u;     // a point light whose attenuation is not 1 0 0
-GPU_CONST uint kSpecHasSpecular = 17u;        // highlights and mirror rays
-GPU_CONST uint kSpecCutoff = 18u;             // the exactness cut-off of the mirror loop (below)
-GPU_CONST uint kSpecCount = 19u;
+// Specialization constant ids. Only what changes the code is specialised: what the scene
+// contains (1) or not (0), so that the driver compiles out the code of absent features, and
+// the exactness cut-off. Sizes, counts and loop bounds are data (GpuRenderParams): a new
+// image size or triangle count is then no new shader for the driver to compile.
+GPU_CONST uint kSpecHasTriangles = 0u;
+GPU_CONST uint kSpecHasSpheres = 1u;
+GPU_CONST uint kSpecHasSmoothNormals = 2u;   // `trinormal`
+GPU_CONST uint kSpecHasPointLights = 3u;
+GPU_CONST uint kSpecHasDirectionalLights = 4u;
+GPU_CONST uint kSpecHasAttenuation = 5u;     // a point light whose attenuation is not 1 0 0
+GPU_CONST uint kSpecHasSpecular = 6u;        // highlights and mirror rays
+GPU_CONST uint kSpecCutoff = 7u;             // the exactness cut-off of the mirror loop (below)
+GPU_CONST uint kSpecCount = 8u;
 
 // A traversal-stack entry says what its parent's read of the node told: for a leaf,
 // kStackLeafBit | count << kStackCountShift | first primRef (first < 2^28, count <= 7); for an
@@ -172,8 +163,8 @@ GPU_CONST uint kWorkgroupSize = 8u;       // 8x8 pixels per workgroup (lavapipe:
 // suspended (its GpuPathState saved) and resumed by the next dispatch.
 GPU_CONST uint kDefaultStepBudget = 8192u;
 GPU_CONST uint kMaxLeafPrims = 4u;
-// Entries in a saved traversal stack (the BVH builder bounds the depth below this; the
-// shader's own stack is sized to the scene's BVH by kSpecStackSize).
+// Entries of the shader's traversal stack and of a saved one: the BVH builder bounds the
+// depth so that depth + 1 entries never exceed this (kMaxBvhDepth, host/scene/bvh.h).
 GPU_CONST uint kTraversalStackSize = 96u;
 
 // Phases of a pixel's state machine.
@@ -202,6 +193,25 @@ struct GpuPushConstants {
 GPU_ASSERT_SIZE(GpuPushConstants, 112)
 GPU_ASSERT_OFFSET(GpuPushConstants, cutoffBound, 64)
 GPU_ASSERT_OFFSET(GpuPushConstants, bandY0, 96)
+
+// What one render's dispatches share, besides the scene: sizes, counts and loop bounds. Data,
+// not specialization constants, so that every scene with the same features runs one shader.
+struct GpuRenderParams {
+  uint width;               // the image, in pixels
+  uint height;
+  uint maxDepth;            // mirror reflections at most (0 when no surface is specular)
+  uint lightCount;
+  uint stepBudget;          // state-machine steps per pixel per dispatch (kDefaultStepBudget)
+  uint bandHeight;          // rows per band, a multiple of kWorkgroupSize
+  uint tilesX;              // 8x8 tiles across the image
+  uint tileOrderStride;     // coprime with the tiles of a band: the order workgroups visit them
+  uint primCount;           // primitive references in the BVH; 0: no geometry (the root is an empty leaf)
+  uint rootEntry;           // the root as a traversal-stack entry (above)
+  uint pad0, pad1;          // size 48 (std140 and std430 agree: only uint members)
+};
+GPU_ASSERT_SIZE(GpuRenderParams, 48)
+GPU_ASSERT_OFFSET(GpuRenderParams, stepBudget, 16)
+GPU_ASSERT_OFFSET(GpuRenderParams, rootEntry, 36)
 
 struct GpuCounters {
   uint suspended;           // pixels of this dispatch that ran out of steps

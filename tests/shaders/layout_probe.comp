@@ -13,7 +13,8 @@ layout(std430, binding = 2) readonly buffer Spheres { GpuSphere spheres[]; };
 layout(std430, binding = 3) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, binding = 4) readonly buffer Materials { GpuMaterial materials[]; };
 layout(std430, binding = 5) readonly buffer BvhNodes { GpuBvhNode nodes[]; };
-layout(std430, binding = 6) writeonly buffer Out { uint words[]; };
+layout(std140, binding = 6) uniform Params { GpuRenderParams params; };   // as raytrace.comp reads it
+layout(std430, binding = 7) writeonly buffer Out { uint words[]; };
 
 uint n = 0u;
 void put(float f) { words[n++] = floatBitsToUint(f); }
@@ -35,4 +36,8 @@ void main() {
   put(m.ambient); put(m.diffuse); put(m.specular); put(m.emission);
   GpuBvhNode b = nodes[1];
   put(b.minX); put(b.minY); put(b.minZ); put(b.leftOrFirst); put(b.maxX); put(b.maxY); put(b.maxZ); put(b.primCount);
+  // The one uniform buffer: its only element.
+  GpuRenderParams p = params;
+  put(p.width); put(p.height); put(p.maxDepth); put(p.lightCount); put(p.stepBudget); put(p.bandHeight);
+  put(p.tilesX); put(p.tileOrderStride); put(p.primCount); put(p.rootEntry); put(p.pad0); put(p.pad1);
 }
