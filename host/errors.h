@@ -7,6 +7,13 @@
 
 namespace vkrt {
 
+// A bad command line (or a request that cannot be met as given, such as a --scale that
+// makes the image larger than the largest size): exit status 1.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // A file could not be read or written: the scene file, an image to compare, the output.
 class IoError : public std::runtime_error {
  public:

@@ -1,13 +1,18 @@
-// vkrt command line: parse arguments, call renderSceneFile(), turn exceptions into exit
-// statuses (through reportError: host/cli/exit_status.h).
+// vkrt command line: parse arguments, call renderSceneFile() (once per scene; several scenes
+// share one RenderSession), turn exceptions into exit statuses (through reportError:
+// host/cli/exit_status.h).
+#include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "cli/exit_status.h"
 #include "cli/options.h"
+#include "errors.h"
 #include "gpu/context.h"
 #include "image/png.h"
 #include "interrupt.h"
@@ -146,6 +151,76 @@ int compareBackends(const vkrt::Options& o) {
   return failures.empty() ? kExitOk : kExitDiffers;
 }
 
+// The warning for pixels whose colour was NaN or infinite (with --strict: an error already).
+void warnNonFinite(const vkrt::Options& o, const vkrt::RenderReport& report) {
+  if (report.rays.nonFinite > 0 && !o.quiet)
+    std::fprintf(stderr,
+                 "vkrt: warning: %llu pixels had a NaN or infinite colour (written as 0, or 1 for +infinity); "
+                 "the scene has extreme values\n",
+                 static_cast<unsigned long long>(report.rays.nonFinite));
+}
+
+double totalSeconds(const vkrt::RenderReport& r) {
+  return r.parseSeconds + r.buildSeconds + r.renderSeconds + r.writeSeconds;
+}
+
+// Several scenes in one process, sharing the Vulkan context: one line per scene (on stderr,
+// as every log), then a summary; a failed scene does not stop the others, a signal does. The
+// exit status is the highest of the scenes' (worseExitStatus). Two scenes that would write
+// one file: the second fails (I/O error) and the first image stays.
+int renderBatch(const vkrt::Options& o) {
+  auto start = std::chrono::steady_clock::now();
+  vkrt::RenderSession session;
+  std::map<std::string, std::string> written;   // output path (absolute) -> the scene that wrote it
+  const std::size_t n = o.scenes.size();
+  std::size_t rendered = 0, failed = 0, done = 0;
+  int worst = kExitOk;
+  for (const std::string& scenePath : o.scenes) {
+    ++done;
+    auto t0 = std::chrono::steady_clock::now();
+    vkrt::RenderRequest request = o.request;
+    request.scenePath = scenePath;
+    request.onWarnings = warningPrinter(o.quiet);
+    request.onOutput = [&written](const std::string& path) {
+      auto it = written.find(std::filesystem::absolute(path).lexically_normal().string());
+      if (it != written.end())
+        throw vkrt::IoError("'" + path + "' was written by " + it->second +
+                            " earlier in this run (two scenes with one output name)");
+    };
+    int status = kExitOk;
+    vkrt::RenderReport report;
+    try {
+      vkrt::ProgressBar progress(!o.quiet);
+      report = vkrt::renderSceneFile(request, progress, nullptr, &session);
+      written[std::filesystem::absolute(report.outputPath).lexically_normal().string()] = scenePath;
+      if (o.stats) printStats(request, report);
+      warnNonFinite(o, report);
+    } catch (...) {
+      status = vkrt::reportError(std::current_exception(), {scenePath, o.quiet}, stderr);
+    }
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    worst = vkrt::worseExitStatus(worst, status);
+    if (status == kExitOk) {
+      ++rendered;
+      if (!o.quiet)
+        std::fprintf(stderr, "vkrt: [%zu/%zu] ok      %s -> %s (%dx%d) in %.2f s\n", done, n, scenePath.c_str(),
+                     report.outputPath.c_str(), report.width, report.height, seconds);
+    } else {
+      ++failed;
+      std::fprintf(stderr, "vkrt: [%zu/%zu] exit %-2d %s: %s, nothing written, in %.2f s\n", done, n, status,
+                   scenePath.c_str(), vkrt::exitStatusName(status).c_str(), seconds);
+    }
+    if (status >= vkrt::kExitSignalBase) break;   // Ctrl-C stops the batch, not just this scene
+  }
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!o.quiet || worst != kExitOk) {
+    std::fprintf(stderr, "vkrt: %zu scenes in %.2f s: %zu rendered, %zu failed", n, seconds, rendered, failed);
+    if (done < n) std::fprintf(stderr, ", %zu not rendered (stopped)", n - done);
+    std::fprintf(stderr, "; exit status %d\n", worst);
+  }
+  return worst;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -173,24 +248,21 @@ int main(int argc, char** argv) {
         std::printf("%zu: %s (%s)\n", i, devices[i].name.c_str(), devices[i].typeName());
       return kExitOk;
     }
+    if (!options.quiet)
+      for (const std::string& w : options.warnings) std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str());
     vkrt::installInterruptHandlers();
     if (options.compare) return compareBackends(options);
+    if (options.scenes.size() > 1) return renderBatch(options);
     vkrt::ProgressBar progress(!options.quiet);
     vkrt::Image image;
     options.request.onWarnings = warningPrinter(options.quiet);
     vkrt::RenderReport report =
         vkrt::renderSceneFile(options.request, progress, options.checkAgainst ? &image : nullptr);
     if (options.stats) printStats(options.request, report);
-    if (report.rays.nonFinite > 0 && !options.quiet)
-      std::fprintf(stderr,
-                   "vkrt: warning: %llu pixels had a NaN or infinite colour (written as 0, or 1 for +infinity); "
-                   "the scene has extreme values\n",
-                   static_cast<unsigned long long>(report.rays.nonFinite));
-    if (!options.quiet) {
-      double total = report.parseSeconds + report.buildSeconds + report.renderSeconds + report.writeSeconds;
+    warnNonFinite(options, report);
+    if (!options.quiet)
       std::fprintf(stderr, "vkrt: wrote %s (%dx%d) in %.2f s\n", report.outputPath.c_str(), report.width,
-                   report.height, total);
-    }
+                   report.height, totalSeconds(report));
     if (options.checkAgainst)
       return reportComparison(options, image, vkrt::readImage(*options.checkAgainst),
                               report.outputPath + " vs " + *options.checkAgainst);

@@ -41,7 +41,7 @@ TEST(Cli, HelpAndVersion) {
 
 TEST(Cli, UsageErrorsExitWith1) {
   for (const char* args : {"", "--bogus x.test", "--threads 0 x.test", "--threads abc x.test", "--backend gl x.test",
-                           "-o", "a.test b.test"}) {
+                           "-o", "-o x.png a.test b.test"}) {
     RunResult r = runVkrt(args);
     EXPECT_EQ(r.exitCode, 1) << args << "\n" << r.output;
     EXPECT_NE(r.output.find("vkrt: error: "), std::string::npos) << r.output;

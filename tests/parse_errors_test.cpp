@@ -83,7 +83,7 @@ TEST_P(ParseError, ParserReportsFileLineAndMessage) {
   try {
     SceneDesc s = parseScene(c.text, "bad.test");
     // Output problems are found when the output is resolved, before rendering.
-    resolveOutput(s, std::nullopt);
+    resolveOutput(s, RenderRequest{});
     FAIL() << "no error for " << c.name;
   } catch (const SceneError& e) {
     auto firstError = std::find_if(e.diagnostics().begin(), e.diagnostics().end(),

@@ -79,10 +79,11 @@ std::vector<Accepted> acceptedInputs() {
        [](const SceneDesc& s) { EXPECT_EQ(s.spheres[0].worldFromObject, dmat4(1.0)); }},
       {"ExtraArgumentsToOutput", kOk + "output a.png b.png\n", 3, "'output' takes 1 argument",
        [](const SceneDesc& s) { EXPECT_EQ(s.output, "a.png"); }},
-      {"OutputNotPng", kOk + "output render.ppm\n", 3,
-       "output file 'render.ppm' is not named .png: vkrt writes PNG only, and writes it under that name",
-       [](const SceneDesc& s) { EXPECT_EQ(s.output, "render.ppm"); }},
-      {"OutputWithoutExtension", kOk + "output out.d/render\n", 3, "output file 'out.d/render' is not named .png",
+      {"OutputNotPngOrPpm", kOk + "output render.bmp\n", 3,
+       "output file 'render.bmp' is not named .png or .ppm: vkrt writes PNG, under that name",
+       [](const SceneDesc& s) { EXPECT_EQ(s.output, "render.bmp"); }},
+      {"OutputWithoutExtension", kOk + "output out.d/render\n", 3,
+       "output file 'out.d/render' is not named .png or .ppm",
        [](const SceneDesc& s) { EXPECT_EQ(s.output, "out.d/render"); }},
   };
 }
@@ -184,6 +185,8 @@ TEST(ParseWarnings, ByteOrderMarkIsSkippedSilently) {
 
 TEST(ParseWarnings, CleanFilesHaveNone) {
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "maxdepth 2\noutput x.PNG\nsphere 0 0 0 1\n", "ok.test").warnings.empty());
+  EXPECT_TRUE(parseSceneWithWarnings(kOk + "output render.ppm\n", "ok.test").warnings.empty());   // written as PPM
+  EXPECT_TRUE(parseSceneWithWarnings(kOk + "output RENDER.PPM\n", "ok.test").warnings.empty());
   for (const std::string& name : projectSceneNames()) {
     ParsedScene p = parseSceneFileWithWarnings(sourcePath("scenes/" + name + ".test"));
     EXPECT_TRUE(p.warnings.empty()) << name << ": " << p.warnings.front().format();

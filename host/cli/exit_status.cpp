@@ -51,4 +51,20 @@ int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE
   }
 }
 
+std::string exitStatusName(int status) {
+  switch (status) {
+    case kExitOk: return "ok";
+    case kExitUsage: return "usage error";
+    case kExitScene: return "scene error";
+    case kExitDevice: return "device error";
+    case kExitIo: return "I/O error";
+    case kExitDiffers: return "images differ";
+    case kExitOutOfMemory: return "out of memory";
+    case kExitInternal: return "internal error";
+    default:
+      if (status > kExitSignalBase) return "stopped by signal " + std::to_string(status - kExitSignalBase);
+      return "status " + std::to_string(status);
+  }
+}
+
 }  // namespace vkrt

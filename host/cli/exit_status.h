@@ -29,4 +29,12 @@ struct ErrorContext {
 // Prints the message of `error` (any exception) on `err` and returns its exit status.
 int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE* err);
 
+// What a status means, in two or three words ("scene error", "stopped by signal 2").
+std::string exitStatusName(int status);
+
+// The status of a run of several scenes: the highest of theirs. By the table above that puts
+// a signal over a bug over memory over I/O over the device over the scene over the command
+// line, and any failure over success.
+inline int worseExitStatus(int a, int b) { return a > b ? a : b; }
+
 }  // namespace vkrt

@@ -2,18 +2,29 @@
 #include "cli/options.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
+
+#include "image/image_file.h"
+#include "scene/parse.h"   // kMaxImageEdge
 
 namespace vkrt {
 
 const char* usageText() {
-  return "usage: vkrt [options] SCENE.test\n"
+  return "usage: vkrt [options] SCENE.test [SCENE.test ...]\n"
          "       vkrt diff [comparison options] A.png B.png\n"
          "\n"
-         "Renders a CSE167 scene file to a PNG image, or compares two images.\n"
+         "Renders CSE167 scene files to PNG (or PPM) images, or compares two images.\n"
+         "Several scenes are rendered in one run, one line each, then a summary; the exit\n"
+         "status is then the highest of theirs.\n"
          "\n"
          "options:\n"
-         "  -o, --output FILE      write the image to FILE (overrides the scene's 'output')\n"
+         "  -o, --output FILE      write the image to FILE (overrides the scene's 'output');\n"
+         "                         FILE.ppm writes binary PPM, any other name PNG\n"
+         "  -o, --output DIR/      write each image into DIR (a trailing '/'): under the file name\n"
+         "                         of the scene's 'output', or the scene's stem + .png without one\n"
+         "  --size WxH             render at W x H pixels instead of the scene's size (same camera)\n"
+         "  --scale F              render at the scene's size times F (rounded, at least 1x1)\n"
          "  --backend vulkan|cpu   renderer: 'vulkan' (default: a compute shader on a GPU, or on\n"
          "                         the CPU through lavapipe) or 'cpu' (the double-precision reference)\n"
          "  --device N|NAME        Vulkan device by index or part of its name (see --list-devices);\n"
@@ -57,7 +68,8 @@ const char* usageText() {
          "  5    images differ beyond the thresholds (diff, --check, --compare)\n"
          "  6    out of memory (host or device), also when found before allocating\n"
          "  70   internal error: a bug in vkrt\n"
-         "  128+N  stopped by signal N (130: Ctrl-C, 143: SIGTERM); nothing written\n";
+         "  128+N  stopped by signal N (130: Ctrl-C, 143: SIGTERM); nothing written\n"
+         "  several scenes: the highest of their statuses (a signal stops the run)\n";
 }
 
 namespace {
@@ -72,11 +84,38 @@ int integerValue(const std::string& option, const std::string& v, int lo, int hi
   return n;
 }
 
+// --size WxH, each side from 1 to kMaxImageEdge.
+void sizeValue(const std::string& v, int& width, int& height) {
+  auto x = v.find('x');
+  auto side = [&](const std::string& s) {
+    int n = 0;
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
+    return ec == std::errc() && end == s.data() + s.size() && n >= 1 && n <= kMaxImageEdge ? n : 0;
+  };
+  if (x != std::string::npos) {
+    width = side(v.substr(0, x));
+    height = side(v.substr(x + 1));
+  }
+  if (x == std::string::npos || width == 0 || height == 0)
+    throw UsageError("--size expects WIDTHxHEIGHT, each from 1 to " + std::to_string(kMaxImageEdge) +
+                     " (e.g. 320x240), got '" + v + "'");
+}
+
+// --scale F: a finite number greater than 0.
+double scaleValue(const std::string& v) {
+  double f = 0;
+  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
+  if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || !(f > 0))
+    throw UsageError("--scale expects a number greater than 0 (e.g. 0.5), got '" + v + "'");
+  return f;
+}
+
 }  // namespace
 
 Options parseOptions(const std::vector<std::string>& args) {
   Options o;
-  std::optional<std::string> scene;
+  std::vector<std::string> scenes;
+  std::optional<std::string> output;   // -o
   std::vector<std::string> images;   // diff's operands
   bool endOfOptions = false;
   std::size_t first = 0;
@@ -105,13 +144,16 @@ Options parseOptions(const std::vector<std::string>& args) {
     if ((endOfOptions || a.empty() || a[0] != '-' || a == "-") && o.diffCommand) {
       images.push_back(a);
     } else if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
-      if (scene) throw UsageError("more than one scene file given ('" + *scene + "' and '" + a + "')");
-      scene = a;
+      scenes.push_back(a);
     } else if (a == "--") {
       endOfOptions = true;
     } else if (name == "-o" || name == "--output") {
-      o.request.output = take(name);
-      if (o.request.output->empty()) throw UsageError("option " + name + " needs a non-empty file name");
+      output = take(name);
+      if (output->empty()) throw UsageError("option " + name + " needs a non-empty file name");
+    } else if (name == "--size") {
+      sizeValue(take(name), o.request.width, o.request.height);
+    } else if (name == "--scale") {
+      o.request.scale = scaleValue(take(name));
     } else if (name == "--backend") {
       std::string b = take(name);
       if (b == "cpu")
@@ -192,9 +234,27 @@ Options parseOptions(const std::vector<std::string>& args) {
   if (comparing && !o.checkAgainst && !o.compare)
     throw UsageError("--max-pixels-over, --max-diff, --json and --diff need --check REF.png or --compare (or vkrt diff)");
   if (o.compare && o.checkAgainst) throw UsageError("--compare and --check do not go together");
+  if (o.request.width > 0 && o.request.scale > 0) throw UsageError("--size and --scale do not go together");
+  if (output && output->back() == '/') {
+    o.request.outputDir = *output;
+  } else if (output) {
+    if (scenes.size() > 1)
+      throw UsageError("-o " + *output + " names one file, for " + std::to_string(scenes.size()) +
+                       " scenes: give a folder (-o DIR/, with the '/') or leave -o out");
+    o.request.output = *output;
+    if (!hasImageExtension(*output)) {
+      std::string w = "output file '" + *output + "' is not named .png or .ppm: vkrt writes PNG, under that name";
+      if (o.request.strict) throw UsageError(w + " [--strict]");
+      o.warnings.push_back(w);
+    }
+  }
+  if (scenes.size() > 1 && (o.compare || o.checkAgainst))
+    throw UsageError(std::string(o.compare ? "--compare" : "--check") + " takes one scene, got " +
+                     std::to_string(scenes.size()));
   if (!o.help && !o.version && !o.listDevices) {
-    if (!scene) throw UsageError("no scene file given");
-    o.request.scenePath = *scene;
+    if (scenes.empty()) throw UsageError("no scene file given");
+    o.request.scenePath = scenes.front();
+    o.scenes = scenes;
   }
   return o;
 }

@@ -7,18 +7,17 @@
 #include <vector>
 
 #include "cli/image_check.h"
+#include "errors.h"   // UsageError
 #include "render/render.h"
 
 namespace vkrt {
 
-// A bad command line: exit status 1.
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 struct Options {
-  RenderRequest request;
+  RenderRequest request;             // scenePath: the first scene
+  std::vector<std::string> scenes;   // every scene given, in order (more than one: a batch)
+  // Warnings about the command line itself (-o FILE with an extension vkrt does not write),
+  // for main() to print; with --strict they are usage errors instead.
+  std::vector<std::string> warnings;
   bool stats = false;
   bool quiet = false;            // print nothing but errors (warnings left out)
   bool help = false;

@@ -4,19 +4,13 @@
 // compressed stream in memory, three times the image in all.
 #include "image/png.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <cstdlib>
-#include <filesystem>
+#include <cstring>
 #include <vector>
 
 #include <zlib.h>
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
+#include "image/atomic_file.h"
 #include "interrupt.h"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -33,24 +27,6 @@
 
 namespace vkrt {
 namespace {
-
-std::string directoryOf(const std::string& path) {
-  std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  return parent.empty() ? std::string(".") : parent.string();
-}
-
-// Writes all of `data` to `fd`, or throws IoError naming `path`.
-void writeAll(int fd, const std::uint8_t* data, std::size_t size, const std::string& path) {
-  while (size > 0) {
-    ssize_t n = ::write(fd, data, size);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw IoError("cannot write '" + path + "': " + std::strerror(errno));
-    }
-    data += n;
-    size -= static_cast<std::size_t>(n);
-  }
-}
 
 void putBigEndian(std::vector<std::uint8_t>& out, std::uint32_t v) {
   for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>(v >> shift));
@@ -144,48 +120,8 @@ void writePngStream(int fd, const Image& image, const std::string& path) {
 
 }  // namespace
 
-void checkOutputWritable(const std::string& path) {
-  if (path.empty()) throw IoError("output path is empty");
-  std::string dir = directoryOf(path);
-  struct stat st {};
-  if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
-    throw IoError("output directory '" + dir + "' does not exist");
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw IoError("output path '" + path + "' is a directory");
-  // Creating a file is the only reliable test (permissions, read-only mounts, root).
-  std::string probe = (std::filesystem::path(dir) / ".vkrt-XXXXXX.probe").string();
-  int fd = ::mkstemps(probe.data(), 6);
-  if (fd < 0) throw IoError("output directory '" + dir + "' is not writable: " + std::strerror(errno));
-  ::close(fd);
-  ::unlink(probe.c_str());
-}
-
 void writePngAtomic(const Image& image, const std::string& path) {
-  std::string tmpl = (std::filesystem::path(directoryOf(path)) / ".vkrt-XXXXXX.png.tmp").string();
-  int fd = ::mkstemps(tmpl.data(), 8);
-  if (fd < 0) throw IoError("cannot create a temporary file in '" + directoryOf(path) + "': " + std::strerror(errno));
-  registerTemporaryFile(tmpl.c_str());
-  try {
-    // The file gets the permissions a plain create would give it (mkstemp makes it 0600).
-    mode_t mask = ::umask(0);
-    ::umask(mask);
-    ::fchmod(fd, 0666 & ~mask);
-    waitForSignalIfTesting("write");
-    writePngStream(fd, image, path);
-    if (::fsync(fd) != 0 && errno != EINVAL) throw IoError("cannot write '" + path + "': " + std::strerror(errno));
-    int closed = ::close(fd);
-    fd = -1;
-    if (closed != 0) throw IoError("cannot write '" + path + "': " + std::strerror(errno));
-    throwIfInterrupted();   // the last moment at which the old file is still there
-    if (::rename(tmpl.c_str(), path.c_str()) != 0)
-      throw IoError("cannot write '" + path + "': " + std::strerror(errno));
-  } catch (...) {
-    if (fd >= 0) ::close(fd);
-    ::unlink(tmpl.c_str());
-    registerTemporaryFile(nullptr);
-    throw;
-  }
-  registerTemporaryFile(nullptr);
+  writeFileAtomic(path, ".png.tmp", [&](int fd) { writePngStream(fd, image, path); });
 }
 
 Image readImage(const std::string& path) {

@@ -4,19 +4,16 @@
 #include <string>
 
 #include "errors.h"
+#include "image/atomic_file.h"   // checkOutputWritable
 #include "image/image.h"
 
 namespace vkrt {
-
-// Throws IoError unless `path` can be created or replaced: its directory exists and is
-// writable, and `path` itself is not a directory.
-void checkOutputWritable(const std::string& path);
 
 // Writes `image` to a temporary file beside `path` and renames it over `path`, so an existing
 // file is replaced whole or not at all. Throws IoError; no temporary file is left behind.
 void writePngAtomic(const Image& image, const std::string& path);
 
-// Reads a PNG or JPEG as 8-bit RGB. Throws IoError.
+// Reads a PNG, a binary PPM (P6) or a JPEG as 8-bit RGB. Throws IoError.
 Image readImage(const std::string& path);
 
 }  // namespace vkrt

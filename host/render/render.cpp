@@ -1,13 +1,17 @@
-// parse -> build -> render (CPU reference or Vulkan) -> PNG, with a timer per stage.
+// parse -> build -> render (CPU reference or Vulkan) -> PNG or PPM, with a timer per stage.
 #include "render/render.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <thread>
 
 #include "errors.h"
 #include "gpu/vulkan_renderer.h"
+#include "image/image_file.h"
 #include "image/png.h"
 #include "interrupt.h"
 #include "scene/flatten.h"
@@ -41,12 +45,15 @@ Image renderWithCpu(const RenderRequest& request, const SceneDesc& scene, Progre
 }
 
 Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress,
-                       RenderReport& report) {
+                       RenderReport& report, RenderSession& session) {
   auto t0 = std::chrono::steady_clock::now();
   // The device first: without one there is nothing to build for.
-  Context context(ContextOptions{request.device, request.validation});
-  report.instanceSeconds = context.instanceSeconds();
-  report.deviceSeconds = context.deviceSeconds();
+  bool made = false;
+  const Context& context = session.context(request, made);
+  if (made) {
+    report.instanceSeconds = context.instanceSeconds();
+    report.deviceSeconds = context.deviceSeconds();
+  }
   report.backend = std::string("vulkan (") + context.properties().deviceName + ")";
   double setup = secondsSince(t0);
 
@@ -96,7 +103,54 @@ void checkFinite(const RenderRequest& request, const SceneDesc& scene, const Ren
                        Severity::Error}});
 }
 
+// --size and --scale: the scene's camera as it is, sampled at another resolution. A size
+// beyond the parser's limit is refused as the command line's (the file is fine).
+void applySizeOverride(const RenderRequest& request, SceneDesc& scene) {
+  int w = scene.width, h = scene.height;
+  std::string what;
+  if (request.width > 0 && request.height > 0) {
+    w = request.width;
+    h = request.height;
+    what = "--size";
+  } else if (request.scale > 0) {
+    auto scaled = [&](int edge) {
+      double v = std::round(static_cast<double>(edge) * request.scale);
+      return v < 1.0 ? 1.0 : v;
+    };
+    double sw = scaled(scene.width), sh = scaled(scene.height);
+    if (sw > kMaxImageEdge || sh > kMaxImageEdge) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%g", request.scale);
+      throw UsageError("--scale " + std::string(buf) + " makes " + scene.sourcePath + "'s " +
+                       std::to_string(scene.width) + "x" + std::to_string(scene.height) + " image " +
+                       std::to_string(static_cast<long long>(sw)) + "x" + std::to_string(static_cast<long long>(sh)) +
+                       ", larger than " + std::to_string(kMaxImageEdge) + " on a side");
+    }
+    w = static_cast<int>(sw);
+    h = static_cast<int>(sh);
+  }
+  scene.width = w;
+  scene.height = h;
+}
+
+// -o DIR/: the file name of the scene's `output` line, or the scene file's stem + ".png".
+std::string pathInOutputDir(const SceneDesc& scene, const std::string& dir) {
+  std::filesystem::path name = scene.outputLine > 0 ? std::filesystem::path(scene.output).filename()
+                                                    : std::filesystem::path(scene.sourcePath).stem();
+  if (scene.outputLine == 0) name += ".png";
+  return (std::filesystem::path(dir) / name).string();
+}
+
 }  // namespace
+
+RenderSession::RenderSession() = default;
+RenderSession::~RenderSession() = default;
+
+const Context& RenderSession::context(const RenderRequest& request, bool& made) {
+  made = !context_;
+  if (!context_) context_ = std::make_unique<Context>(ContextOptions{request.device, request.validation});
+  return *context_;
+}
 
 unsigned long long availableMemoryBytes() {
   if (const char* test = std::getenv("VKRT_TEST_MEMORY_AVAILABLE_MB"))   // for the tests only
@@ -109,10 +163,11 @@ unsigned long long availableMemoryBytes() {
   return 0;
 }
 
-std::string resolveOutput(const SceneDesc& scene, const std::optional<std::string>& override) {
-  if (override) {
-    checkOutputWritable(*override);
-    return *override;
+std::string resolveOutput(const SceneDesc& scene, const RenderRequest& request) {
+  if (request.output || request.outputDir) {
+    std::string path = request.output ? *request.output : pathInOutputDir(scene, *request.outputDir);
+    checkOutputWritable(path);
+    return path;
   }
   try {
     checkOutputWritable(scene.output);
@@ -124,14 +179,18 @@ std::string resolveOutput(const SceneDesc& scene, const std::optional<std::strin
 }
 
 Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
-                          bool checkOutput) {
+                          bool checkOutput, RenderSession* session) {
   auto t0 = std::chrono::steady_clock::now();
   ParsedScene parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict});
   SceneDesc& scene = parsed.scene;
   report.parseSeconds = secondsSince(t0);
   if (!parsed.warnings.empty() && request.onWarnings) request.onWarnings(parsed.warnings);
   if (request.maxDepth >= 0) scene.maxDepth = request.maxDepth;
-  if (checkOutput) report.outputPath = resolveOutput(scene, request.output);
+  applySizeOverride(request, scene);
+  if (checkOutput) {
+    report.outputPath = resolveOutput(scene, request);
+    if (request.onOutput) request.onOutput(report.outputPath);
+  }
   checkImageFitsInMemory(scene);
   report.width = scene.width;
   report.height = scene.height;
@@ -140,19 +199,22 @@ Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, R
   report.spheres = scene.spheres.size();
   report.lights = scene.lights.size();
 
-  Image image = request.backend == Backend::Cpu ? renderWithCpu(request, scene, progress, report)
-                                                : renderWithVulkan(request, scene, progress, report);
+  RenderSession ownSession;   // for this render only, when not lent one
+  Image image = request.backend == Backend::Cpu
+                    ? renderWithCpu(request, scene, progress, report)
+                    : renderWithVulkan(request, scene, progress, report, session ? *session : ownSession);
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
   checkFinite(request, scene, report);
   return image;
 }
 
-RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image) {
+RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image,
+                             RenderSession* session) {
   RenderReport report;
-  Image rendered = renderSceneInMemory(request, progress, report, true);
+  Image rendered = renderSceneInMemory(request, progress, report, true, session);
   auto t0 = std::chrono::steady_clock::now();
-  writePngAtomic(rendered, report.outputPath);
+  writeImageAtomic(rendered, report.outputPath);
   report.writeSeconds = secondsSince(t0);
   if (image) *image = std::move(rendered);
   return report;

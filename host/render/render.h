@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,14 @@ enum class Backend { Vulkan, Cpu };
 struct RenderRequest {
   std::string scenePath;
   std::optional<std::string> output;   // overrides the scene's `output`
+  // A folder for the image instead (-o DIR/): DIR/ + the file name of the scene's `output`,
+  // or DIR/ + the scene file's stem + ".png" when the scene has no `output` line.
+  std::optional<std::string> outputDir;
+  // The image size instead of the scene's `size` (the camera's fovy kept, the pixel centres
+  // of SPEC section 3 for the new size): width and height when both > 0 (--size WxH), else
+  // the scene's size times `scale` when > 0 (--scale F), rounded, at least 1x1.
+  int width = 0, height = 0;
+  double scale = 0;
   Backend backend = Backend::Vulkan;
   int threads = 0;                     // CPU backend: 0 = every hardware thread
   std::string device;                  // Vulkan: "" (choose), an index or part of a name
@@ -33,6 +42,9 @@ struct RenderRequest {
   // Every warning is an error: the scene's (SPEC section 8), and pixels whose colour came
   // out NaN or infinite (then no image is written).
   bool strict = false;
+  // Called with the output path once it is resolved and checked, before the render starts;
+  // it may throw to refuse the path (a batch refuses a path an earlier scene wrote).
+  std::function<void(const std::string&)> onOutput;
   // Called once with the scene's warnings, if it has any, after parsing and before the
   // render starts (not called with --strict: they are errors then).
   std::function<void(const std::vector<Diagnostic>&)> onWarnings;
@@ -50,22 +62,42 @@ struct RenderReport {
   RayCounts rays;
 };
 
+// What scenes rendered one after another in one process share: the Vulkan context (instance
+// and logical device), made at the first Vulkan render and kept for the next. One session
+// serves one device choice (the first request's `device` and `validation`).
+class RenderSession {
+ public:
+  RenderSession();
+  ~RenderSession();
+  RenderSession(const RenderSession&) = delete;
+  RenderSession& operator=(const RenderSession&) = delete;
+  // The context, made now on the first call (throws DeviceError); `made` says whether this
+  // call made it (its instance and device times are then this render's).
+  const Context& context(const RenderRequest& request, bool& made);
+
+ private:
+  std::unique_ptr<Context> context_;
+};
+
 // Throws SceneError (bad scene, including an unwritable `output`), IoError (files),
 // DeviceError (Vulkan), OutOfMemory (also before allocating an image larger than the memory
-// available), InternalError, Interrupted.
-// `image`, when given, receives the rendered image (for --check).
-RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image = nullptr);
+// available), UsageError (a --size or --scale beyond the largest image), InternalError,
+// Interrupted. The image is written as its name says (image/image_file.h: .ppm as PPM, else
+// PNG). `image`, when given, receives the rendered image (for --check). `session`, when
+// given, lends the Vulkan context of earlier renders (without: one is made and destroyed).
+RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image = nullptr,
+                             RenderSession* session = nullptr);
 
 // The same without writing the image (--compare); `checkOutput` also resolves and checks the
 // output path first, as renderSceneFile does.
 Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
-                          bool checkOutput);
+                          bool checkOutput, RenderSession* session = nullptr);
 
 // The memory the machine has available now (MemAvailable), or 0 when unknown.
 unsigned long long availableMemoryBytes();
 
 // The output path for a parsed scene, checked before rendering. A bad `output` line in the
-// scene is a SceneError at that line; a bad override is an IoError.
-std::string resolveOutput(const SceneDesc& scene, const std::optional<std::string>& override);
+// scene is a SceneError at that line; a bad override (`output` or `outputDir`) is an IoError.
+std::string resolveOutput(const SceneDesc& scene, const RenderRequest& request);
 
 }  // namespace vkrt

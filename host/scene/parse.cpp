@@ -366,9 +366,10 @@ class Parser {
     std::string_view name = args_[0];
     std::string_view base = name.substr(name.find_last_of('/') + 1);   // npos + 1 == 0
     std::size_t dot = base.rfind('.');
-    if (dot == std::string_view::npos || !equalIgnoringCase(base.substr(dot + 1), "png"))
+    if (dot == std::string_view::npos ||
+        !(equalIgnoringCase(base.substr(dot + 1), "png") || equalIgnoringCase(base.substr(dot + 1), "ppm")))
       warn(WarningKind::OutputName, "output file " + quoted(name) +
-                                        " is not named .png: vkrt writes PNG only, and writes it under that name");
+                                        " is not named .png or .ppm: vkrt writes PNG, under that name");
     scene_.output = std::string(name);
     scene_.outputLine = line_;
   }

@@ -1,0 +1,27 @@
+// PPM writing: the header, then the image's rows as they are in memory (Image is already
+// 8-bit RGB, top row first, as P6 wants), a band of rows per write() so that a Ctrl-C is
+// seen during a large image.
+#include "image/ppm.h"
+
+#include <algorithm>
+
+#include "image/atomic_file.h"
+#include "interrupt.h"
+
+namespace vkrt {
+
+void writePpmAtomic(const Image& image, const std::string& path) {
+  writeFileAtomic(path, ".ppm.tmp", [&](int fd) {
+    std::string header = "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
+    writeAll(fd, reinterpret_cast<const std::uint8_t*>(header.data()), header.size(), path);
+    constexpr int kRowsPerWrite = 64;
+    for (int y = 0; y < image.height; y += kRowsPerWrite) {
+      throwIfInterrupted();
+      int rows = std::min(kRowsPerWrite, image.height - y);
+      writeAll(fd, image.pixel(0, y), static_cast<std::size_t>(rows) * static_cast<std::size_t>(image.width) * 3,
+               path);
+    }
+  });
+}
+
+}  // namespace vkrt

@@ -1,0 +1,129 @@
+// Output formats by file name: .ppm writes binary PPM (atomically, as PNG), any other name
+// PNG; a name vkrt does not write as named gets a warning.
+#include <cstring>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "image/image_file.h"
+#include "image/png.h"
+#include "image/ppm.h"
+#include "test_support.h"
+
+using namespace vkrt;
+using namespace vkrt::test;
+
+namespace {
+
+const std::string kScene =
+    "size 40 30\ncamera 0 0 5 0 0 0 0 1 0 45\ndirectional 0 0 1 1 1 1\ndiffuse 0.5 0.2 0.9\nsphere 0 0 0 1\n";
+
+// A P6 file read by this test itself (not stb_image): "P6\nW H\n255\n" and the bytes.
+Image readP6(const std::string& path) {
+  std::string bytes = readFile(path);
+  int w = 0, h = 0, maxval = 0, consumed = 0;
+  if (std::sscanf(bytes.c_str(), "P6\n%d %d\n%d%n", &w, &h, &maxval, &consumed) != 3 || maxval != 255)
+    return Image();
+  Image img(w, h);
+  std::size_t start = static_cast<std::size_t>(consumed) + 1;   // the single whitespace after maxval
+  if (bytes.size() != start + img.rgb.size()) return Image();
+  std::memcpy(img.rgb.data(), bytes.data() + start, img.rgb.size());
+  return img;
+}
+
+std::size_t entries(const std::string& dir) {
+  std::size_t n = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++n;
+  return n;
+}
+
+Image gradient(int w, int h) {
+  Image img(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      std::uint8_t* p = img.pixel(x, y);
+      p[0] = static_cast<std::uint8_t>(x * 7);
+      p[1] = static_cast<std::uint8_t>(y * 13);
+      p[2] = static_cast<std::uint8_t>(x ^ y);
+    }
+  return img;
+}
+
+}  // namespace
+
+TEST(ImageFile, FormatByExtension) {
+  EXPECT_EQ(imageFormatFor("a.ppm"), ImageFormat::Ppm);
+  EXPECT_EQ(imageFormatFor("dir.png/A.PPM"), ImageFormat::Ppm);
+  EXPECT_EQ(imageFormatFor("a.png"), ImageFormat::Png);
+  EXPECT_EQ(imageFormatFor("a.bmp"), ImageFormat::Png);
+  EXPECT_EQ(imageFormatFor("dir.ppm/a"), ImageFormat::Png);
+  EXPECT_TRUE(hasImageExtension("x.PNG"));
+  EXPECT_TRUE(hasImageExtension("x.ppm"));
+  EXPECT_FALSE(hasImageExtension("x.bmp"));
+  EXPECT_FALSE(hasImageExtension("x.ppm/y"));
+}
+
+TEST(ImageFile, PpmHeaderBytesAndAtomicReplacement) {
+  std::string dir = freshDir("image-file/ppm");
+  Image img = gradient(5, 3);
+  writeFile(dir + "/a.ppm", "old contents");
+  writeImageAtomic(img, dir + "/a.ppm");
+  std::string bytes = readFile(dir + "/a.ppm");
+  ASSERT_EQ(bytes.size(), std::strlen("P6\n5 3\n255\n") + 45);
+  EXPECT_EQ(bytes.substr(0, 11), "P6\n5 3\n255\n");
+  EXPECT_EQ(std::memcmp(bytes.data() + 11, img.rgb.data(), 45), 0);
+  EXPECT_EQ(readImage(dir + "/a.ppm").rgb, img.rgb);   // and what vkrt diff reads
+  EXPECT_EQ(entries(dir), 1u);                         // no temporary file left
+  EXPECT_THROW(writePpmAtomic(img, dir + "/missing/a.ppm"), IoError);
+  EXPECT_EQ(entries(dir), 1u);
+}
+
+// The same render as PPM and as PNG: the same pixels.
+TEST(ImageFile, CliWritesPpmWithThePngsPixels) {
+  std::string dir = freshDir("image-file/cli-ppm");
+  writeFile(dir + "/s.test", kScene);
+  writeFile(dir + "/named.test", kScene + "output " + dir + "/named.PPM\n");
+  RunResult png = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/s.test");
+  ASSERT_EQ(png.exitCode, 0) << png.output;
+  RunResult ppm = runVkrt("--backend cpu -o " + dir + "/o.ppm " + dir + "/s.test");
+  ASSERT_EQ(ppm.exitCode, 0) << ppm.output;
+  EXPECT_EQ(ppm.output.find("warning"), std::string::npos) << ppm.output;
+  RunResult named = runVkrt("--backend cpu " + dir + "/named.test");
+  ASSERT_EQ(named.exitCode, 0) << named.output;
+  EXPECT_EQ(named.output.find("warning"), std::string::npos) << named.output;
+  Image reference = readImage(dir + "/o.png");
+  for (const char* f : {"/o.ppm", "/named.PPM"}) {
+    Image back = readP6(dir + f);
+    ASSERT_EQ(back.width, 40) << f;
+    ASSERT_EQ(back.height, 30) << f;
+    EXPECT_TRUE(back.rgb == reference.rgb) << f;
+  }
+  EXPECT_GT(reference.pixel(20, 15)[2], 100);
+}
+
+// Any other name: PNG bytes under that name, and a warning (from -o: the command line's;
+// with --strict a usage error and nothing written).
+TEST(ImageFile, OtherExtensionsWarnAndWritePng) {
+  std::string dir = freshDir("image-file/bmp");
+  writeFile(dir + "/s.test", kScene);
+  RunResult r = runVkrt("--backend cpu -o " + dir + "/o.bmp " + dir + "/s.test");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("vkrt: warning: output file '" + dir +
+                          "/o.bmp' is not named .png or .ppm: vkrt writes PNG, under that name"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(readFile(dir + "/o.bmp").substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(readImage(dir + "/o.bmp").width, 40);
+  RunResult q = runVkrt("-q --backend cpu -o " + dir + "/q.bmp " + dir + "/s.test");
+  EXPECT_EQ(q.exitCode, 0);
+  EXPECT_EQ(q.output, "");
+  RunResult strict = runVkrt("--strict --backend cpu -o " + dir + "/strict.bmp " + dir + "/s.test");
+  EXPECT_EQ(strict.exitCode, 1) << strict.output;
+  EXPECT_FALSE(fileExists(dir + "/strict.bmp"));
+  // In the scene: the parser's warning (parse_warnings_test.cpp), PNG bytes all the same.
+  writeFile(dir + "/bmp.test", kScene + "output " + dir + "/scene.bmp\n");
+  RunResult scene = runVkrt("--backend cpu " + dir + "/bmp.test");
+  EXPECT_EQ(scene.exitCode, 0) << scene.output;
+  EXPECT_NE(scene.output.find("is not named .png or .ppm"), std::string::npos) << scene.output;
+  EXPECT_EQ(readFile(dir + "/scene.bmp").substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+}
