@@ -119,7 +119,7 @@ const float kInfinity = 3.402823466e38;
 vec3 rayOrigin, rayDir;
 float rayTMin, bestT, bestB1, bestB2;
 vec3 throughput, radiance, hitPoint, hitNormal, shadowDir, lightColor;
-float shadowTMax, nDotL, hitTMin;
+float shadowTMax, nDotL, hitTMin, hitGrazing;
 uint phase, depth, lightIndex, sp, hitPrim, hitMaterial;
 // A local array is per-lane scratch memory in llvmpipe; its size must be a constant.
 uint stack[kTraversalStackSize];     // entries (kStackLeafBit) of nodes whose boxes the ray enters
@@ -262,12 +262,17 @@ void pushChildren(uint left, vec3 origin, vec3 invDir, float tMin, float tMax) {
   }
 }
 
-// The secondary-ray offset at p on a primitive (the policy: gpu_types.h, "Secondary rays"); p
-// is in the frame centred on the geometry.
-float secondaryTMin(float primitiveOffset, vec3 p) {
+// The secondary-ray offsets at p on a primitive (the policy: gpu_types.h, "Secondary rays");
+// p is in the frame centred on the geometry. Sets hitTMin and hitGrazing.
+void setSecondaryOffsets(float primitiveOffset, vec3 p) {
   vec3 a = max(abs(p), abs(p - pc.cameraOrigin.xyz));
-  return max(primitiveOffset, kOffsetPerMagnitude * max(max(a.x, a.y), a.z));
+  float magnitude = max(max(a.x, a.y), a.z);
+  hitTMin = max(primitiveOffset, kOffsetPerMagnitude * magnitude);
+  hitGrazing = kGrazingPerMagnitude * magnitude;
 }
+
+// The tMin of a secondary ray leaving the hit with |N.dir| = cosine.
+float secondaryTMin(float cosine) { return max(hitTMin, hitGrazing / max(cosine, 1e-30)); }
 
 // The nearest hit is known: ambient and emission, then the lights one by one.
 void beginShading() {
@@ -277,7 +282,7 @@ void beginShading() {
     vec3 pObject = (s.objectFromWorld * vec4(rayOrigin, 1.0)).xyz + bestT * (s.objectFromWorld * vec4(rayDir, 0.0)).xyz;
     hitNormal = normalize(transpose(mat3(s.objectFromWorld)) * (pObject - s.centerRadius.xyz));
     hitMaterial = s.materialIndex;
-    hitTMin = secondaryTMin(s.rayOffset, hitPoint);
+    setSecondaryOffsets(s.rayOffset, hitPoint);
   } else {
     GpuTriangle tri = loadTriangle(hitPrim);
     if (kHasSmoothNormals && tri.normalsIndex != kNoNormals) {
@@ -287,7 +292,7 @@ void beginShading() {
       hitNormal = vec3(tri.p0.w, tri.p1.w, tri.p2.w);
     }
     hitMaterial = tri.materialIndex;
-    hitTMin = secondaryTMin(tri.rayOffset, hitPoint);
+    setSecondaryOffsets(tri.rayOffset, hitPoint);
   }
   GpuMaterial m = loadMaterial(hitMaterial);
   radiance += throughput * (m.ambient.rgb + m.emission.rgb);
@@ -324,7 +329,8 @@ void reflectOrFinish() {
     ++depth;
     ++reflectionRays;
     throughput *= specular;
-    startRay(hitPoint, normalize(rayDir - 2.0 * dot(rayDir, hitNormal) * hitNormal), hitTMin);
+    vec3 mirror = normalize(rayDir - 2.0 * dot(rayDir, hitNormal) * hitNormal);
+    startRay(hitPoint, mirror, secondaryTMin(abs(dot(mirror, hitNormal))));
   } else {
     phase = kPhaseDone;
   }
@@ -395,7 +401,7 @@ void traversalStep(inout uint step) {
   bool shadow = phase == kPhaseShadow;
   vec3 origin = shadow ? hitPoint : rayOrigin;
   vec3 dir = shadow ? shadowDir : rayDir;
-  float tMin = shadow ? hitTMin : rayTMin;
+  float tMin = shadow ? secondaryTMin(nDotL) : rayTMin;
   float tMax = shadow ? shadowTMax : bestT;
   if (nextIsInterior()) {
     vec3 invDir = safeInverse(dir);
@@ -452,7 +458,7 @@ void saveState(uint slot) {
   states[slot].throughput = vec4(throughput, bestB1);
   states[slot].radiance = vec4(radiance, bestB2);
   states[slot].hitPoint = vec4(hitPoint, hitTMin);
-  states[slot].hitNormal = vec4(hitNormal, 0.0);
+  states[slot].hitNormal = vec4(hitNormal, hitGrazing);
   states[slot].shadowDir = vec4(shadowDir, shadowTMax);
   states[slot].lightColor = vec4(lightColor, nDotL);
   states[slot].phase = phase;
@@ -476,6 +482,7 @@ void loadState(uint slot) {
   hitPoint = states[slot].hitPoint.xyz;
   hitTMin = states[slot].hitPoint.w;
   hitNormal = states[slot].hitNormal.xyz;
+  hitGrazing = states[slot].hitNormal.w;
   shadowDir = states[slot].shadowDir.xyz;
   shadowTMax = states[slot].shadowDir.w;
   lightColor = states[slot].lightColor.rgb;

@@ -106,10 +106,17 @@ TEST(RayOffset, CourseScenesKeepTheCourseOffsetEverywhere) {
   }
 }
 
-TEST(RayOffset, FarFromTheFrameOrTheCameraTheOffsetGrowsWithTheMagnitude) {
-  EXPECT_EQ(secondaryRayTMin(kCourse, dvec3(1, -2, 3), dvec3(0.5, 0, 0)), kCourse);
-  EXPECT_NEAR(secondaryRayTMin(kCourse, dvec3(0, -1e6, 3), dvec3(1, 1, 1)), 1e6 * gpu::kOffsetPerMagnitude, 1e-9);
-  EXPECT_NEAR(secondaryRayTMin(kCourse, dvec3(1, 1, 1), dvec3(0, 0, 2e6)), 2e6 * gpu::kOffsetPerMagnitude, 1e-9);
+TEST(RayOffset, FarFromTheFrameOrTheCameraAndNearGrazingTheOffsetGrows) {
+  auto at = [](dvec3 fromOrigin, dvec3 fromCamera, double cosine) {
+    return secondaryRayOffsets(kCourse, fromOrigin, fromCamera).at(cosine);
+  };
+  EXPECT_EQ(at(dvec3(1, -2, 3), dvec3(0.5, 0, 0), 1.0), kCourse);
+  EXPECT_NEAR(at(dvec3(0, -1e6, 3), dvec3(1, 1, 1), 1.0), 1e6 * gpu::kOffsetPerMagnitude, 1e-9);
+  EXPECT_NEAR(at(dvec3(1, 1, 1), dvec3(0, 0, 2e6), 1.0), 2e6 * gpu::kOffsetPerMagnitude, 1e-9);
+  // Nearly along the surface: 8 float32 ulps of the magnitude, over the cosine.
+  EXPECT_EQ(at(dvec3(3, 0, 0), dvec3(5, 0, 0), 0.1), kCourse);
+  EXPECT_DOUBLE_EQ(at(dvec3(3, 0, 0), dvec3(5, 0, 0), 1e-4), 5 * gpu::kGrazingPerMagnitude / 1e-4);
+  EXPECT_TRUE(std::isfinite(at(dvec3(0), dvec3(0), 0.0)));
 }
 
 // Pictures: the same small objects on a floor that fills the view, once 20 units wide and

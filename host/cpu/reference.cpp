@@ -153,7 +153,8 @@ class Tracer {
 
   // A hit's own colour, everything of SPEC 5 but the mirror term: A + Em + the lights, each
   // behind its shadow ray (which starts `offset` from p).
-  dvec3 localShading(const Material& m, const dvec3& p, const dvec3& normal, const dvec3& eye, double offset,
+  dvec3 localShading(const Material& m, const dvec3& p, const dvec3& normal, const dvec3& eye,
+                     const SecondaryRayOffsets& offset,
                      RayCounts& counts) const {
     dvec3 color = m.ambient + m.emission;
     for (const Light& light : scene_.lights) {
@@ -172,7 +173,7 @@ class Tracer {
       if (nDotL <= 0.0) continue;   // SPEC 7: no diffuse and no specular from behind
       ++counts.shadow;
       Hit blocker;
-      if (intersect({p, toLight}, offset, distance, true, blocker)) continue;
+      if (intersect({p, toLight}, offset.at(nDotL), distance, true, blocker)) continue;
       dvec3 half = glm::normalize(toLight + eye);
       double nDotH = std::max(glm::dot(normal, half), 0.0);
       // pow(0, 0) = 1 (C's definition; the shader states the same).
@@ -202,10 +203,9 @@ class Tracer {
       dvec3 normal;
       std::uint32_t materialIndex = surfaceAt(hit, p, normal);
       const Material& m = scene_.materials[materialIndex];
-      const double offset =
-          secondaryRayTMin((hit.prim & gpu::kPrimSphereBit) ? offsets_.spheres[hit.prim & ~gpu::kPrimSphereBit]
-                                                            : offsets_.triangles[hit.prim],
-                           p - frameOrigin_, p - scene_.camera.from);
+      const SecondaryRayOffsets offset = secondaryRayOffsets(
+          (hit.prim & gpu::kPrimSphereBit) ? offsets_.spheres[hit.prim & ~gpu::kPrimSphereBit] : offsets_.triangles[hit.prim],
+          p - frameOrigin_, p - scene_.camera.from);
       radiance += throughput * localShading(m, p, normal, -ray.dir, offset, counts);
       // Possibly continue along the mirror direction.
       if (depth >= scene_.maxDepth || m.specular == dvec3(0.0)) break;
@@ -213,7 +213,7 @@ class Tracer {
       throughput *= m.specular;
       dvec3 r = ray.dir - 2.0 * glm::dot(ray.dir, normal) * normal;
       ray = {p, glm::normalize(r)};
-      tMin = offset;
+      tMin = offset.at(std::abs(glm::dot(ray.dir, normal)));
     }
     return radiance;
   }

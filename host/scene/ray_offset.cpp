@@ -235,10 +235,11 @@ PrimitiveOffsets primitiveOffsets(const SceneDesc& scene) {
   return result;
 }
 
-double secondaryRayTMin(double primitiveOffset, const dvec3& pFromOrigin, const dvec3& pFromCamera) {
+SecondaryRayOffsets secondaryRayOffsets(double primitiveOffset, const dvec3& pFromOrigin, const dvec3& pFromCamera) {
   double magnitude = std::max({std::abs(pFromOrigin.x), std::abs(pFromOrigin.y), std::abs(pFromOrigin.z),
                                std::abs(pFromCamera.x), std::abs(pFromCamera.y), std::abs(pFromCamera.z)});
-  return std::max(primitiveOffset, double{gpu::kOffsetPerMagnitude} * magnitude);
+  return {std::max(primitiveOffset, double{gpu::kOffsetPerMagnitude} * magnitude),
+          double{gpu::kGrazingPerMagnitude} * magnitude};
 }
 
 }  // namespace vkrt

@@ -3,6 +3,7 @@
 // numbers from here. Depends on the scene description only.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "scene/scene_desc.h"
@@ -26,9 +27,16 @@ struct PrimitiveOffsets {
 };
 PrimitiveOffsets primitiveOffsets(const SceneDesc& scene);
 
-// The tMin of a secondary ray leaving a hit point: the primitive's offset, or more far from
-// the float32 frame's origin and from the camera (pFromOrigin, pFromCamera), where float32
-// rounds the hit point more coarsely.
-double secondaryRayTMin(double primitiveOffset, const dvec3& pFromOrigin, const dvec3& pFromCamera);
+// The offsets of secondary rays leaving a hit point: the primitive's offset, or more far
+// from the float32 frame's origin and from the camera (pFromOrigin, pFromCamera), where
+// float32 rounds the hit point more coarsely, and more for a ray that leaves nearly along
+// the surface.
+struct SecondaryRayOffsets {
+  double tMin = 0.0;      // for a ray leaving along the normal
+  double grazing = 0.0;   // divided by |N.dir| for a ray leaving at an angle
+  // The tMin of a ray leaving with |N.dir| = cosine.
+  double at(double cosine) const { return std::max(tMin, grazing / std::max(cosine, 1e-30)); }
+};
+SecondaryRayOffsets secondaryRayOffsets(double primitiveOffset, const dvec3& pFromOrigin, const dvec3& pFromCamera);
 
 }  // namespace vkrt

@@ -25,7 +25,8 @@ using uint = std::uint32_t;
 // centre of its box in double precision), so a scene far from the origin gives float32 the
 // same small numbers.
 // A secondary ray (shadow or mirror) starts at the hit point p and ignores hits with
-//     t <= max(rayOffset, kOffsetPerMagnitude * max(|p - o|_max, |p - camera|_max))
+//     t <= max(rayOffset, kOffsetPerMagnitude * m, kGrazingPerMagnitude * m / |N.dir|),
+//     m = max(|p - o|_max, |p - camera|_max)
 // along its unit direction (o: the centre of the geometry's box), where rayOffset belongs to
 // the primitive that was hit (GpuTriangle, GpuSphere; host/scene/ray_offset.cpp):
 //  - Objects: each sphere, and each set of triangles connected through shared vertex
@@ -42,11 +43,17 @@ using uint = std::uint32_t;
 //  - The second term, 32 float32 ulps of the hit point's magnitude in the float32 frame and
 //    from the camera, keeps a ray off its own surface where float32 rounds p more coarsely
 //    than rayOffset. For the course's scenes it is below 1e-3 (magnitudes < 260).
+//  - The third, kGrazingPerMagnitude * magnitude / cos, with cos = |N.dir| against the
+//    shading normal, keeps a ray that leaves nearly along the surface (a light 0.001 degrees
+//    above a floor) from hitting that surface again: the float32 hit point may lie a few ulps
+//    below it, and the ray crosses that depth only after depth / cos. For the course's scenes
+//    it exceeds 1e-3 only for cos < 0.012 (within 0.7 degrees of grazing).
 // The primary (camera) ray takes every hit with t > 0.
 GPU_CONST float kSecondaryRayTMin = 1e-3f;
 GPU_CONST float kCourseSizeLow = 0.25f;   // the band of object sizes that keep 1e-3
 GPU_CONST float kCourseSizeHigh = 60.0f;
 GPU_CONST float kOffsetPerMagnitude = 3.814697265625e-6f;   // 2^-18: 32 ulps of float32
+GPU_CONST float kGrazingPerMagnitude = 4.76837158203125e-7f;   // 2^-21: 8 ulps of float32
 
 // A BVH leaf's primitive reference: triangle index, or sphere index with this bit set.
 GPU_CONST uint kPrimSphereBit = 0x80000000u;
@@ -228,7 +235,7 @@ struct GpuPathState {
   vec4 throughput;          // rgb weight of the current segment, w = barycentric b1 of the nearest hit
   vec4 radiance;            // rgb sum so far, w = barycentric b2 of the nearest hit
   vec4 hitPoint;            // xyz of the shaded hit, w = the offset of its secondary rays
-  vec4 hitNormal;           // xyz unit shading normal, w unused
+  vec4 hitNormal;           // xyz unit shading normal, w = kGrazingPerMagnitude * the hit's magnitude
   vec4 shadowDir;           // xyz shadow ray direction, w = its tMax
   vec4 lightColor;          // rgb light colour / attenuation, w = N.L
   uint phase;
