@@ -37,18 +37,6 @@ std::size_t entries(const std::string& dir) {
   return n;
 }
 
-Image gradient(int w, int h) {
-  Image img(w, h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      std::uint8_t* p = img.pixel(x, y);
-      p[0] = static_cast<std::uint8_t>(x * 7);
-      p[1] = static_cast<std::uint8_t>(y * 13);
-      p[2] = static_cast<std::uint8_t>(x ^ y);
-    }
-  return img;
-}
-
 }  // namespace
 
 TEST(ImageFile, FormatByExtension) {

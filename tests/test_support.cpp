@@ -230,4 +230,17 @@ RunResult runVkrt(const std::string& args, const std::string& env) {
   return r;
 }
 
+// A test image whose every pixel differs from its neighbours in some channel.
+Image gradient(int w, int h) {
+  Image img(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      std::uint8_t* p = img.pixel(x, y);
+      p[0] = static_cast<std::uint8_t>(x * 7);
+      p[1] = static_cast<std::uint8_t>(y * 13);
+      p[2] = static_cast<std::uint8_t>(x ^ y);
+    }
+  return img;
+}
+
 }  // namespace vkrt::test

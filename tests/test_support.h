@@ -45,6 +45,9 @@ bool fileExists(const std::string& path);
 Image renderText(const std::string& sceneText, const std::string& name = "test.test");
 Image renderScene(const SceneDesc& scene);
 
+// A w x h image of distinct, deterministic pixel values (for image I/O tests).
+Image gradient(int w, int h);
+
 // Compares two images: passes when at most `maxPixelsOver` pixels differ by more than
 // `stepTolerance` 8-bit steps in some channel. On failure writes actual.png, expected.png and
 // an amplified diff.png in outputPath("failures/" + name) and names them in the message.
