@@ -65,6 +65,14 @@ std::uint32_t stepBudgetOfText(const std::string& text) {
   return v > 0 ? static_cast<std::uint32_t>(v) : 3u;
 }
 
+long long metamorphicFlipsOfText(const std::string& text, long long standard) {
+  const std::string key = "# difftest-metamorphic-flips:";
+  std::size_t at = text.find(key);
+  if (at == std::string::npos) return standard;
+  long v = std::strtol(text.c_str() + at + key.size(), nullptr, 10);
+  return v > standard ? v : standard;
+}
+
 namespace {
 
 struct VulkanSetting {
@@ -229,6 +237,7 @@ Outcome runChecks(const std::string& text, const std::string& name, const CheckO
 
   // c. The same picture at another scale and place.
   if (options.checks & kMetamorphic) {
+    const long long metamorphicFlips = metamorphicFlipsOfText(text, flips);
     struct Variant {
       const char* name;
       double k;
@@ -240,11 +249,11 @@ Outcome runChecks(const std::string& text, const std::string& name, const CheckO
       std::string movedName = name + " " + v.name;
       compareInto(outcome, kMetamorphic, std::string("cpu-") + v.name, std::string("cpu-") + v.name,
                   renders.cpu(moved, movedName, kMetamorphic), "cpu", renders.cpu(text, name, kMetamorphic),
-                  kFlipStepTolerance, flips, moved);
+                  kFlipStepTolerance, metamorphicFlips, moved);
       if (gpu)
         compareInto(outcome, kMetamorphic, std::string("vulkan-") + v.name, std::string("vulkan-") + v.name,
                     renders.vulkan(moved, movedName, off, kMetamorphic), "vulkan",
-                    renders.vulkan(text, name, off, kMetamorphic), kFlipStepTolerance, flips, moved);
+                    renders.vulkan(text, name, off, kMetamorphic), kFlipStepTolerance, metamorphicFlips, moved);
     }
   }
 

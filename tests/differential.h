@@ -74,4 +74,9 @@ std::uint32_t stepBudgetForSeed(std::uint64_t seed);
 // The step budget a regression scene asks for in a line `# difftest-step-budget: N`, or 3.
 std::uint32_t stepBudgetOfText(const std::string& text);
 
+// Check c's allowance for a regression scene that documents a known limit of the offset
+// policy under scaling (`# difftest-metamorphic-flips: N`, its reason stated beside it), or
+// `standard`; never less than `standard`.
+long long metamorphicFlipsOfText(const std::string& text, long long standard);
+
 }  // namespace vkrt::difftest
