@@ -14,6 +14,8 @@
 #include "cli/options.h"
 #include "errors.h"
 #include "gpu/context.h"
+#include "image/image_file.h"
+#include "image/merge.h"
 #include "image/png.h"
 #include "interrupt.h"
 #include "render/render.h"
@@ -239,6 +241,16 @@ int main(int argc, char** argv) {
     return kExitOk;
   }
   try {
+    if (options.mergeCommand) {
+      vkrt::MergeReport merged;
+      vkrt::Image image = vkrt::mergeCrops(options.mergeTiles, options.allowGaps, &merged);
+      vkrt::writeImageAtomic(image, options.mergeOutput);
+      if (!options.quiet)
+        std::fprintf(stderr, "vkrt: merged %d tiles into %s (%dx%d)%s\n", merged.tiles, options.mergeOutput.c_str(),
+                     image.width, image.height,
+                     merged.gapPixels ? (", " + std::to_string(merged.gapPixels) + " pixels left black").c_str() : "");
+      return kExitOk;
+    }
     if (options.diffCommand)
       return reportComparison(options, vkrt::readImage(options.diffA), vkrt::readImage(options.diffB),
                               options.diffA + " vs " + options.diffB);

@@ -514,9 +514,10 @@ void main() {
     if ((pixels[slot] >> 24) != 0u) return;   // finished in an earlier round
     loadState(slot);
   } else {
-    // Camera ray through the pixel centre (SPEC section 3).
-    float a = (float(x) + 0.5) - 0.5 * float(params.width);
-    float b = 0.5 * float(params.height) - (float(y) + 0.5);
+    // Camera ray through the pixel centre (SPEC section 3), in the full image's pixel
+    // coordinates: a crop's pixels are those of the whole image.
+    float a = (float(x + params.originX) + 0.5) - 0.5 * float(params.fullWidth);
+    float b = 0.5 * float(params.fullHeight) - (float(y + params.originY) + 0.5);
     vec3 dir = normalize(a * pc.cameraRight.xyz + b * pc.cameraUp.xyz - pc.cameraBack.xyz);
     throughput = vec3(1.0);
     radiance = vec3(0.0);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "image/crop.h"
 #include "image/image_file.h"
 #include "scene/parse.h"   // kMaxImageEdge
 
@@ -13,6 +14,7 @@ namespace vkrt {
 const char* usageText() {
   return "usage: vkrt [options] SCENE.test [SCENE.test ...]\n"
          "       vkrt diff [comparison options] A.png B.png\n"
+         "       vkrt merge [--allow-gaps] -o OUT.png TILE.png [TILE.png ...]\n"
          "\n"
          "Renders CSE167 scene files to PNG (or PPM) images, or compares two images.\n"
          "Several scenes are rendered in one run, one line each, then a summary; the exit\n"
@@ -25,6 +27,9 @@ const char* usageText() {
          "                         of the scene's 'output', or the scene's stem + .png without one\n"
          "  --size WxH             render at W x H pixels instead of the scene's size (same camera)\n"
          "  --scale F              render at the scene's size times F (rounded, at least 1x1)\n"
+         "  --crop X0,Y0,X1,Y1     render only the pixels [X0,X1) x [Y0,Y1) of the full image (the\n"
+         "                         same pixels as a full render), as an image of the crop's size\n"
+         "                         that records where it lies, for vkrt merge\n"
          "  --backend vulkan|cpu   renderer: 'vulkan' (default: a compute shader on a GPU, or on\n"
          "                         the CPU through lavapipe) or 'cpu' (the double-precision reference)\n"
          "  --device N|NAME        Vulkan device by index or part of its name (see --list-devices);\n"
@@ -53,6 +58,10 @@ const char* usageText() {
          "  --json                 print the metrics as one JSON object on stdout\n"
          "  --diff FILE.png        write a heatmap of the differences, with its legend\n"
          "  --diff-scale N         differences of N/255 or more are red in the heatmap (default 16)\n"
+         "\n"
+         "merge: puts crops (--crop) back together into their full image, each where its record\n"
+         "says; tiles of different full images, overlapping tiles, pixels no tile covers (unless\n"
+         "--allow-gaps: they stay black) and a tile without a record are usage errors (1).\n"
          "\n"
          "  -q, --quiet            print nothing but errors (no warnings, no progress)\n"
          "  -h, --help             show this help\n"
@@ -110,6 +119,41 @@ double scaleValue(const std::string& v) {
   return f;
 }
 
+// vkrt merge [--allow-gaps] -o OUT.png TILE.png ...
+Options parseMergeOptions(const std::vector<std::string>& args) {
+  Options o;
+  o.mergeCommand = true;
+  bool endOfOptions = false;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
+      o.mergeTiles.push_back(a);
+    } else if (a == "--") {
+      endOfOptions = true;
+    } else if (a == "-o" || a == "--output" || a.rfind("--output=", 0) == 0) {
+      if (a.rfind("--output=", 0) == 0) {
+        o.mergeOutput = a.substr(9);
+      } else {
+        if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
+        o.mergeOutput = args[++i];
+      }
+      if (o.mergeOutput.empty()) throw UsageError("option -o needs a non-empty file name");
+    } else if (a == "--allow-gaps") {
+      o.allowGaps = true;
+    } else if (a == "-q" || a == "--quiet") {
+      o.quiet = true;
+    } else if (a == "-h" || a == "--help") {
+      o.help = true;
+    } else {
+      throw UsageError("unknown merge option '" + a + "' (merge takes -o OUT.png, --allow-gaps, -q)");
+    }
+  }
+  if (o.help) return o;
+  if (o.mergeOutput.empty()) throw UsageError("merge needs the output image: vkrt merge -o OUT.png TILE.png ...");
+  if (o.mergeTiles.empty()) throw UsageError("merge needs at least one tile: vkrt merge -o OUT.png TILE.png ...");
+  return o;
+}
+
 }  // namespace
 
 Options parseOptions(const std::vector<std::string>& args) {
@@ -123,6 +167,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     o.diffCommand = true;
     first = 1;
   }
+  if (!args.empty() && args[0] == "merge") return parseMergeOptions(args);
   for (std::size_t i = first; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const std::string& name) -> const std::string& {
@@ -154,6 +199,12 @@ Options parseOptions(const std::vector<std::string>& args) {
       sizeValue(take(name), o.request.width, o.request.height);
     } else if (name == "--scale") {
       o.request.scale = scaleValue(take(name));
+    } else if (name == "--crop") {
+      std::string v = take(name);
+      o.request.crop = parseCropOption(v);
+      if (!o.request.crop)
+        throw UsageError("--crop expects X0,Y0,X1,Y1 (four whole numbers, the pixels [X0,X1) x [Y0,Y1)), got '" +
+                         v + "'");
     } else if (name == "--backend") {
       std::string b = take(name);
       if (b == "cpu")

@@ -26,6 +26,12 @@ struct Options {
   // `vkrt diff A.png B.png`: compare two images instead of rendering.
   bool diffCommand = false;
   std::string diffA, diffB;
+  // `vkrt merge -o OUT.png TILE.png ...`: assemble crops into their full image.
+  bool mergeCommand = false;
+  std::vector<std::string> mergeTiles;
+  std::string mergeOutput;
+  bool allowGaps = false;       // merge: pixels no tile covers stay black
+
   // `vkrt --compare SCENE`: render with both backends, report both and their difference.
   bool compare = false;
   // `vkrt SCENE --check REF.png`: compare the render with REF.

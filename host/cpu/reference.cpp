@@ -237,11 +237,12 @@ class Tracer {
 }  // namespace
 
 Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options, RayCounts* counts) {
-  Image image(scene.width, scene.height);
+  const PixelRect region = options.crop ? *options.crop : PixelRect{0, 0, scene.width, scene.height};
+  Image image(region.width(), region.height());
   Tracer tracer(scene, bvh);
-  const int tilesX = (scene.width + kTile - 1) / kTile, tilesY = (scene.height + kTile - 1) / kTile;
+  const int tilesX = (region.width() + kTile - 1) / kTile, tilesY = (region.height() + kTile - 1) / kTile;
   const int tileCount = tilesX * tilesY;
-  const std::uint64_t totalPixels = static_cast<std::uint64_t>(scene.width) * scene.height;
+  const std::uint64_t totalPixels = static_cast<std::uint64_t>(region.width()) * region.height();
   std::atomic<int> nextTile{0};
   std::mutex mutex;   // guards doneCount, the progress callback and the totals
   std::uint64_t donePixels = 0;
@@ -251,13 +252,14 @@ Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& 
     RayCounts local;
     for (int tile; (tile = nextTile.fetch_add(1)) < tileCount;) {
       if (options.stop && options.stop()) break;
-      int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
-      int x1 = std::min(x0 + kTile, scene.width), y1 = std::min(y0 + kTile, scene.height);
+      // (x, y): the full image's pixel; its place in `image` is relative to the region.
+      int x0 = region.x0 + (tile % tilesX) * kTile, y0 = region.y0 + (tile / tilesX) * kTile;
+      int x1 = std::min(x0 + kTile, region.x1), y1 = std::min(y0 + kTile, region.y1);
       for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
           ++local.primary;
           dvec3 c = tracer.trace(tracer.cameraRay(x, y), local);
-          std::uint8_t* px = image.pixel(x, y);
+          std::uint8_t* px = image.pixel(x - region.x0, y - region.y0);
           for (int k = 0; k < 3; ++k) px[k] = radianceToByte(c[k]);
           if (!std::isfinite(c.x + c.y + c.z)) ++local.nonFinite;
         }

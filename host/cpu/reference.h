@@ -6,7 +6,9 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 
+#include "image/crop.h"
 #include "image/image.h"
 #include "scene/bvh.h"
 #include "scene/scene_desc.h"
@@ -28,6 +30,9 @@ struct CpuOptions {
   std::function<void(std::uint64_t, std::uint64_t)> progress;
   // Polled between tiles, from worker threads: true stops early (the image is then incomplete).
   std::function<bool()> stop;
+  // Only these pixels of the scene's image (inside it), as an image of the crop's size; the
+  // camera rays are the full image's (SPEC section 3).
+  std::optional<PixelRect> crop;
 };
 
 Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options, RayCounts* counts);

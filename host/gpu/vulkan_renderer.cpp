@@ -88,7 +88,10 @@ bool cutoffPays(const gpu::GpuPushConstants& p, std::uint32_t maxDepth) {
 Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options, RayCounts* rays,
                    VulkanTimings* timings) {
   VulkanTimings t;
-  const std::uint32_t width = scene.width, height = scene.height;
+  // The pixels computed: the whole image or the crop; bands and tiles cover these only.
+  const PixelRect region = options.crop ? *options.crop
+                                        : PixelRect{0, 0, static_cast<int>(scene.width), static_cast<int>(scene.height)};
+  const auto width = static_cast<std::uint32_t>(region.width()), height = static_cast<std::uint32_t>(region.height());
   const std::uint32_t tile = gpu::kWorkgroupSize;
 
   // Band height: a multiple of the tile, and a state buffer within maxStateBytes.
@@ -133,6 +136,10 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   params.tileOrderStride = scatterStride(tilesInBand);
   params.primCount = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
   const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
+  params.originX = static_cast<std::uint32_t>(region.x0);
+  params.originY = static_cast<std::uint32_t>(region.y0);
+  params.fullWidth = scene.width;
+  params.fullHeight = scene.height;
   params.rootEntry = root.primCount > 0 ? gpu::kStackLeafBit | root.primCount << gpu::kStackCountShift |
                                               root.leftOrFirst
                                         : root.leftOrFirst;

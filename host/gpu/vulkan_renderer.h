@@ -5,10 +5,12 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "cpu/reference.h"
 #include "gpu/context.h"
+#include "image/crop.h"
 #include "image/image.h"
 #include "scene/flatten.h"
 
@@ -31,6 +33,9 @@ struct VulkanOptions {
   Cutoff cutoff = Cutoff::Auto;
   std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixels done, pixels total)
   std::function<bool()> stop;   // polled before each dispatch: true stops early (image incomplete)
+  // Only these pixels of the scene's image (inside it), as an image of the crop's size; the
+  // camera rays are the full image's (GpuRenderParams).
+  std::optional<PixelRect> crop;
 };
 
 struct VulkanTimings {

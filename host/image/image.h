@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace vkrt {
@@ -11,6 +13,9 @@ namespace vkrt {
 struct Image {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgb;   // width * height * 3 bytes
+  // (keyword, text) records written with the image: PNG tEXt chunks, PPM header comments
+  // "# KEYWORD TEXT". Keywords: 1-79 printable Latin-1 characters, no spaces; texts one line.
+  std::vector<std::pair<std::string, std::string>> text;
 
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * h * 3, 0) {}

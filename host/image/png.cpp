@@ -82,6 +82,12 @@ void writePngStream(int fd, const Image& image, const std::string& path) {
   putBigEndian(header, static_cast<std::uint32_t>(image.height));
   header.insert(header.end(), {8, 2, 0, 0, 0});   // 8 bits, RGB, deflate, filters, no interlace
   writeChunk(fd, "IHDR", header.data(), header.size(), path);
+  for (const auto& [keyword, value] : image.text) {
+    std::vector<std::uint8_t> text(keyword.begin(), keyword.end());
+    text.push_back(0);
+    text.insert(text.end(), value.begin(), value.end());
+    writeChunk(fd, "tEXt", text.data(), text.size(), path);
+  }
 
   z_stream z{};
   if (int rc = deflateInit(&z, 1); rc != Z_OK) {

@@ -12,7 +12,9 @@ namespace vkrt {
 
 void writePpmAtomic(const Image& image, const std::string& path) {
   writeFileAtomic(path, ".ppm.tmp", [&](int fd) {
-    std::string header = "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
+    std::string header = "P6\n";
+    for (const auto& [keyword, value] : image.text) header += "# " + keyword + " " + value + "\n";
+    header += std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
     writeAll(fd, reinterpret_cast<const std::uint8_t*>(header.data()), header.size(), path);
     constexpr int kRowsPerWrite = 64;
     for (int y = 0; y < image.height; y += kRowsPerWrite) {

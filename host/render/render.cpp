@@ -37,6 +37,7 @@ Image renderWithCpu(const RenderRequest& request, const SceneDesc& scene, Progre
     waitForSignalIfTesting("render");
   };
   options.stop = [] { return pendingInterrupt() != 0; };
+  options.crop = request.crop;
   report.backend = "cpu";
   report.threads = request.threads > 0 ? request.threads : static_cast<int>(std::thread::hardware_concurrency());
   Image image = renderReference(scene, bvh, options, &report.rays);
@@ -73,6 +74,7 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
     waitForSignalIfTesting("render");
   };
   options.stop = [] { return pendingInterrupt() != 0; };
+  options.crop = request.crop;
   Image image = renderVulkan(context, gpuScene, options, &report.rays, &report.vulkan);
   report.renderSeconds = setup + secondsSince(t0);
   return image;
@@ -82,12 +84,12 @@ Image renderWithVulkan(const RenderRequest& request, const SceneDesc& scene, Pro
 // the PNG writer add about a megabyte to that; the Vulkan backend's bands are bounded). Refuse
 // before allocating when the machine does not have that much memory available, naming the
 // `size` line and both numbers, rather than dying half-way.
-void checkImageFitsInMemory(const SceneDesc& scene) {
+void checkImageFitsInMemory(const SceneDesc& scene, int width, int height) {
   const unsigned long long have = availableMemoryBytes();
   if (have == 0) return;   // unknown: let the allocation decide
-  const unsigned long long need = 3ULL * static_cast<unsigned>(scene.width) * static_cast<unsigned>(scene.height);
+  const unsigned long long need = 3ULL * static_cast<unsigned>(width) * static_cast<unsigned>(height);
   if (need > have)
-    throw OutOfMemory("a " + std::to_string(scene.width) + "x" + std::to_string(scene.height) + " image (" +
+    throw OutOfMemory("a " + std::to_string(width) + "x" + std::to_string(height) + " image (" +
                       scene.sourcePath + ":" + std::to_string(scene.sizeLine) + ") needs " +
                       std::to_string(need >> 20) + " MB, and this machine has " + std::to_string(have >> 20) +
                       " MB available");
@@ -191,9 +193,16 @@ Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, R
     report.outputPath = resolveOutput(scene, request);
     if (request.onOutput) request.onOutput(report.outputPath);
   }
-  checkImageFitsInMemory(scene);
-  report.width = scene.width;
-  report.height = scene.height;
+  if (request.crop) {
+    std::string problem = cropProblem(*request.crop, scene.width, scene.height);
+    if (!problem.empty())
+      throw UsageError("--crop " + formatPixelRect(*request.crop) + ": " + problem +
+                       " (" + scene.sourcePath + ")");
+  }
+  // The image written: the whole, or the crop.
+  report.width = request.crop ? request.crop->width() : scene.width;
+  report.height = request.crop ? request.crop->height() : scene.height;
+  checkImageFitsInMemory(scene, report.width, report.height);
   report.maxDepth = scene.maxDepth;
   report.triangles = scene.triangles.size();
   report.spheres = scene.spheres.size();
@@ -206,6 +215,7 @@ Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, R
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
   checkFinite(request, scene, report);
+  if (request.crop) image.text.emplace_back(kCropKeyword, formatCropRecord({*request.crop, scene.width, scene.height}));
   return image;
 }
 

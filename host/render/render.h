@@ -11,6 +11,7 @@
 
 #include "cpu/reference.h"
 #include "gpu/vulkan_renderer.h"
+#include "image/crop.h"
 #include "render/progress.h"
 #include "scene/diagnostic.h"
 #include "scene/scene_desc.h"
@@ -30,6 +31,9 @@ struct RenderRequest {
   // the scene's size times `scale` when > 0 (--scale F), rounded, at least 1x1.
   int width = 0, height = 0;
   double scale = 0;
+  // Only these pixels of the full image (the size above), as an image of the crop's size
+  // carrying its CropRecord (Image::text): the pixels of a full render, bit for bit.
+  std::optional<PixelRect> crop;
   Backend backend = Backend::Vulkan;
   int threads = 0;                     // CPU backend: 0 = every hardware thread
   std::string device;                  // Vulkan: "" (choose), an index or part of a name
@@ -81,7 +85,8 @@ class RenderSession {
 
 // Throws SceneError (bad scene, including an unwritable `output`), IoError (files),
 // DeviceError (Vulkan), OutOfMemory (also before allocating an image larger than the memory
-// available), UsageError (a --size or --scale beyond the largest image), InternalError,
+// available), UsageError (a --size or --scale beyond the largest image, a crop not inside the
+// image), InternalError,
 // Interrupted. The image is written as its name says (image/image_file.h: .ppm as PPM, else
 // PNG). `image`, when given, receives the rendered image (for --check). `session`, when
 // given, lends the Vulkan context of earlier renders (without: one is made and destroyed).

@@ -204,7 +204,7 @@ GPU_ASSERT_OFFSET(GpuPushConstants, bandY0, 96)
 // What one render's dispatches share, besides the scene: sizes, counts and loop bounds. Data,
 // not specialization constants, so that every scene with the same features runs one shader.
 struct GpuRenderParams {
-  uint width;               // the image, in pixels
+  uint width;               // the pixels computed (the whole image, or the --crop rectangle)
   uint height;
   uint maxDepth;            // mirror reflections at most (0 when no surface is specular)
   uint lightCount;
@@ -214,11 +214,21 @@ struct GpuRenderParams {
   uint tileOrderStride;     // coprime with the tiles of a band: the order workgroups visit them
   uint primCount;           // primitive references in the BVH; 0: no geometry (the root is an empty leaf)
   uint rootEntry;           // the root as a traversal-stack entry (above)
-  uint pad0, pad1;          // size 48 (std140 and std430 agree: only uint members)
+  // A crop computes only the pixels [originX, originX + width) x [originY, originY + height)
+  // of the full image; camera rays use the full image's size and pixel coordinates (SPEC
+  // section 3), so a crop's pixels are those of a full render. The whole image: origin 0 0,
+  // full size = width x height.
+  uint originX;
+  uint originY;
+  uint fullWidth;
+  uint fullHeight;
+  uint pad0, pad1;          // size 64 (std140 and std430 agree: only uint members)
 };
-GPU_ASSERT_SIZE(GpuRenderParams, 48)
+GPU_ASSERT_SIZE(GpuRenderParams, 64)
 GPU_ASSERT_OFFSET(GpuRenderParams, stepBudget, 16)
 GPU_ASSERT_OFFSET(GpuRenderParams, rootEntry, 36)
+GPU_ASSERT_OFFSET(GpuRenderParams, originX, 40)
+GPU_ASSERT_OFFSET(GpuRenderParams, fullHeight, 52)
 
 struct GpuCounters {
   uint suspended;           // pixels of this dispatch that ran out of steps

@@ -39,5 +39,6 @@ void main() {
   // The one uniform buffer: its only element.
   GpuRenderParams p = params;
   put(p.width); put(p.height); put(p.maxDepth); put(p.lightCount); put(p.stepBudget); put(p.bandHeight);
-  put(p.tilesX); put(p.tileOrderStride); put(p.primCount); put(p.rootEntry); put(p.pad0); put(p.pad1);
+  put(p.tilesX); put(p.tileOrderStride); put(p.primCount); put(p.rootEntry);
+  put(p.originX); put(p.originY); put(p.fullWidth); put(p.fullHeight); put(p.pad0); put(p.pad1);
 }

@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Renders one scene as COLSxROWS tiles on a Slurm cluster: a job array (task i renders tile i
+# with --crop) and a merge job that starts when every tile succeeded. Prints the two job ids.
+#
+#   submit-tiles.sh [--tiles COLSxROWS] [--vkrt PATH] [--work DIR] [--wait] SCENE.test OUT.png [-- VKRT OPTIONS]
+#
+# --tiles     the grid (default 4x4); --vkrt the binary (default: vkrt on PATH); --work the
+#             folder for the tiles and logs (default OUT.png.tiles), on storage every node sees;
+# --wait      wait for the merge to finish and exit with its status.
+# VKRT OPTIONS go to every tile (e.g. --backend cpu, --size 1920x1080). The full image size is
+# the scene's `size` (its last one) or --size's; --scale is not read here: give --size.
+# Any further sbatch options: the environment variables SBATCH_* (e.g. SBATCH_PARTITION).
+set -euo pipefail
+tiles=4x4 vkrt=$(command -v vkrt || true) work="" wait=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --tiles) tiles=$2; shift 2 ;;
+    --vkrt) vkrt=$2; shift 2 ;;
+    --work) work=$2; shift 2 ;;
+    --wait) wait=--wait; shift ;;
+    --) break ;;
+    -*) echo "submit-tiles: unknown option $1" >&2; exit 1 ;;
+    *) break ;;
+  esac
+done
+[ $# -ge 2 ] || { sed -n '5p' "$0" | sed 's/^# *//' >&2; exit 1; }
+scene=$(realpath "$1") output=$(realpath -m "$2"); shift 2
+[ "${1:-}" = "--" ] && shift
+extra=("$@")
+[ -n "$vkrt" ] || { echo "submit-tiles: no vkrt on PATH; give --vkrt PATH" >&2; exit 1; }
+vkrt=$(realpath "$vkrt")
+[[ $tiles =~ ^([1-9][0-9]*)x([1-9][0-9]*)$ ]] || { echo "submit-tiles: --tiles expects COLSxROWS" >&2; exit 1; }
+cols=${BASH_REMATCH[1]} rows=${BASH_REMATCH[2]}
+
+# The full image size: --size among the options, else the scene's last `size` line.
+size=""
+for ((k = 0; k < ${#extra[@]}; k++)); do
+  case "${extra[k]}" in
+    --size) size=${extra[k + 1]:-} ;;
+    --size=*) size=${extra[k]#--size=} ;;
+    --scale|--scale=*) echo "submit-tiles: give --size instead of --scale" >&2; exit 1 ;;
+  esac
+done
+[ -n "$size" ] || size=$(awk 'tolower($1) == "size" && NF >= 3 { s = $2 "x" $3 } END { print s }' "$scene" | tr -d '\r')
+[[ $size =~ ^([0-9]+)x([0-9]+)$ ]] || { echo "submit-tiles: cannot tell the image size of $scene" >&2; exit 1; }
+width=${BASH_REMATCH[1]} height=${BASH_REMATCH[2]}
+if [ "$cols" -gt "$width" ] || [ "$rows" -gt "$height" ]; then
+  echo "submit-tiles: a ${cols}x${rows} grid does not fit a ${width}x${height} image" >&2; exit 1
+fi
+
+work=$(realpath -m "${work:-$output.tiles}")
+mkdir -p "$work"
+here=$(dirname "$(realpath "$0")")
+count=$((cols * rows))
+common="ALL,VKRT=$vkrt,TILE_DIR=$work"
+array=$(sbatch --parsable --array=0-$((count - 1)) --output="$work/tile-%a.log" \
+  --export="$common,SCENE=$scene,COLS=$cols,ROWS=$rows,FULL_W=$width,FULL_H=$height,VKRT_ARGS=${extra[*]}" \
+  "$here/tile-job.sh")
+array=${array%%;*}   # (a cluster name may follow)
+merge=$(sbatch --parsable $wait --dependency="afterok:$array" --kill-on-invalid-dep=yes \
+  --output="$work/merge.log" --export="$common,OUTPUT=$output,TILES=$count" "$here/merge-job.sh") || {
+  echo "submit-tiles: the merge job failed (see $work/merge.log and $work/tile-*.log)" >&2; exit 1; }
+# (sbatch --wait may report success for a merge cancelled because a tile failed.)
+if [ -n "$wait" ] && [ ! -f "$output" ]; then
+  echo "submit-tiles: no merged image: a tile failed (see $work/tile-*.log)" >&2; exit 1
+fi
+echo "tiles: job $array (array 0-$((count - 1)), ${cols}x${rows} of ${width}x${height}); merge: job ${merge%%;*} -> $output"

@@ -1,0 +1,49 @@
+// Crops: a pixel rectangle of a full image, and the record a cropped image carries so that
+// `vkrt merge` can put it back in place with nothing else. Knows nothing of rendering.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vkrt {
+
+// The pixels [x0, x1) x [y0, y1); column 0 at the left, row 0 at the top.
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+};
+
+// Where a cropped image lies in its full image.
+struct CropRecord {
+  PixelRect rect;
+  int fullWidth = 0, fullHeight = 0;
+};
+
+// The keyword of the record: a PNG tEXt chunk, or a PPM header comment "# vkrt-crop VALUE".
+inline constexpr const char* kCropKeyword = "vkrt-crop";
+
+// "X0,Y0,X1,Y1"
+std::string formatPixelRect(const PixelRect& rect);
+
+// "X0,Y0,X1,Y1 of W H"
+std::string formatCropRecord(const CropRecord& record);
+
+// The record's value back; nullopt when malformed, empty or not inside W x H.
+std::optional<CropRecord> parseCropRecord(const std::string& value);
+
+// --crop X0,Y0,X1,Y1: four integers; nullopt when malformed (the bounds are checked later,
+// against the image size).
+std::optional<PixelRect> parseCropOption(const std::string& text);
+
+// Why `rect` is not a crop of a W x H image ("" when it is one): empty or outside.
+std::string cropProblem(const PixelRect& rect, int fullWidth, int fullHeight);
+
+// The text records of an image file: PNG tEXt chunks (keyword, text), or the "# KEY VALUE"
+// comment lines of a PPM header. Throws IoError when the file cannot be read; a file that is
+// neither gives none.
+std::vector<std::pair<std::string, std::string>> readImageText(const std::string& path);
+
+}  // namespace vkrt
