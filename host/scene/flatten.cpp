@@ -6,6 +6,7 @@
 #include "scene/flatten.h"
 
 #include <cmath>
+#include <future>
 #include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -93,7 +94,11 @@ GpuScene flatten(const SceneDesc& scene) {
   g.origin = origin;
   g.push = cameraConstants(scene, origin);
   cutoffConstants(scene, g.push);
-  const PrimitiveOffsets offsets = primitiveOffsets(scene);
+  // The ray offsets and the BVH do not depend on each other: the offsets on another thread.
+  std::future<PrimitiveOffsets> offsetsLater =
+      std::async(std::launch::async, [&scene] { return primitiveOffsets(scene); });
+  g.bvh = buildBvh(scene, origin);
+  const PrimitiveOffsets offsets = offsetsLater.get();
   const dmat4 fromOrigin = glm::translate(dmat4(1.0), origin);
   g.triangles.reserve(scene.triangles.size());
   for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
@@ -143,7 +148,6 @@ GpuScene flatten(const SceneDesc& scene) {
     g.materials.push_back({f4(m.ambient), f4(m.diffuse), f4(m.specular, static_cast<float>(m.shininess)),
                            f4(m.emission)});
   }
-  g.bvh = buildBvh(scene, origin);
   return g;
 }
 
