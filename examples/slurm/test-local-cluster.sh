@@ -23,7 +23,7 @@ if ! command -v slurmctld >/dev/null || ! command -v slurmd >/dev/null || ! comm
   bash "$root/.ci/install-deps" --slurm
 fi
 
-tmp=$(mktemp -d /tmp/vkrt-slurm.XXXXXX)
+tmp=$(mktemp -d -t vkrt-slurm.XXXXXX)
 chmod 755 "$tmp"   # munged wants its socket's folders searchable by all
 pids=()
 dump_logs() {
