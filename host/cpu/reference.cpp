@@ -97,8 +97,7 @@ class Tracer {
     tanY_ = std::tan(glm::radians(c.fovyDegrees) / 2.0);
     tanX_ = tanY_ * scene.width / scene.height;
     offsets_ = primitiveOffsets(scene);
-    dvec3 lo, hi;
-    frameOrigin_ = sceneBounds(scene, lo, hi) ? 0.5 * (lo + hi) : c.from;
+    frameOrigin_ = floatFrameOrigin(scene);
   }
 
   // Nearest hit with t in (tMin, tMax), or the first one found when anyHit.

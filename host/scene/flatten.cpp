@@ -88,9 +88,7 @@ GpuScene flatten(const SceneDesc& scene) {
   g.width = static_cast<std::uint32_t>(scene.width);
   g.height = static_cast<std::uint32_t>(scene.height);
   g.maxDepth = static_cast<std::uint32_t>(scene.maxDepth);
-  // The frame's origin: the centre of the geometry's box (the camera without geometry).
-  dvec3 lo, hi;
-  const dvec3 origin = sceneBounds(scene, lo, hi) ? 0.5 * (lo + hi) : scene.camera.from;
+  const dvec3 origin = floatFrameOrigin(scene);
   g.origin = origin;
   g.push = cameraConstants(scene, origin);
   cutoffConstants(scene, g.push);

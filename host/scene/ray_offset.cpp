@@ -112,17 +112,19 @@ class BoxTree {
   }
   bool anyNear(const Box& query, double margin) const {
     if (nodes_.empty()) return false;
-    std::vector<std::uint32_t> stack{0};
-    while (!stack.empty()) {
-      const Node& n = nodes_[stack.back()];
-      stack.pop_back();
+    // Median splits: depth <= 32 for any count below 2^32, so the stack holds at most 33.
+    std::uint32_t stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& n = nodes_[stack[--top]];
       if (!n.box.overlaps(query, margin)) continue;
       if (n.count > 0) {
         for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
           if (boxes_[i].overlaps(query, margin)) return true;
       } else {
-        stack.push_back(n.first);
-        stack.push_back(n.first + 1);
+        stack[top++] = n.first;
+        stack[top++] = n.first + 1;
       }
     }
     return false;
@@ -168,6 +170,11 @@ bool sceneBounds(const SceneDesc& scene, dvec3& boxLo, dvec3& boxHi) {
   boxLo = box.lo;
   boxHi = box.hi;
   return true;
+}
+
+dvec3 floatFrameOrigin(const SceneDesc& scene) {
+  dvec3 lo, hi;
+  return sceneBounds(scene, lo, hi) ? 0.5 * (lo + hi) : scene.camera.from;
 }
 
 double offsetForSize(double size) {

@@ -13,6 +13,10 @@ namespace vkrt {
 // The box around the scene's triangles and spheres; false (and nothing set) without geometry.
 bool sceneBounds(const SceneDesc& scene, dvec3& lo, dvec3& hi);
 
+// Where flatten() puts the origin of the shader's float32 frame: the centre of the geometry's
+// box, or the camera without geometry. The offsets' magnitude term is measured from it.
+dvec3 floatFrameOrigin(const SceneDesc& scene);
+
 // The course's offset (1e-3) for an object of the course's sizes, scaled by whole decades for
 // an object of another size (its size: the diagonal of its box).
 double offsetForSize(double size);
