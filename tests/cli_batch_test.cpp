@@ -15,12 +15,6 @@ namespace {
 const std::string kScene =
     "size 40 30\ncamera 0 0 5 0 0 0 0 1 0 45\ndirectional 0 0 1 1 1 1\ndiffuse 0.5 0 0\nsphere 0 0 0 1\n";
 
-std::size_t entries(const std::string& dir) {
-  std::size_t n = 0;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++n;
-  return n;
-}
-
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 }  // namespace
@@ -86,7 +80,7 @@ TEST(CliBatch, OutputDirectoryNamesEachImage) {
   EXPECT_EQ(readImage(dir + "/out/named-image.ppm").width, 40);   // written as its name says: PPM
   EXPECT_EQ(readFile(dir + "/out/named-image.ppm").rfind("P6\n", 0), 0u);
   EXPECT_EQ(readImage(dir + "/out/plain.png").height, 30);
-  EXPECT_EQ(entries(dir + "/out"), 2u);
+  EXPECT_EQ(fileCount(dir + "/out"), 2u);
   EXPECT_TRUE(contains(r.output, "-> " + dir + "/out/plain.png (40x30)")) << r.output;
   // One scene and -o DIR/ works the same way.
   RunResult one = runVkrt("--backend cpu -o " + dir + "/out/ " + dir + "/scenes/sub/plain.test");
@@ -100,7 +94,7 @@ TEST(CliBatch, OutputDirectoryNamesEachImage) {
   RunResult file = runVkrt("-o " + dir + "/out/x.png " + dir + "/scenes/named.test " + dir + "/scenes/sub/plain.test");
   EXPECT_EQ(file.exitCode, 1) << file.output;
   EXPECT_TRUE(contains(file.output, "vkrt: error: -o " + dir + "/out/x.png names one file, for 2 scenes")) << file.output;
-  EXPECT_EQ(entries(dir + "/out"), 2u);
+  EXPECT_EQ(fileCount(dir + "/out"), 2u);
   for (const char* alone : {"--check x.png", "--compare"}) {
     RunResult c = runVkrt(std::string(alone) + " " + dir + "/scenes/named.test " + dir + "/scenes/sub/plain.test");
     EXPECT_EQ(c.exitCode, 1) << alone << "\n" << c.output;

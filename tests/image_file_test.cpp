@@ -31,12 +31,6 @@ Image readP6(const std::string& path) {
   return img;
 }
 
-std::size_t entries(const std::string& dir) {
-  std::size_t n = 0;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++n;
-  return n;
-}
-
 }  // namespace
 
 TEST(ImageFile, FormatByExtension) {
@@ -61,9 +55,9 @@ TEST(ImageFile, PpmHeaderBytesAndAtomicReplacement) {
   EXPECT_EQ(bytes.substr(0, 11), "P6\n5 3\n255\n");
   EXPECT_EQ(std::memcmp(bytes.data() + 11, img.rgb.data(), 45), 0);
   EXPECT_EQ(readImage(dir + "/a.ppm").rgb, img.rgb);   // and what vkrt diff reads
-  EXPECT_EQ(entries(dir), 1u);                         // no temporary file left
+  EXPECT_EQ(fileCount(dir), 1u);                         // no temporary file left
   EXPECT_THROW(writePpmAtomic(img, dir + "/missing/a.ppm"), IoError);
-  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(fileCount(dir), 1u);
 }
 
 // The same render as PPM and as PNG: the same pixels.

@@ -9,16 +9,6 @@
 using namespace vkrt;
 using namespace vkrt::test;
 
-namespace {
-
-std::size_t entries(const std::string& dir) {
-  std::size_t n = 0;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++n;
-  return n;
-}
-
-}  // namespace
-
 TEST(Png, RoundTripIsExact) {
   std::string dir = freshDir("png/roundtrip");
   Image img = gradient(37, 21);
@@ -27,7 +17,7 @@ TEST(Png, RoundTripIsExact) {
   ASSERT_EQ(back.width, 37);
   ASSERT_EQ(back.height, 21);
   EXPECT_EQ(back.rgb, img.rgb);
-  EXPECT_EQ(entries(dir), 1u);   // no temporary file left
+  EXPECT_EQ(fileCount(dir), 1u);   // no temporary file left
 }
 
 TEST(Png, ReplacesAnExistingFileWhole) {
@@ -35,7 +25,7 @@ TEST(Png, ReplacesAnExistingFileWhole) {
   writeFile(dir + "/a.png", "old contents");
   writePngAtomic(gradient(4, 4), dir + "/a.png");
   EXPECT_EQ(readImage(dir + "/a.png").rgb, gradient(4, 4).rgb);
-  EXPECT_EQ(entries(dir), 1u);
+  EXPECT_EQ(fileCount(dir), 1u);
 }
 
 TEST(Png, RelativePathWithoutDirectory) {
@@ -54,6 +44,6 @@ TEST(Png, FailuresThrowIoErrorAndLeaveNothing) {
   EXPECT_THROW(checkOutputWritable(dir), IoError);   // a directory
   EXPECT_THROW(checkOutputWritable("/proc/a.png"), IoError);
   EXPECT_NO_THROW(checkOutputWritable(dir + "/fine.png"));
-  EXPECT_EQ(entries(dir), 0u);   // the writability probe cleaned up after itself
+  EXPECT_EQ(fileCount(dir), 0u);   // the writability probe cleaned up after itself
   EXPECT_THROW(readImage(dir + "/none.png"), IoError);
 }

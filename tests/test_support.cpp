@@ -243,4 +243,10 @@ Image gradient(int w, int h) {
   return img;
 }
 
+std::size_t fileCount(const std::string& dir) {
+  std::size_t n = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++n;
+  return n;
+}
+
 }  // namespace vkrt::test

@@ -39,6 +39,8 @@ std::string outputPath(const std::string& name);
 std::string readFile(const std::string& path);
 void writeFile(const std::string& path, const std::string& text);
 bool fileExists(const std::string& path);
+// How many entries a directory holds (to see that nothing was left or written beside a file).
+std::size_t fileCount(const std::string& dir);
 
 // Parses scene text and renders it with the CPU reference. Both renderScene and renderGpu
 // fail the test when a pixel's colour was NaN or infinite.
