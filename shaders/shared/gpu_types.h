@@ -12,10 +12,12 @@ using vec4 = glm::vec4;
 using mat4 = glm::mat4;
 using uint = std::uint32_t;
 #  define GPU_CONST inline constexpr
+#  define GPU_FN inline
 #  define GPU_ASSERT_SIZE(T, n) static_assert(sizeof(T) == (n), #T " size drifted");
 #  define GPU_ASSERT_OFFSET(T, m, n) static_assert(offsetof(T, m) == (n), #T "." #m " moved");
 #else
 #  define GPU_CONST const
+#  define GPU_FN
 #  define GPU_ASSERT_SIZE(T, n)
 #  define GPU_ASSERT_OFFSET(T, m, n)
 #endif
@@ -107,13 +109,78 @@ struct GpuLight {
 GPU_ASSERT_SIZE(GpuLight, 48)
 
 struct GpuMaterial {
-  vec4 ambient;             // rgb, w unused
-  vec4 diffuse;             // rgb, w unused
+  vec4 ambient;             // rgb, w = the BRDF model: kBrdfPhong or kBrdfGgx (path integrators)
+  vec4 diffuse;             // rgb, w = GGX roughness (alpha, unsquared)
   vec4 specular;            // rgb, w = shininess
-  vec4 emission;            // rgb, w unused
+  vec4 emission;            // rgb, w = the quad light these triangles make (index), or kNoQuadLight
 };
 GPU_ASSERT_SIZE(GpuMaterial, 64)
 GPU_ASSERT_OFFSET(GpuMaterial, specular, 32)
+
+GPU_CONST float kBrdfPhong = 0.0f;
+GPU_CONST float kBrdfGgx = 1.0f;
+GPU_CONST float kNoQuadLight = -1.0f;   // GpuMaterial.emission.w of a surface that is no quad light
+
+// `quadLight` (SPEC-PATHTRACING section 2), in the scene-centred frame: the parallelogram
+// a + u ab + v ac, u, v in [0, 1], emitting `radiance` on the side of n = normalize(cross(ac, ab)).
+// Its two triangles are also in the triangle array, with a material whose emission.w names it.
+struct GpuQuadLight {
+  vec4 corner;              // xyz = a, w = area |cross(ab, ac)|
+  vec4 edgeAB;              // xyz = ab, w unused
+  vec4 edgeAC;              // xyz = ac, w unused
+  vec4 normal;              // xyz = n, w unused
+  vec4 radiance;            // rgb = L, w unused
+};
+GPU_ASSERT_SIZE(GpuQuadLight, 80)
+
+// Path integrators (SPEC-PATHTRACING sections 3-4); the ids the shader and the host share.
+GPU_CONST uint kIntegratorRaytracer = 0u;
+GPU_CONST uint kIntegratorAnalyticDirect = 1u;
+GPU_CONST uint kIntegratorDirect = 2u;
+GPU_CONST uint kIntegratorPathTracer = 3u;
+GPU_CONST uint kNextEventOff = 0u;
+GPU_CONST uint kNextEventOn = 1u;
+GPU_CONST uint kNextEventMis = 2u;
+GPU_CONST uint kSamplingHemisphere = 0u;
+GPU_CONST uint kSamplingCosine = 1u;
+GPU_CONST uint kSamplingBrdf = 2u;
+
+// ---- Random numbers: a counter-based generator ------------------------------------------------
+// The number for (seed, pixel, sample, dimension) is a hash of the four: a render is
+// reproducible bit for bit whatever the order in which pixels and samples are computed, a
+// crop draws the numbers of the full image (pixel = y * full width + x), sample batches of
+// one render draw different numbers (sample counts from the render's first sample), and the
+// CPU reference and the shader draw the same numbers for the same path.
+// Dimensions: kRngPixelX/Y jitter the camera ray inside its pixel; each path vertex (bounce
+// b = 0 at the primary hit) then uses b * kRngBounceStride + a slot:
+GPU_CONST uint kRngPixelX = 0u;
+GPU_CONST uint kRngPixelY = 1u;
+GPU_CONST uint kRngBounceStride = 65536u;
+GPU_CONST uint kRngBounceBase = 2u;           // + b * kRngBounceStride
+GPU_CONST uint kRngSlotDirectionU = 0u;       // the next direction (two numbers)
+GPU_CONST uint kRngSlotDirectionV = 1u;
+GPU_CONST uint kRngSlotLobe = 2u;             // which lobe of a BRDF-sampling mixture
+GPU_CONST uint kRngSlotRoulette = 3u;         // Russian roulette
+GPU_CONST uint kRngSlotLightBase = 4u;        // + 2 * (light * lightsamples + k): a light sample's u, v
+
+// "lowbias32" (C. Wellons, 2018): an integer hash with small bias, cheap on any ISA.
+GPU_FN uint rngHash(uint x) {
+  x ^= x >> 16u;
+  x *= 0x7feb352du;
+  x ^= x >> 15u;
+  x *= 0x846ca68bu;
+  x ^= x >> 16u;
+  return x;
+}
+
+// A uniform number in [0, 1): 24 random bits, so it is exact in float and never 1.
+GPU_FN float rngUniform(uint seed, uint pixel, uint sampleIndex, uint dimension) {
+  uint h = rngHash(dimension + rngHash(sampleIndex + rngHash(pixel + rngHash(seed))));
+  return float(h >> 8u) * 5.9604644775390625e-8f;   // 2^-24
+}
+
+// The dimension of `slot` at path vertex `bounce`.
+GPU_FN uint rngDimension(uint bounce, uint slot) { return kRngBounceBase + bounce * kRngBounceStride + slot; }
 
 struct GpuBvhNode {         // axis-aligned box, rounded outward to float
   float minX, minY, minZ;
