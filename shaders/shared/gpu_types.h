@@ -163,6 +163,23 @@ GPU_CONST uint kRngSlotLobe = 2u;             // which lobe of a BRDF-sampling m
 GPU_CONST uint kRngSlotRoulette = 3u;         // Russian roulette
 GPU_CONST uint kRngSlotLightBase = 4u;        // + 2 * (light * lightsamples + k): a light sample's u, v
 
+// How each backend turns these numbers into a path (each written on its own, to these rules,
+// so that the same seed gives the same paths up to float rounding):
+//  - Camera: a render of spp 1 samples the pixel centre (SPEC section 3); otherwise sample s
+//    of pixel (x, y) is at (x + u, y + v), u, v = kRngPixelX, kRngPixelY, instead of +0.5.
+//  - A frame around a unit axis n: a = |n.x| > 0.9 ? (0, 1, 0) : (1, 0, 0),
+//    t = normalize(cross(a, n)), b = cross(n, t); local (x, y, z) is x t + y b + z n.
+//  - With u, v = the direction slots of the vertex: hemisphere: z = u, phi = 2 pi v;
+//    cosine: z = sqrt(1 - u), sin = sqrt(u), phi = 2 pi v; Phong lobe: z = u^(1 / (s + 1))
+//    around r; GGX: theta_h = atan(alpha sqrt(u) / sqrt(1 - u)), phi = 2 pi v, around n, and
+//    w_i = 2 (w_o . h) h - w_o; (x, y) = sin(theta) (cos phi, sin phi).
+//  - BRDF sampling picks the specular lobe when the kRngSlotLobe number is below t
+//    (SPEC-PATHTRACING section 4).
+//  - Light sample k of N of quad light j: (s, t) = (u, v) of its two slots; stratified:
+//    ((k % m + u) / m, (k / m + v) / m), m = sqrt(N); the point a + s ab + t ac.
+//  - Russian roulette continues when the kRngSlotRoulette number is below p.
+//  - Bounce b is 0 at the camera ray's hit and grows by one at each scatter.
+
 // "lowbias32" (C. Wellons, 2018): an integer hash with small bias, cheap on any ISA.
 GPU_FN uint rngHash(uint x) {
   x ^= x >> 16u;
