@@ -107,6 +107,25 @@ SceneDesc cornellLikeBox(int size, int maxDepth) {
   return s;
 }
 
+SceneDesc glossyFloorUnderLargeLight(int size) {
+  SceneDesc s;
+  Material phong;
+  phong.ambient = dvec3(0.0);
+  phong.diffuse = dvec3(0.2, 0.3, 0.4);
+  phong.specular = dvec3(0.5);
+  phong.shininess = 30.0;
+  Material ggx = phong;
+  ggx.brdf = BrdfModel::Ggx;
+  ggx.roughness = 0.2;
+  addQuad(s, dvec3(-2, 0, -2), dvec3(2, 0, 0), dvec3(0, 0, 4), addMaterial(s, phong));   // x < 0, up
+  addQuad(s, dvec3(0, 0, -2), dvec3(2, 0, 0), dvec3(0, 0, 4), addMaterial(s, ggx));      // x > 0, up
+  addQuadLight(s, dvec3(-0.8, 0.6, -1.2), dvec3(0, 0, 1.6), dvec3(1.6, 0, 0), dvec3(2.0, 2.5, 3.0));   // facing down
+  setCamera(s, dvec3(0, 0.45, 2.0), dvec3(0, 0, -0.3), 60.0, size, size);
+  s.path.integrator = Integrator::PathTracer;
+  s.maxDepth = 1;
+  return s;
+}
+
 namespace {
 
 // The continued fraction of the regularized incomplete beta function (Numerical Recipes'

@@ -33,6 +33,10 @@ SceneDesc furnaceBox(double albedo, double emission, int size);
 // with a Phong-glossy block and a GGX sphere; w x h pixels, pathtracer, maxdepth `maxDepth`.
 SceneDesc cornellLikeBox(int size, int maxDepth);
 
+// Direct lighting where MIS matters: a large quad light close above a floor of a Phong half
+// and a GGX half, seen from below the light's plane; maxdepth 1.
+SceneDesc glossyFloorUnderLargeLight(int size);
+
 // The two-sided p-value of Welch's t-test for means m1, m2 with variances of the means
 // v1, v2 (already divided by their counts) and counts n1, n2.
 double welchPValue(double m1, double v1, int n1, double m2, double v2, int n2);
