@@ -134,6 +134,12 @@ TEST(PathInvariant, UnlimitedDepthWithRussianRoulette) {
   expectSameExpectation(test::cornellLikeBox(kSize, -1), withRoulette);
 }
 
+// Emissive triangles and spheres found by hitting them (NEE off) and sampled as lights (on,
+// mis) give one image.
+TEST(PathInvariant, EmissiveSurfacesAsLights) {
+  expectSameExpectation(test::emissiveSurfacesBox(kSize, 3), kStrategies);
+}
+
 TEST(WelchTest, StudentTailMatchesKnownValues) {
   // t = 2.131 with 15 degrees of freedom: two-sided 0.05; the normal limit at large dof.
   EXPECT_NEAR(test::studentTwoSidedTail(2.131449546, 15.0), 0.05, 1e-6);

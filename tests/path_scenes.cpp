@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 namespace vkrt::test {
 
 std::uint32_t addMaterial(SceneDesc& scene, const Material& m) {
@@ -104,6 +106,33 @@ SceneDesc cornellLikeBox(int size, int maxDepth) {
   setCamera(s, dvec3(0, 1, 3.2), dvec3(0, 1, 0), 45.0, size, size);
   s.path.integrator = Integrator::PathTracer;
   s.maxDepth = maxDepth;
+  return s;
+}
+
+SceneDesc emissiveSurfacesBox(int size, int maxDepth) {
+  SceneDesc s = cornellLikeBox(size, maxDepth);
+  // Take out the quad light: its two triangles are the 11th and 12th, its material the 4th.
+  s.quadLights.clear();
+  s.triangles.erase(s.triangles.begin() + 10, s.triangles.begin() + 12);
+  s.materials[3].quadLight = -1;
+  Material glow;
+  glow.ambient = dvec3(0.0);
+  glow.diffuse = dvec3(0.2);
+  glow.emission = dvec3(3.0, 3.0, 2.5);
+  Sphere ellipsoid;
+  ellipsoid.worldFromObject = glm::translate(dmat4(1.0), dvec3(-0.2, 1.7, -0.1)) *
+                              glm::rotate(dmat4(1.0), glm::radians(30.0), dvec3(0, 0, 1)) *
+                              glm::scale(dmat4(1.0), dvec3(0.35, 0.12, 0.25));
+  ellipsoid.objectFromWorld = glm::inverse(ellipsoid.worldFromObject);
+  ellipsoid.material = addMaterial(s, glow);
+  s.spheres.push_back(ellipsoid);
+  Material panel;
+  panel.ambient = dvec3(0.0);
+  panel.emission = dvec3(2.0, 1.0, 0.5);
+  Triangle t;
+  t.p[0] = dvec3(0.2, 1.2, -0.98), t.p[1] = dvec3(0.8, 1.2, -0.98), t.p[2] = dvec3(0.5, 1.7, -0.98);   // facing +z
+  t.material = addMaterial(s, panel);
+  s.triangles.push_back(t);
   return s;
 }
 

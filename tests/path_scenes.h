@@ -33,6 +33,11 @@ SceneDesc furnaceBox(double albedo, double emission, int size);
 // with a Phong-glossy block and a GGX sphere; w x h pixels, pathtracer, maxdepth `maxDepth`.
 SceneDesc cornellLikeBox(int size, int maxDepth);
 
+// The same box lit instead by emissive surfaces (`emission`, no quad light): an ellipsoid
+// (a sphere under a rotation and a non-uniform scale) under the ceiling and a triangle before
+// the back wall, for next-event estimation of emissive triangles and spheres.
+SceneDesc emissiveSurfacesBox(int size, int maxDepth);
+
 // Direct lighting where MIS matters: a large quad light close above a floor of a Phong half
 // and a GGX half, seen from below the light's plane; maxdepth 1.
 SceneDesc glossyFloorUnderLargeLight(int size);

@@ -35,6 +35,18 @@ struct AreaLight {
   int triangle = -1;       // one of its two triangles (for the shadow rays' offset at its end), or -1
 };
 
+// Emissive triangles and spheres (`emission`, not quad lights) as one more light for
+// next-event estimation (beyond the course; issue item 6): each light sample picks one of
+// them with probability proportional to area x sum(|emission|), then a point uniform in area
+// on it. Its numbers follow the quad lights' (gpu_types.h leaves them to us): sample k of N
+// takes the point's (u, v) from the pair of light index Q (the quad lights' count), slots
+// kRngSlotLightBase + 2 (Q N + k) and + 1, and the pick from slot kRngSlotLightBase + 2 (Q + 1) N + k.
+struct EmitterPoint {
+  dvec3 x;                 // the point
+  dvec3 normal;            // unit geometric normal there (emission is two-sided)
+  double areaPdf = 0.0;    // density per unit world area of choosing this point, given its primitive
+};
+
 // The random numbers of one camera sample (gpu_types.h): keyed by seed, pixel, sample.
 struct SampleNumbers {
   std::uint32_t seed, pixel, sample;
@@ -65,6 +77,7 @@ class PathIntegrator {
       int j = scene.materials[scene.triangles[i].material].quadLight;
       if (j >= 0 && j < static_cast<int>(lights_.size()) && lights_[j].triangle < 0) lights_[j].triangle = static_cast<int>(i);
     }
+    collectEmitters();
   }
 
   // The radiance of one camera sample through image position (px, py).
@@ -79,6 +92,140 @@ class PathIntegrator {
   }
 
  private:
+  // The power weight of an emitting material over `area`, 0 for quad lights and non-emitters.
+  double emitterWeight(std::uint32_t material, double area) const {
+    const Material& m = scene_.materials[material];
+    if (m.quadLight >= 0) return 0.0;
+    return area * (std::abs(m.emission.x) + std::abs(m.emission.y) + std::abs(m.emission.z));
+  }
+
+  // The emissive triangles and spheres, and the probability with which a light sample picks each.
+  void collectEmitters() {
+    std::vector<double> weights;
+    for (std::uint32_t i = 0; i < scene_.triangles.size(); ++i) {
+      const Triangle& t = scene_.triangles[i];
+      const double w = emitterWeight(t.material, 0.5 * glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])));
+      if (w > 0.0) emitters_.push_back(i), weights.push_back(w);
+    }
+    for (std::uint32_t i = 0; i < scene_.spheres.size(); ++i) {
+      const Sphere& sp = scene_.spheres[i];
+      // Any positive weight is unbiased; this one is the area for a uniform scale.
+      const double scale = std::cbrt(std::abs(glm::determinant(glm::dmat3(sp.worldFromObject))));
+      const double w = emitterWeight(sp.material, 4.0 * kPi * sp.radius * sp.radius * scale * scale);
+      if (w > 0.0) emitters_.push_back(i | gpu::kPrimSphereBit), weights.push_back(w);
+    }
+    double total = 0.0;
+    for (double w : weights) total += w;
+    trianglePick_.assign(scene_.triangles.size(), 0.0);
+    spherePick_.assign(scene_.spheres.size(), 0.0);
+    double running = 0.0;
+    for (std::size_t e = 0; e < emitters_.size(); ++e) {
+      running += weights[e];
+      emitterCdf_.push_back(running / total);
+      pickProbability(emitters_[e]) = weights[e] / total;
+    }
+    if (!emitterCdf_.empty()) emitterCdf_.back() = 1.0;
+  }
+
+  double& pickProbability(std::uint32_t prim) {
+    return (prim & gpu::kPrimSphereBit) ? spherePick_[prim & ~gpu::kPrimSphereBit] : trianglePick_[prim];
+  }
+  double pickProbability(std::uint32_t prim) const {
+    return (prim & gpu::kPrimSphereBit) ? spherePick_[prim & ~gpu::kPrimSphereBit] : trianglePick_[prim];
+  }
+
+  // A point of emitter primitive `prim` from (u, v): uniform in area on a triangle; on an
+  // ellipsoid, uniform on its object-space sphere, with the density moved to world area by
+  // the transform's area element |det M| |M^-T n|.
+  EmitterPoint emitterPoint(std::uint32_t prim, double u, double v) const {
+    EmitterPoint point;
+    if (prim & gpu::kPrimSphereBit) {
+      const Sphere& sp = scene_.spheres[prim & ~gpu::kPrimSphereBit];
+      const double z = 1.0 - 2.0 * u, r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * v;
+      const dvec3 nObject(r * std::cos(phi), r * std::sin(phi), z);
+      point.x = dvec3(sp.worldFromObject * glm::dvec4(sp.center + sp.radius * nObject, 1.0));
+      return sphereDensity(sp, nObject, point);
+    }
+    const Triangle& t = scene_.triangles[prim];
+    const double su = std::sqrt(u);
+    point.x = (1.0 - su) * t.p[0] + su * (1.0 - v) * t.p[1] + su * v * t.p[2];
+    const dvec3 c = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+    point.normal = glm::normalize(c);
+    point.areaPdf = 2.0 / glm::length(c);
+    return point;
+  }
+
+  // The normal and area density at the point of sphere `sp` whose object-space unit normal is nObject.
+  static EmitterPoint sphereDensity(const Sphere& sp, const dvec3& nObject, EmitterPoint point) {
+    const dvec3 m = glm::transpose(glm::dmat3(sp.objectFromWorld)) * nObject;   // M^-T n
+    const double areaElement = std::abs(glm::determinant(glm::dmat3(sp.worldFromObject))) * glm::length(m);
+    point.normal = glm::normalize(m);
+    point.areaPdf = 1.0 / (4.0 * kPi * sp.radius * sp.radius * areaElement);
+    return point;
+  }
+
+  // The solid-angle density with which the emitter light sample finds point p of primitive
+  // `prim` from a vertex at distance `distance` along unit `dir`.
+  double emitterSolidAnglePdf(std::uint32_t prim, const dvec3& p, double distance, const dvec3& dir) const {
+    EmitterPoint point;
+    if (prim & gpu::kPrimSphereBit) {
+      const Sphere& sp = scene_.spheres[prim & ~gpu::kPrimSphereBit];
+      const dvec3 pObject = dvec3(sp.objectFromWorld * glm::dvec4(p, 1.0));
+      point = sphereDensity(sp, glm::normalize(pObject - sp.center), point);
+    } else {
+      const Triangle& t = scene_.triangles[prim];
+      const dvec3 c = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+      point.normal = glm::normalize(c);
+      point.areaPdf = 2.0 / glm::length(c);
+    }
+    const double cosine = std::abs(glm::dot(point.normal, dir));
+    return cosine > 0.0 ? pickProbability(prim) * point.areaPdf * distance * distance / cosine : 0.0;
+  }
+
+  // Next-event estimation of the emissive triangles and spheres at vertex v (lightsamples
+  // samples, stratified like a quad light's).
+  dvec3 emitterLights(const Vertex& v, std::uint32_t bounce, bool mis, const SampleNumbers& rng, RayCounts& counts) const {
+    if (emitters_.empty()) return dvec3(0.0);
+    const std::uint32_t n = static_cast<std::uint32_t>(std::max(scene_.path.lightSamples, 1));
+    const std::uint32_t quads = static_cast<std::uint32_t>(lights_.size());
+    const int m = scene_.path.lightStratify ? static_cast<int>(std::lround(std::sqrt(static_cast<double>(n)))) : 0;
+    dvec3 sum(0.0);
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const std::uint32_t slot = gpu::kRngSlotLightBase + 2u * (quads * n + k);
+      double s = rng.at(bounce, slot), t = rng.at(bounce, slot + 1u);
+      if (m > 0) {
+        s = (static_cast<int>(k) % m + s) / m;
+        t = (static_cast<int>(k) / m + t) / m;
+      }
+      // Pick an emitter, then a point on it.
+      const double pick = rng.at(bounce, gpu::kRngSlotLightBase + 2u * (quads + 1u) * n + k);
+      const std::size_t e = std::min<std::size_t>(
+          static_cast<std::size_t>(std::upper_bound(emitterCdf_.begin(), emitterCdf_.end(), pick) - emitterCdf_.begin()),
+          emitters_.size() - 1);
+      const std::uint32_t prim = emitters_[e];
+      const EmitterPoint point = emitterPoint(prim, s, t);
+      const dvec3 d = point.x - v.p;
+      const double dist2 = glm::dot(d, d), dist = std::sqrt(dist2);
+      if (dist == 0.0) continue;
+      const dvec3 wi = d / dist;
+      const double cosLight = std::abs(glm::dot(point.normal, wi)), nDotI = glm::dot(v.n, wi);
+      if (cosLight <= 0.0 || nDotI <= 0.0) continue;
+      const dvec3 f = evalBrdf(*v.m, v.n, wi, v.wo);
+      if (f == dvec3(0.0)) continue;
+      Hit at;
+      at.prim = prim;
+      const double tMax = dist - query_.offsetsAt(at, point.x).at(cosLight);
+      if (!unoccluded(v.p, wi, v.offset.at(nDotI), tMax, counts)) continue;
+      const double lightPdf = pickProbability(prim) * point.areaPdf * dist2 / cosLight;
+      const std::uint32_t material =
+          (prim & gpu::kPrimSphereBit) ? scene_.spheres[prim & ~gpu::kPrimSphereBit].material : scene_.triangles[prim].material;
+      dvec3 contribution = scene_.materials[material].emission * f * (nDotI / (lightPdf * n));
+      if (mis) contribution *= powerHeuristic(lightPdf, directionPdf(scene_.path.sampling, *v.m, v.n, wi, v.wo));
+      sum += contribution;
+    }
+    return sum;
+  }
+
   // Intersects `ray`; on a hit fills the vertex (wo = -dir) and returns true.
   bool hitVertex(const Ray& ray, double tMin, Hit& hit, Vertex& v) const {
     if (!query_.intersect(ray, tMin, kInfinity, false, hit)) return false;
@@ -224,11 +371,17 @@ class PathIntegrator {
       const dvec3 le = emitted(v);
       if (le != dvec3(0.0)) {
         const bool isQuad = v.m->quadLight >= 0;
-        if (bounce == 0 || nee == NextEvent::Off || !isQuad) {
+        const bool sampledByNee = isQuad || pickProbability(hit.prim) > 0.0;
+        if (bounce == 0 || nee == NextEvent::Off || !sampledByNee) {
           radiance += beta * le;
         } else if (nee == NextEvent::Mis) {
-          const AreaLight& light = lights_[v.m->quadLight];
-          const double lightPdf = hit.t * hit.t / (light.area * glm::dot(light.normal, v.wo));
+          double lightPdf;
+          if (isQuad) {
+            const AreaLight& light = lights_[v.m->quadLight];
+            lightPdf = hit.t * hit.t / (light.area * glm::dot(light.normal, v.wo));
+          } else {
+            lightPdf = emitterSolidAnglePdf(hit.prim, v.p, hit.t, v.wo);
+          }
           radiance += beta * le * powerHeuristic(previousPdf, lightPdf);
         }
       }
@@ -238,7 +391,10 @@ class PathIntegrator {
 
       // Sample direct illumination: point and directional lights always, quad lights by NEE.
       radiance += beta * pointLights(v, counts);
-      if (nee != NextEvent::Off) radiance += beta * quadLights(v, bounce, nee == NextEvent::Mis, rng, counts);
+      if (nee != NextEvent::Off) {
+        radiance += beta * quadLights(v, bounce, nee == NextEvent::Mis, rng, counts);
+        radiance += beta * emitterLights(v, bounce, nee == NextEvent::Mis, rng, counts);
+      }
 
       // Sample the next direction and update the throughput.
       const dvec3 wi = glm::normalize(sampleDirection(settings.sampling, *v.m, v.n, v.wo,
@@ -268,6 +424,9 @@ class PathIntegrator {
   const SceneDesc& scene_;
   SceneQuery query_;
   std::vector<AreaLight> lights_;
+  std::vector<std::uint32_t> emitters_;   // primRefs of the emissive triangles and spheres
+  std::vector<double> emitterCdf_;        // their cumulative pick probabilities
+  std::vector<double> trianglePick_, spherePick_;   // each primitive's pick probability (0: none)
 };
 
 }  // namespace
