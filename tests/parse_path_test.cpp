@@ -196,6 +196,8 @@ TEST(ParsePath, QuadLightUnderATransform) {
   expectNear(s.quadLights[1].ab, dvec3(-1, 0, 0));
   for (const Triangle& t : trianglesOfQuadLight(s, 1)) expectNear(faceNormal(t), dvec3(0, 0, 1));
   // Each quad light has its own material and index.
+  ASSERT_EQ(trianglesOfQuadLight(s, 1).size(), 2u);
+  ASSERT_EQ(trianglesOfQuadLight(s, 2).size(), 2u);
   EXPECT_NE(trianglesOfQuadLight(s, 1)[0].material, trianglesOfQuadLight(s, 2)[0].material);
   EXPECT_EQ(s.materials[trianglesOfQuadLight(s, 2)[0].material].emission, dvec3(2, 2, 2));
   EXPECT_EQ(s.triangles.size(), 6u);
