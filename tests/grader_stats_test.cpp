@@ -1,4 +1,6 @@
 // The course grader's measures (SPEC-PATHTRACING section 5) on images whose answer is known.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "image/grader_stats.h"
@@ -26,10 +28,23 @@ TEST(GraderStats, LinearImagesInEightBitUnits) {
   RadianceImage ref(1, 1), img(1, 1);
   ref.rgb = {0.5f, 0.5f, 0.5f};
   img.rgb = {0.5f + 1.0f / 255, 0.5f - 1.0f / 255, 0.5f};
-  const GraderStats s = graderStats(img, ref);
+  const GraderStats s = graderStatsLinear(img, ref);
   EXPECT_NEAR(s.bias, 0.0, 1e-5);
   EXPECT_NEAR(s.variance, 2.0 / 3.0, 1e-4);   // differences +1, -1, 0 steps
-  EXPECT_THROW(graderStats(RadianceImage(2, 1), ref), std::invalid_argument);
+  EXPECT_THROW(graderStatsLinear(RadianceImage(2, 1), ref), std::invalid_argument);
+}
+
+TEST(GraderStats, EncodedWithGammaAsTheGraderSawThem) {
+  // gamma 2: bytes floor(255 sqrt(L)). ref 0.25 -> 127; img 0.36 -> 153, NaN -> 0, 4.0 -> 255
+  // (clamped) against ref 1.0 -> 255. Differences 26, -127, 0: mean -101/3.
+  RadianceImage ref(1, 1), img(1, 1);
+  ref.rgb = {0.25f, 0.25f, 1.0f};
+  img.rgb = {0.36f, std::nanf(""), 4.0f};
+  const GraderStats s = graderStats(img, ref, 2.0);
+  const double mean = (26.0 - 127.0) / 3.0;
+  EXPECT_DOUBLE_EQ(s.bias, -mean);
+  EXPECT_NEAR(s.variance, ((26 - mean) * (26 - mean) + (-127 - mean) * (-127 - mean) + mean * mean) / 3.0, 1e-9);
+  EXPECT_THROW(graderStats(RadianceImage(2, 1), ref, 1.0), std::invalid_argument);
 }
 
 }  // namespace

@@ -265,6 +265,48 @@ TEST(PathDepth, AQuadLightsBackIsBlackAndReflectsNothing) {
     }
 }
 
+// ---- point and directional lights: sampled at every vertex, whatever NEE says ------------
+
+TEST(PathPointLights, DiffuseFloorUnderAPointAndADirectionalLight) {
+  // maxdepth 1 and nothing else in the scene: the sampled bounce leaves for the black sky, so
+  // one sample at the pixel centre is exact: kd / pi (I / (c + l d + q d^2) cos + I_dir cos).
+  SceneDesc s;
+  Material floor;
+  floor.ambient = dvec3(0.0);
+  floor.diffuse = dvec3(0.5, 0.4, 0.3);
+  addQuad(s, dvec3(-5, 0, -5), dvec3(10, 0, 0), dvec3(0, 0, 10), addMaterial(s, floor));
+  Light point;
+  point.type = LightType::Point;
+  point.vec = dvec3(0.6, 2.0, 0.0);
+  point.color = dvec3(3.0, 2.0, 1.0);
+  point.attenuation = dvec3(1.0, 0.5, 0.25);
+  Light sun;
+  sun.vec = glm::normalize(dvec3(-1.0, 1.0, 0.0));
+  sun.color = dvec3(0.2, 0.3, 0.4);
+  s.lights = {point, sun};
+  setCamera(s, dvec3(0.0, 1.0, 3.0), dvec3(0.0), 30.0, 1, 1);
+  s.maxDepth = 1;
+  const double d = std::sqrt(0.36 + 4.0), cosPoint = 2.0 / d, cosSun = std::sqrt(0.5);
+  for (NextEvent nee : {NextEvent::Off, NextEvent::On, NextEvent::Mis}) {
+    for (Integrator integrator : {Integrator::PathTracer, Integrator::Direct}) {
+      s.path.integrator = integrator;
+      s.path.nextEvent = nee;
+      const RadianceImage image = render(s);
+      for (int k = 0; k < 3; ++k) {
+        const double expected =
+            floor.diffuse[k] / kPi * (point.color[k] / (1.0 + 0.5 * d + 0.25 * d * d) * cosPoint + sun.color[k] * cosSun);
+        EXPECT_NEAR(image.rgb[k], expected, 1e-6 * expected) << "channel " << k << " nee " << int(nee);
+      }
+    }
+  }
+  // A blocker between the floor and the point light leaves only the directional light.
+  Material black;
+  addQuad(s, dvec3(-0.5, 1.0, -0.5), dvec3(0, 0, 1.4), dvec3(1.4, 0, 0), addMaterial(s, black));
+  s.path.integrator = Integrator::PathTracer;
+  const RadianceImage shadowed = render(s);
+  EXPECT_NEAR(shadowed.rgb[0], 0.5 / kPi * 0.2 * cosSun, 1e-6);
+}
+
 // ---- f. the course's scenes ----------------------------------------------------------------
 
 TEST(PathCourseScenes, EveryCse168SceneRendersWithoutNaN) {

@@ -1,6 +1,7 @@
 // Bias and variance as the CSE 168 grading page reported them (SPEC-PATHTRACING section 5).
 #include "image/grader_stats.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -40,7 +41,19 @@ GraderStats graderStats(const Image& image, const Image& reference) {
   return statsOfDifferences(d);
 }
 
-GraderStats graderStats(const RadianceImage& image, const RadianceImage& reference) {
+GraderStats graderStats(const RadianceImage& image, const RadianceImage& reference, double gamma) {
+  requireSameSize(image.width, image.height, reference.width, reference.height);
+  const auto encode = [gamma](float value) {
+    const double v = value;
+    if (!(v > 0.0)) return 0.0;
+    return std::floor(255.0 * std::min(std::pow(v, 1.0 / gamma), 1.0));
+  };
+  std::vector<double> d(image.rgb.size());
+  for (std::size_t i = 0; i < d.size(); ++i) d[i] = encode(image.rgb[i]) - encode(reference.rgb[i]);
+  return statsOfDifferences(d);
+}
+
+GraderStats graderStatsLinear(const RadianceImage& image, const RadianceImage& reference) {
   requireSameSize(image.width, image.height, reference.width, reference.height);
   std::vector<double> d(image.rgb.size());
   for (std::size_t i = 0; i < d.size(); ++i) d[i] = 255.0 * (double(image.rgb[i]) - double(reference.rgb[i]));

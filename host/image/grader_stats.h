@@ -17,7 +17,13 @@ struct GraderStats {
 // Over the bytes of two images of one size (throws std::invalid_argument otherwise).
 GraderStats graderStats(const Image& image, const Image& reference);
 
-// Over two linear images, each value taken as 255 L (no quantization, no gamma).
-GraderStats graderStats(const RadianceImage& image, const RadianceImage& reference);
+// As the course's grader saw them: both linear images encoded to bytes as the output does,
+// byte = floor(255 clamp(L^(1/gamma), 0, 1)) (NaN: 0), then compared as above. This is the
+// figure to report beside the course's published ones (bench/convergence computes the same).
+GraderStats graderStats(const RadianceImage& image, const RadianceImage& reference, double gamma);
+
+// Over two linear images, each value taken as 255 L (no quantization, no gamma): the same
+// measures without the rounding of the bytes.
+GraderStats graderStatsLinear(const RadianceImage& image, const RadianceImage& reference);
 
 }  // namespace vkrt
