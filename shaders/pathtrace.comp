@@ -179,8 +179,10 @@ vec3 sampleDirection(GpuMaterial m, vec3 n, vec3 wo) {
 
 // ---- analyticdirect: the closed form (SPEC-PATHTRACING section 3) ------------------------------
 
-// Phi(x) = 1/2 sum_k theta_k Gamma_k over the corners a, a+ab, a+ab+ac, a+ac.
+// Phi(x) = 1/2 sum_k theta_k Gamma_k over the corners a, a+ab, a+ab+ac, a+ac; 0 behind the
+// light (it emits on one side).
 vec3 polygonIrradianceVector(GpuQuadLight q, vec3 x) {
+  if (!(dot(q.normal.xyz, x - q.corner.xyz) > 0.0)) return vec3(0.0);
   vec3 v[4] = vec3[4](q.corner.xyz - x, q.corner.xyz + q.edgeAB.xyz - x,
                       q.corner.xyz + q.edgeAB.xyz + q.edgeAC.xyz - x, q.corner.xyz + q.edgeAC.xyz - x);
   vec3 phi = vec3(0.0);
@@ -272,9 +274,10 @@ void beginShading() {
   radiance += throughput * m.emission.rgb;   // found by hitting only (not sampled)
   bool analytic = path.integrator == kIntegratorAnalyticDirect;
   // Whether this vertex samples lights and scatters: SPEC-PATHTRACING section 4's depth rule
-  // (vertex `bounce` may when bounce < maxdepth), one vertex for direct lighting.
+  // (vertex `bounce` may when bounce < maxdepth, kMaxBounces with no limit), one vertex for
+  // direct lighting.
   bool scatters = path.integrator == kIntegratorPathTracer
-                      ? path.maxDepth == kUnlimitedDepth || bounce < path.maxDepth
+                      ? bounce < min(path.maxDepth, kMaxBounces)
                       : bounce == 0u;
   // f = 0 unless w_o is on the side of the normal (the closed form does not look at w_o).
   if (!scatters || (!analytic && !(dot(hitNormal, rayDir) < 0.0))) {
@@ -328,8 +331,9 @@ void quadLightSample(uint j, uint k, GpuMaterial m) {
   if (any(notEqual(c, vec3(0.0)))) startShadowRay(wi, distance * kQuadShadowSpan, cosSurface, c);
 }
 
-// Point or directional light i: always sampled (it cannot be hit).
-void pointLightSample(uint i, GpuMaterial m) {
+// Point or directional light i: always sampled (it cannot be hit). analyticdirect takes it
+// like its quad lights: diffuse only, no shadow.
+void pointLightSample(uint i, GpuMaterial m, bool analytic) {
   GpuLight light = loadLight(i);
   vec3 wi;
   float tMax = kInfinity, divisor = 1.0;
@@ -345,14 +349,18 @@ void pointLightSample(uint i, GpuMaterial m) {
   }
   float cosSurface = dot(hitNormal, wi);
   if (!(cosSurface > 0.0)) return;
-  vec3 c = throughput * brdf(m, hitNormal, wi, -rayDir) * (light.color.rgb / divisor) * cosSurface;
-  if (any(notEqual(c, vec3(0.0)))) startShadowRay(wi, tMax, cosSurface, c);
+  vec3 f = analytic ? m.diffuse.rgb * kInvPi : brdf(m, hitNormal, wi, -rayDir);
+  vec3 c = throughput * f * (light.color.rgb / divisor) * cosSurface;
+  if (analytic)
+    radiance += c;
+  else if (any(notEqual(c, vec3(0.0))))
+    startShadowRay(wi, tMax, cosSurface, c);
 }
 
 // Leaves the vertex along a sampled direction, or ends the path.
 void scatter(GpuMaterial m) {
   vec3 wo = -rayDir;
-  vec3 wi = sampleDirection(m, hitNormal, wo);
+  vec3 wi = normalize(sampleDirection(m, hitNormal, wo));
   float cosine = dot(hitNormal, wi);
   float pdf = scatterPdf(m, hitNormal, wi, wo);
   if (!(cosine > 0.0 && pdf > 0.0)) {
@@ -393,9 +401,8 @@ void lightStep() {
     }
     return;
   }
-  bool pointLights = (kHasPointLights || kHasDirectionalLights) && path.integrator != kIntegratorAnalyticDirect;
-  if (pointLights && lightIndex < quad + path.lightCount) {
-    pointLightSample(lightIndex++ - quad, m);
+  if ((kHasPointLights || kHasDirectionalLights) && lightIndex < quad + path.lightCount) {
+    pointLightSample(lightIndex++ - quad, m, path.integrator == kIntegratorAnalyticDirect);
     return;
   }
   if (path.integrator == kIntegratorPathTracer)

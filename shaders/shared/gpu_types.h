@@ -361,8 +361,11 @@ GPU_CONST uint kPathSpecHasQuadLights = 6u;
 GPU_CONST uint kPathSpecHasGgx = 7u;          // some material has `brdf ggx`
 GPU_CONST uint kPathSpecCount = 8u;
 
-// GpuPathParams.maxDepth of `maxdepth -1`: no limit, only Russian roulette ends a path.
+// GpuPathParams.maxDepth of `maxdepth -1`: no limit, only Russian roulette ends a path...
 GPU_CONST uint kUnlimitedDepth = 0xFFFFFFFFu;
+// ...or this many bounces (maxdepth -1 without Russian roulette in a closed scene of albedo 1
+// has no end): where the generator's dimensions, bounce * kRngBounceStride, would wrap.
+GPU_CONST uint kMaxBounces = 0xFFFFFFFFu / kRngBounceStride - 1u;
 // A shadow ray toward a point x' on a quad light ends at this fraction of |x' - x|, so that
 // the light's own triangles (at t = |x' - x|, up to rounding) never block it.
 GPU_CONST float kQuadShadowSpan = 0.9990234375f;   // 1 - 2^-10
