@@ -96,9 +96,10 @@ vec3 aroundAxis(vec3 n, float sinTheta, float cosTheta, float phi) {
 bool isGgx(GpuMaterial m) { return kHasGgx && m.ambient.w == kBrdfGgx; }
 
 // GGX's D, with cos^4 (a^2 + tan^2) written as (a^2 cos^2 + sin^2)^2 (no division by cos).
+// Roughness 0 makes D a delta that no sampled or light direction hits: 0 (not 0 / 0).
 float ggxD(float alpha, float nDotH) {
-  if (!(nDotH > 0.0)) return 0.0;
   float a2 = alpha * alpha, c2 = nDotH * nDotH;
+  if (!(nDotH > 0.0) || a2 == 0.0) return 0.0;
   float d = a2 * c2 + (1.0 - c2);
   return a2 / (kPi * d * d);
 }
