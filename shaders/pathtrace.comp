@@ -73,7 +73,9 @@ uint shadowRays = 0u, scatterRays = 0u, nonFinite = 0u;
 
 // ---- random numbers (gpu_types.h: the generator and how each number is used) ------------------
 
-float random(uint dimension) { return rngUniform(path.seed, pixelIndex, path.firstSample + sampleIndex, dimension); }
+uint sampleKey;   // rngSampleKey of the current sample
+void keySample() { sampleKey = rngSampleKey(path.seed, pixelIndex, path.firstSample + sampleIndex); }
+float random(uint dimension) { return rngUniformKeyed(sampleKey, dimension); }
 // The number of `slot` at the current path vertex.
 float randomAt(uint slot) { return random(rngDimension(bounce, slot)); }
 
@@ -213,6 +215,7 @@ void startRay(vec3 origin, vec3 dir, float tMin) {
 
 // The camera ray of sample `sampleIndex` (gpu_types.h: the pixel centre, or jittered).
 void startCamera() {
+  keySample();
   float u = 0.5, v = 0.5;
   if (path.jitter != 0u) {
     u = random(kRngPixelX);
@@ -517,6 +520,7 @@ void loadState(uint slot) {
   hitPrim = states[slot].hitPrim;
   hitMaterial = states[slot].hitMaterial;
   sampleIndex = states[slot].sampleIndex;
+  keySample();
   for (uint i = 0u; i < sp; ++i) {
     stack[i] = states[slot].stack[i];
     stackT[i] = states[slot].stackT[i];

@@ -190,10 +190,20 @@ GPU_FN uint rngHash(uint x) {
   return x;
 }
 
+// The hash of (seed, pixel, sample): what the numbers of one sample share (a shader computes
+// it once per sample).
+GPU_FN uint rngSampleKey(uint seed, uint pixel, uint sampleIndex) {
+  return rngHash(sampleIndex + rngHash(pixel + rngHash(seed)));
+}
+
+// The number of `dimension` in the sample whose key is `key`: rngUniform's, bit for bit.
+GPU_FN float rngUniformKeyed(uint key, uint dimension) {
+  return float(rngHash(dimension + key) >> 8u) * 5.9604644775390625e-8f;   // 2^-24
+}
+
 // A uniform number in [0, 1): 24 random bits, so it is exact in float and never 1.
 GPU_FN float rngUniform(uint seed, uint pixel, uint sampleIndex, uint dimension) {
-  uint h = rngHash(dimension + rngHash(sampleIndex + rngHash(pixel + rngHash(seed))));
-  return float(h >> 8u) * 5.9604644775390625e-8f;   // 2^-24
+  return rngUniformKeyed(rngSampleKey(seed, pixel, sampleIndex), dimension);
 }
 
 // The dimension of `slot` at path vertex `bounce`.
