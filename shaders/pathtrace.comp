@@ -14,30 +14,31 @@
 
 #include "gpu_types.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;   // kWorkgroupSize
+layout(local_size_x = kWorkgroupSize, local_size_y = kWorkgroupSize) in;
 
 // Specialization constants: what the scene contains (gpu_types.h, kSpec*, kPathSpec*).
-layout(constant_id = 0) const bool kHasTriangles = true;
-layout(constant_id = 1) const bool kHasSpheres = true;
-layout(constant_id = 2) const bool kHasSmoothNormals = true;
-layout(constant_id = 3) const bool kHasPointLights = true;
-layout(constant_id = 4) const bool kHasDirectionalLights = true;
-layout(constant_id = 5) const bool kHasAttenuation = true;
-layout(constant_id = 6) const bool kHasQuadLights = true;
-layout(constant_id = 7) const bool kHasGgx = true;
+layout(constant_id = kSpecHasTriangles) const bool kHasTriangles = true;
+layout(constant_id = kSpecHasSpheres) const bool kHasSpheres = true;
+layout(constant_id = kSpecHasSmoothNormals) const bool kHasSmoothNormals = true;
+layout(constant_id = kSpecHasPointLights) const bool kHasPointLights = true;
+layout(constant_id = kSpecHasDirectionalLights) const bool kHasDirectionalLights = true;
+layout(constant_id = kSpecHasAttenuation) const bool kHasAttenuation = true;
+layout(constant_id = kPathSpecHasQuadLights) const bool kHasQuadLights = true;
+layout(constant_id = kPathSpecHasGgx) const bool kHasGgx = true;
 
 #include "scene_reads.glsl"
 #include "intersect.glsl"
 
 #ifdef VKRT_TEXEL_READS
-layout(binding = kBindingQuadLights) uniform usamplerBuffer quadLightWords;   // RGBA32UI, 5 texels each
+layout(binding = kBindingQuadLights) uniform usamplerBuffer quadLightWords;   // RGBA32UI
 GpuQuadLight loadQuadLight(uint i) {
+  const uint n = kQuadLightTexels;
   GpuQuadLight q;
-  q.corner = texelF(quadLightWords, 5u * i);
-  q.edgeAB = texelF(quadLightWords, 5u * i + 1u);
-  q.edgeAC = texelF(quadLightWords, 5u * i + 2u);
-  q.normal = texelF(quadLightWords, 5u * i + 3u);
-  q.radiance = texelF(quadLightWords, 5u * i + 4u);
+  q.corner = texelF(quadLightWords, n * i);
+  q.edgeAB = texelF(quadLightWords, n * i + 1u);
+  q.edgeAC = texelF(quadLightWords, n * i + 2u);
+  q.normal = texelF(quadLightWords, n * i + 3u);
+  q.radiance = texelF(quadLightWords, n * i + 4u);
   return q;
 }
 #else

@@ -19,6 +19,7 @@ namespace vkrt {
 namespace {
 
 constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
+static_assert(sizeof(gpu::GpuQuadLight) == 16 * gpu::kQuadLightTexels, "the texel view of a quad light");
 
 // The features pathtrace.comp is specialised to (all on when not specializing), and what was
 // left out, for --stats.

@@ -132,6 +132,7 @@ struct GpuQuadLight {
   vec4 radiance;            // rgb = L, w unused
 };
 GPU_ASSERT_SIZE(GpuQuadLight, 80)
+GPU_CONST uint kQuadLightTexels = 5u;   // RGBA32UI texels of one GpuQuadLight (texel-buffer reads)
 
 // Path integrators (SPEC-PATHTRACING sections 3-4); the ids the shader and the host share.
 GPU_CONST uint kIntegratorRaytracer = 0u;
