@@ -62,6 +62,7 @@ SceneDesc baseScene(int w, int h, Integrator integrator) {
   s.width = w;
   s.height = h;
   s.path.integrator = integrator;
+  s.path.spp = 64;   // samples uniform in the pixel (a render of spp 1 would sample the centres)
   return s;
 }
 
@@ -217,6 +218,7 @@ SceneDesc floorUnderSquareLight(double h, bool cornerAbove, dvec3 kd, dvec3 radi
   s.camera.at = dvec3(0, 0, 0);
   s.camera.up = dvec3(0, 0, -1);
   s.camera.fovyDegrees = 30;
+  s.path.spp = 1;   // the centre pixel's ray: straight down at the origin
   Material floor;
   floor.ambient = dvec3(0.0);
   floor.diffuse = kd;

@@ -60,8 +60,7 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   const auto width = static_cast<std::uint32_t>(region.width()), height = static_cast<std::uint32_t>(region.height());
   const std::uint32_t tile = gpu::kWorkgroupSize;
   const std::uint32_t samples = options.sampleCount ? options.sampleCount : scene.spp;
-  const std::uint32_t renderSpp =
-      options.renderSpp ? options.renderSpp : std::max(scene.spp, options.firstSample + samples);
+  const std::uint32_t renderSpp = options.renderSpp ? options.renderSpp : scene.spp;
 
   // Band height: a multiple of the tile, and a state buffer within maxStateBytes.
   std::size_t rowsByMemory = options.maxStateBytes / (sizeof(gpu::GpuPathTracerState) * width);

@@ -25,7 +25,7 @@ struct VulkanPathOptions {
   std::uint32_t firstSample = 0;
   std::uint32_t sampleCount = 0;          // 0: the scene's spp
   // The whole render's samples per pixel, for the camera rule (gpu_types.h: a render of spp 1
-  // samples the pixel centres); 0: the scene's spp, or firstSample + sampleCount if more.
+  // samples the pixel centres, whatever sampleCount says); 0: the scene's spp.
   std::uint32_t renderSpp = 0;
   std::uint32_t stepBudget = 0;           // steps per pixel per dispatch; 0: kDefaultStepBudget
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
