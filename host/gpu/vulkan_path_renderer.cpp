@@ -175,6 +175,9 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   image.samples = samples;
   gpu::GpuPathPush push{};
   auto* counter = static_cast<volatile gpu::GpuCounters*>(counters.mapped());
+  // The shader's counters are 32-bit: added up here after each dispatch (which traces fewer
+  // than 2^32 rays: at most a band's pixels times the step budget) and zeroed.
+  std::uint64_t shadowRays = 0, scatterRays = 0, nonFinite = 0;
   const std::uint64_t total = std::uint64_t{width} * height * samples;
   for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
     push.bandY0 = y0;
@@ -196,6 +199,12 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
         t.dispatchSeconds += s;
       ++t.dispatches;
       t.suspensions += counter->suspended;
+      shadowRays += counter->shadowRays;
+      scatterRays += counter->reflectionRays;
+      nonFinite += counter->nonFinite;
+      counter->shadowRays = 0;
+      counter->reflectionRays = 0;
+      counter->nonFinite = 0;
       push.resume = 1;
     } while (counter->suspended > 0);
     ++t.bands;
@@ -218,9 +227,9 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   }
   if (rays) {
     rays->primary = std::uint64_t{width} * height * samples;
-    rays->shadow = counter->shadowRays;
-    rays->reflection = counter->reflectionRays;
-    rays->nonFinite = counter->nonFinite;
+    rays->shadow = shadowRays;
+    rays->reflection = scatterRays;
+    rays->nonFinite = nonFinite;
   }
   if (timings) *timings = t;
   return image;
