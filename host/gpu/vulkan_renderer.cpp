@@ -10,6 +10,7 @@
 #include "gpu/compute_pipeline.h"
 #include "errors.h"
 #include "gpu/device_error.h"
+#include "gpu/tile_order.h"
 #include "timing.h"
 #include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
 #include "raytrace_texel.comp.h"   // kRaytraceTexelSpirv: the same with VKRT_TEXEL_READS
@@ -18,15 +19,6 @@ namespace vkrt {
 namespace {
 
 constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
-
-// A stride coprime with `n`, near n times the golden ratio's fraction, so that consecutive
-// workgroups land on tiles far apart.
-std::uint32_t scatterStride(std::uint32_t n) {
-  if (n <= 2) return 1;
-  std::uint32_t s = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(n * 0.6180339887));
-  while (std::gcd(s, n) != 1) ++s;
-  return s;
-}
 
 // Which features the scene uses; the shader is specialised to them (all on when not
 // specializing). Also says, for --stats, what was left out.

@@ -132,6 +132,7 @@ struct GpuQuadLight {
   vec4 radiance;            // rgb = L, w unused
 };
 GPU_ASSERT_SIZE(GpuQuadLight, 80)
+GPU_CONST uint kQuadLightTexels = 5u;   // RGBA32UI texels of one GpuQuadLight (texel-buffer reads)
 
 // Path integrators (SPEC-PATHTRACING sections 3-4); the ids the shader and the host share.
 GPU_CONST uint kIntegratorRaytracer = 0u;
@@ -190,10 +191,20 @@ GPU_FN uint rngHash(uint x) {
   return x;
 }
 
+// The hash of (seed, pixel, sample): what the numbers of one sample share (a shader computes
+// it once per sample).
+GPU_FN uint rngSampleKey(uint seed, uint pixel, uint sampleIndex) {
+  return rngHash(sampleIndex + rngHash(pixel + rngHash(seed)));
+}
+
+// The number of `dimension` in the sample whose key is `key`: rngUniform's, bit for bit.
+GPU_FN float rngUniformKeyed(uint key, uint dimension) {
+  return float(rngHash(dimension + key) >> 8u) * 5.9604644775390625e-8f;   // 2^-24
+}
+
 // A uniform number in [0, 1): 24 random bits, so it is exact in float and never 1.
 GPU_FN float rngUniform(uint seed, uint pixel, uint sampleIndex, uint dimension) {
-  uint h = rngHash(dimension + rngHash(sampleIndex + rngHash(pixel + rngHash(seed))));
-  return float(h >> 8u) * 5.9604644775390625e-8f;   // 2^-24
+  return rngUniformKeyed(rngSampleKey(seed, pixel, sampleIndex), dimension);
 }
 
 // The dimension of `slot` at path vertex `bounce`.
@@ -346,6 +357,91 @@ GPU_ASSERT_OFFSET(GpuPathState, phase, 128)
 GPU_ASSERT_OFFSET(GpuPathState, stack, 160)
 
 GPU_CONST uint kNoHit = 0xFFFFFFFFu;
+
+// ---- pathtrace.comp: the path integrators (SPEC-PATHTRACING sections 2-4) ----------------------
+// It reads the scene at the bindings of raytrace.comp (kBindingTriangles .. kBindingPrimRefs),
+// and shares kBindingPathStates, kBindingCounters and kBindingParams (GpuRenderParams: sizes,
+// bands, tiles, the BVH root) with it. At kBindingPixels it adds each pixel's samples into a
+// vec4 (rgb = sum of the samples' radiance, w = 1 once the pixel's samples are all done).
+GPU_CONST uint kBindingQuadLights = 11u;   // GpuQuadLight[] (a texel buffer with the texel reads)
+GPU_CONST uint kBindingPathParams = 12u;   // GpuPathParams (a uniform buffer)
+GPU_CONST uint kPathBindingCount = 13u;
+
+// Its specialization constants: ids 0-5 mean what kSpecHasTriangles .. kSpecHasAttenuation do.
+GPU_CONST uint kPathSpecHasQuadLights = 6u;
+GPU_CONST uint kPathSpecHasGgx = 7u;          // some material has `brdf ggx`
+GPU_CONST uint kPathSpecCount = 8u;
+
+// GpuPathParams.maxDepth of `maxdepth -1`: no limit, only Russian roulette ends a path...
+GPU_CONST uint kUnlimitedDepth = 0xFFFFFFFFu;
+// ...or this many bounces (maxdepth -1 without Russian roulette in a closed scene of albedo 1
+// has no end): where the generator's dimensions, bounce * kRngBounceStride, would wrap.
+GPU_CONST uint kMaxBounces = 0xFFFFFFFFu / kRngBounceStride - 1u;
+// A shadow ray toward a point x' on a quad light ends at this fraction of |x' - x|, so that
+// the light's own triangles (at t = |x' - x|, up to rounding) never block it.
+GPU_CONST float kQuadShadowSpan = 0.9990234375f;   // 1 - 2^-10
+
+// One render's path settings, camera and sample range (a uniform buffer; std140 and std430
+// agree: vec4 and uint members only).
+struct GpuPathParams {
+  vec4 cameraOrigin;        // as GpuPushConstants: look-from, scene-centred frame
+  vec4 cameraRight;         // one pixel to the right
+  vec4 cameraUp;            // one pixel up
+  vec4 cameraBack;          // normalize(from - at)
+  uint integrator;          // kIntegratorAnalyticDirect, kIntegratorDirect or kIntegratorPathTracer
+  uint nextEvent;           // kNextEventOff, On or Mis
+  uint sampling;            // kSamplingHemisphere, Cosine or Brdf
+  uint russianRoulette;     // 0 or 1
+  uint maxDepth;            // SPEC-PATHTRACING section 4's D, or kUnlimitedDepth
+  uint lightSamples;        // N per quad light per shading point
+  uint lightStrata;         // sqrt(N) with `lightstratify on`, else 0
+  uint quadLightCount;
+  uint lightCount;          // point and directional lights
+  uint seed;
+  uint firstSample;         // this render's samples are [firstSample, firstSample + sampleCount)
+  uint sampleCount;
+  uint jitter;              // 0: every sample through the pixel centre (a render of spp 1); 1: uniform in the pixel
+  uint pad0, pad1, pad2;    // size 128
+};
+GPU_ASSERT_SIZE(GpuPathParams, 128)
+GPU_ASSERT_OFFSET(GpuPathParams, integrator, 64)
+GPU_ASSERT_OFFSET(GpuPathParams, maxDepth, 80)
+GPU_ASSERT_OFFSET(GpuPathParams, seed, 100)
+GPU_ASSERT_OFFSET(GpuPathParams, jitter, 112)
+
+struct GpuPathPush {
+  uint bandY0;              // first image row of this band
+  uint resume;              // 0: every pixel starts its samples; 1: continue suspended pixels
+  uint pad0, pad1;
+};
+GPU_ASSERT_SIZE(GpuPathPush, 16)
+
+// Everything a suspended pixel of pathtrace.comp needs to continue where it stopped.
+struct GpuPathTracerState {
+  vec4 origin;              // current ray (camera or scattered): xyz origin, w = tMin
+  vec4 direction;           // xyz unit direction, w = nearest t so far
+  vec4 throughput;          // rgb path throughput T, w = barycentric b1 of the nearest hit
+  vec4 radiance;            // rgb radiance of this sample so far, w = barycentric b2
+  vec4 pixelSum;            // rgb sum of the pixel's finished samples, w = pdf of the last scatter (MIS)
+  vec4 hitPoint;            // xyz of the shaded hit, w = the offset of its secondary rays
+  vec4 hitNormal;           // xyz unit shading normal, w = kGrazingPerMagnitude * the hit's magnitude
+  vec4 shadowDir;           // xyz shadow ray direction, w = its tMax
+  vec4 pending;             // rgb what the shadow ray adds when nothing blocks it, w = cos at the hit
+  uint phase;               // kPhaseTrace, kPhaseLight, kPhaseShadow or kPhaseDone
+  uint bounce;              // path vertex: 0 at the camera ray's hit
+  uint lightIndex;          // the next light sample of the vertex (quad lights' samples, then lights)
+  uint stackSize;
+  uint hitPrim;             // primRef of the nearest hit so far, or kNoHit
+  uint hitMaterial;
+  uint sampleIndex;         // samples of this render finished
+  uint pad0;                // size 176
+  uint stack[kTraversalStackSize];
+  float stackT[kTraversalStackSize];   // saved too, so that a resumed traversal is the same
+};
+GPU_ASSERT_SIZE(GpuPathTracerState, 176 + 8 * 96)
+GPU_ASSERT_OFFSET(GpuPathTracerState, phase, 144)
+GPU_ASSERT_OFFSET(GpuPathTracerState, stack, 176)
+GPU_ASSERT_OFFSET(GpuPathTracerState, stackT, 176 + 4 * 96)
 
 #ifdef __cplusplus
 }  // namespace gpu
