@@ -80,7 +80,7 @@ TEST(Limits, AnImageLargerThanTheMemoryIsRefusedBeforeAllocating) {
                                   {"VKRT_TEST_MEMORY_AVAILABLE_MB=100"}));
   EXPECT_EQ(r.exitCode, 6) << r.output;
   EXPECT_NE(r.output.find("vkrt: error: out of memory: a 16384x16384 image (" + dir +
-                          "/big.test:2) needs 768 MB, and this machine has 100 MB available"),
+                          "/big.test:2) needs 3840 MB, and this machine has 100 MB available"),
             std::string::npos)
       << r.output;
   EXPECT_LT(r.peakRssKb / 1024, 200) << "refused, but only after allocating the image";
