@@ -45,10 +45,11 @@ void writeImageAtomic(const Image& image, const std::string& path) {
 }
 
 void writeImageAtomic(const RadianceImage& image, const std::string& path, double gamma) {
-  if (imageFormatFor(path) == ImageFormat::Pfm)
-    writePfmAtomic(image, path);
-  else
-    writeImageAtomic(encodeImage(image, gamma), path);
+  switch (imageFormatFor(path)) {
+    case ImageFormat::Pfm: writePfmAtomic(image, path); break;
+    case ImageFormat::Ppm: writePpmAtomic(encodeImage(image, gamma), path); break;
+    case ImageFormat::Png: writePngAtomic(image, gamma, path); break;   // encoded row by row
+  }
 }
 
 }  // namespace vkrt

@@ -152,7 +152,7 @@ RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeRep
     seen.emplace_back(path, *record);
     batch.samples = record->total();
     batch.text.clear();
-    accumulateMean(mean, batch);
+    accumulateMean(mean, std::move(batch));
     merged.ranges.insert(merged.ranges.end(), record->ranges.begin(), record->ranges.end());
   }
   if (firstCrop) mean.text.emplace_back(kCropKeyword, *firstCrop);

@@ -87,10 +87,10 @@ std::string sharedSample(const SampleRecord& a, const SampleRecord& b) {
   return "";
 }
 
-void accumulateMean(RadianceImage& mean, const RadianceImage& batch) {
+void accumulateMean(RadianceImage& mean, RadianceImage batch) {
   if (mean.rgb.empty()) {
     std::vector<std::pair<std::string, std::string>> text = std::move(mean.text);
-    mean = batch;
+    mean = std::move(batch);
     if (!text.empty()) mean.text = std::move(text);
     return;
   }

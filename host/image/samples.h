@@ -40,8 +40,8 @@ std::string sharedSample(const SampleRecord& a, const SampleRecord& b);
 
 // mean := the mean of `mean` (mean.samples samples) and `batch` (batch.samples samples),
 // weighted by those counts, per channel in double, stored as float; mean.samples becomes the
-// sum. A `mean` with no pixels takes `batch` as it is. The sizes must agree (RT_CHECK-style:
-// throws InternalError otherwise).
-void accumulateMean(RadianceImage& mean, const RadianceImage& batch);
+// sum. A `mean` with no pixels takes `batch` as it is (moved: no second copy of a large image).
+// The sizes must agree (throws InternalError otherwise: a bug of the caller).
+void accumulateMean(RadianceImage& mean, RadianceImage batch);
 
 }  // namespace vkrt

@@ -51,7 +51,7 @@ RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOp
     if (batch.samples != count)
       throw InternalError("a backend returned " + std::to_string(batch.samples) + " samples for a batch of " +
                           std::to_string(count));
-    accumulateMean(mean, batch);
+    accumulateMean(mean, std::move(batch));
     r.samples += count;
     ++r.batches;
     if (options.spp != 0 && r.samples >= options.spp) break;
