@@ -123,3 +123,13 @@ TEST(CliFloat, MergeAveragesSampleBatches) {
   EXPECT_NE(same.output.find("hold the same samples (seed 1, sample 0)"), std::string::npos) << same.output;
   EXPECT_FALSE(fileExists(dir + "/x.pfm"));
 }
+
+// A scene's `output NAME.pfm` is a name vkrt writes as named: no warning, a PFM.
+TEST(CliFloat, SceneOutputPfmIsWrittenAsPfmWithoutAWarning) {
+  std::string dir = freshDir("cli-float/scene-output");
+  writeFile(dir + "/s.test", std::string(kScene) + "output " + dir + "/o.pfm\n");
+  RunResult r = runVkrt("--backend cpu --strict " + dir + "/s.test");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+  EXPECT_TRUE(isPfmFile(dir + "/o.pfm"));
+}

@@ -367,7 +367,8 @@ class Parser {
     std::string_view base = name.substr(name.find_last_of('/') + 1);   // npos + 1 == 0
     std::size_t dot = base.rfind('.');
     if (dot == std::string_view::npos ||
-        !(equalIgnoringCase(base.substr(dot + 1), "png") || equalIgnoringCase(base.substr(dot + 1), "ppm")))
+        !(equalIgnoringCase(base.substr(dot + 1), "png") || equalIgnoringCase(base.substr(dot + 1), "ppm") ||
+          equalIgnoringCase(base.substr(dot + 1), "pfm")))
       warn(WarningKind::OutputName, "output file " + quoted(name) +
                                         " is not named .png or .ppm: vkrt writes PNG, under that name");
     scene_.output = std::string(name);
