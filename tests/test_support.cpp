@@ -41,6 +41,13 @@ std::optional<std::string> cse167Dir() {
   return std::nullopt;
 }
 
+std::optional<std::string> cse168Dir() {
+  const char* env = std::getenv("VKRT_CSE168_DIR");
+  fs::path dir = env ? fs::path(env) : fs::path(VKRT_SOURCE_DIR) / ".." / "shared" / "cse168";
+  if (fs::is_directory(dir / "scenes")) return fs::canonical(dir).string();
+  return std::nullopt;
+}
+
 std::vector<std::string> projectSceneNames() {
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(fs::path(VKRT_SOURCE_DIR) / "scenes"))

@@ -71,7 +71,7 @@ RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene
     o.sampleCount = batch.count;
     o.progress = batchProgress(plan, progress, px);
     RayCounts rays;
-    RadianceImage image = renderReference(scene, bvh, o, &rays);
+    RadianceImage image = renderReference(scene, bvh, o, &rays);   // path integrators: by scene.path.integrator
     report.rays += rays;
     return image;
   };
@@ -118,7 +118,7 @@ RadianceImage renderWithVulkan(const RenderRequest& request, const SceneDesc& sc
     o.progress = batchProgress(plan, progress, px);
     RayCounts rays;
     VulkanTimings timings;
-    RadianceImage image = renderVulkan(context, gpuScene, o, &rays, &timings);
+    RadianceImage image = renderVulkan(context, gpuScene, o, &rays, &timings);   // path integrators: likewise
     report.rays += rays;
     report.vulkan = timings;   // the last batch's (the Whitted model has one)
     return image;
@@ -294,8 +294,10 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
   report.spheres = scene.spheres.size();
   report.lights = scene.lights.size();
 
-  report.gamma = scene.path.gamma;
   report.pathIntegrator = scene.path.integrator != Integrator::Raytracer;
+  // The Whitted model ignores `gamma` (SPEC-PATHTRACING section 1): its bytes are SPEC
+  // section 7's, and the shader's exactness cut-off reasons in those (gamma 1).
+  report.gamma = report.pathIntegrator ? scene.path.gamma : 1.0;
   SamplePlan plan = samplePlan(request, scene, progress);
 
   RenderSession ownSession;   // for this render only, when not lent one
