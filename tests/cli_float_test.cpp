@@ -133,3 +133,30 @@ TEST(CliFloat, SceneOutputPfmIsWrittenAsPfmWithoutAWarning) {
   EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
   EXPECT_TRUE(isPfmFile(dir + "/o.pfm"));
 }
+
+// The flow of a render farm through the command line, for a path integrator's scene: --spp
+// and --seed recorded in each batch, --time reported, the batches merged with the scene's
+// gamma. (The images' values are the integrators' business; this checks the plumbing.)
+TEST(CliFloat, PathSceneBatchesCarryTheirSamplesAndMerge) {
+  std::string dir = freshDir("cli-float/path");
+  writeFile(dir + "/p.test",
+            "size 8 6\nintegrator analyticdirect\nspp 2\ngamma 2.2\ncamera 0 0 4 0 0 0 0 1 0 45\n"
+            "quadLight -1 2 -1 2 0 0 0 0 2 1 1 1\ndiffuse 0.5 0.5 0.5\nsphere 0 0 0 1\n");
+  RunResult a = runVkrt("--backend cpu --spp 4 --seed 3 -o " + dir + "/a.pfm " + dir + "/p.test");
+  ASSERT_EQ(a.exitCode, 0) << a.output;
+  EXPECT_NE(a.output.find("(8x6, 4 samples per pixel)"), std::string::npos) << a.output;
+  EXPECT_EQ(a.output.find("warning"), std::string::npos) << a.output;
+  RunResult b = runVkrt("--backend cpu --seed 4 -o " + dir + "/b.pfm " + dir + "/p.test");   // the scene's spp 2
+  ASSERT_EQ(b.exitCode, 0) << b.output;
+  EXPECT_EQ(readPfm(dir + "/a.pfm").text,
+            (std::vector<std::pair<std::string, std::string>>{{kSamplesKeyword, "4 gamma 2.2000000000000002 seeds 3:0+4"}}));
+  RunResult m = runVkrt("merge -o " + dir + "/m.png " + dir + "/a.pfm " + dir + "/b.pfm");
+  ASSERT_EQ(m.exitCode, 0) << m.output;
+  EXPECT_NE(m.output.find("averaged 2 batches (6 samples per pixel)"), std::string::npos) << m.output;
+  RunResult mf = runVkrt("merge -q -o " + dir + "/m.pfm " + dir + "/a.pfm " + dir + "/b.pfm");
+  ASSERT_EQ(mf.exitCode, 0) << mf.output;
+  EXPECT_EQ(readImage(dir + "/m.png").rgb, encodeImage(readPfm(dir + "/m.pfm"), 2.2).rgb);
+  RunResult t = runVkrt("--backend cpu --time 0.2 -o " + dir + "/t.png " + dir + "/p.test");
+  ASSERT_EQ(t.exitCode, 0) << t.output;
+  EXPECT_NE(t.output.find("samples per pixel when the time was up"), std::string::npos) << t.output;
+}
