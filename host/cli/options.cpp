@@ -264,7 +264,6 @@ Options parseOptions(const std::vector<std::string>& args) {
       o.request.spp = static_cast<std::uint64_t>(integerValue(name, take(name), 1, 1 << 30));
     } else if (name == "--seed") {
       o.request.seed = seedValue(take(name));
-      o.request.seedGiven = true;
     } else if (name == "--time") {
       o.request.timeLimitSeconds = timeValue(take(name));
     } else if (name == "--maxdepth") {

@@ -140,7 +140,7 @@ SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, Prog
   if (scene.path.integrator == Integrator::Raytracer) {
     std::vector<std::string> given;
     if (request.spp > 0) given.push_back("--spp");
-    if (request.seedGiven) given.push_back("--seed");
+    if (request.seed) given.push_back("--seed");
     if (request.timeLimitSeconds > 0) given.push_back("--time");
     if (!given.empty()) {
       std::string list;
@@ -155,7 +155,7 @@ SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, Prog
     plan.progressive.progress = nullptr;
     return plan;
   }
-  plan.seed = request.seed;
+  plan.seed = request.seed.value_or(0);
   plan.progressive.spp = request.spp > 0 ? request.spp
                          : request.timeLimitSeconds > 0 ? 0
                                                         : static_cast<std::uint64_t>(scene.path.spp);

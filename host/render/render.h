@@ -52,8 +52,7 @@ struct RenderRequest {
   // The Whitted model (one deterministic sample) ignores them, with a warning
   // (onOptionWarning) when given.
   std::uint64_t spp = 0;
-  std::uint32_t seed = 0;
-  bool seedGiven = false;
+  std::optional<std::uint32_t> seed;   // none: 0
   double timeLimitSeconds = 0;
   // Every warning is an error: the scene's (SPEC section 8), and pixels whose colour came
   // out NaN or infinite (then no image is written).
