@@ -24,7 +24,7 @@ layout(constant_id = 7) const bool kCutoff = true;
 #include "scene_reads.glsl"
 #include "intersect.glsl"
 
-layout(std430, binding = kBindingPixels) buffer Pixels { uint pixels[]; };   // alpha 0: suspended
+layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance; w 0: suspended
 layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathState states[]; };
 layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
 
@@ -65,11 +65,9 @@ void beginShading() {
   phase = kPhaseLight;
 }
 
-// SPEC section 7: floor(clamp(c, 0, 1) * 255); NaN becomes 0.
-uint toByte(float c) { return c > 0.0 ? uint(floor(min(c, 1.0) * 255.0)) : 0u; }
-
 // The exactness cut-off (GpuPushConstants): true when the rest of a path whose next segment
-// has weight `weight` and is segment `nextDepth` cannot change any byte of the pixel.
+// has weight `weight` and is segment `nextDepth` cannot change any byte of the pixel, as the
+// output encodes it (host/image/encode.h: floor(clamp(c, 0, 1) * 255) in float, gamma 1).
 bool restCannotChangePixel(vec3 weight, uint nextDepth) {
   bool nonNegative = pc.cutoffBound.w != 0.0;
   if (nonNegative && all(greaterThanEqual(radiance, vec3(1.0)))) return true;   // saturated
@@ -273,7 +271,7 @@ void main() {
   uint slot = yInBand * params.width + x;
 
   if (pc.resume != 0u) {
-    if ((pixels[slot] >> 24) != 0u) return;   // finished in an earlier round
+    if (pixels[slot].w != 0.0) return;   // finished in an earlier round
     loadState(slot);
   } else {
     // Camera ray through the pixel centre (SPEC section 3), in the full image's pixel
@@ -300,12 +298,12 @@ void main() {
   }
   if (phase != kPhaseDone) {
     saveState(slot);
-    pixels[slot] = 0u;
+    pixels[slot] = vec4(0.0);
     atomicAdd(counters.suspended, 1u);
     return;
   }
-  // The guard: a NaN channel is written as 0 and an infinite one as 0 or 1 (toByte), and
-  // the pixel is counted, so that no NaN or infinity reaches a pixel unseen.
+  // The guard: a NaN or infinite pixel is counted, so that none reaches the image unseen
+  // (the output encodes NaN as 0 and an infinity as 0 or 1).
   if (any(isnan(radiance)) || any(isinf(radiance))) atomicAdd(counters.nonFinite, 1u);
-  pixels[slot] = toByte(radiance.r) | (toByte(radiance.g) << 8) | (toByte(radiance.b) << 16) | (255u << 24);
+  pixels[slot] = vec4(radiance, 1.0);
 }

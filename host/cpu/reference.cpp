@@ -17,6 +17,14 @@ namespace {
 constexpr double kInf = kInfinity;
 constexpr int kTile = 16;
 
+// The nearest float; beyond float's range, +-infinity (a plain cast would be undefined there).
+float toFloat(double c) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  if (c > kMax) return std::numeric_limits<float>::infinity();
+  if (c < -kMax) return -std::numeric_limits<float>::infinity();
+  return static_cast<float>(c);
+}
+
 class Tracer {
  public:
   Tracer(const SceneDesc& scene, const Bvh& bvh) : scene_(scene), query_(scene, bvh) {}
@@ -100,9 +108,11 @@ class Tracer {
 
 }  // namespace
 
-Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options, RayCounts* counts) {
+RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options,
+                              RayCounts* counts) {
   const PixelRect region = options.crop ? *options.crop : PixelRect{0, 0, scene.width, scene.height};
-  Image image(region.width(), region.height());
+  RadianceImage image(region.width(), region.height());
+  image.samples = options.sampleCount;   // the mean of identical samples is the one traced
   Tracer tracer(scene, bvh);
   const int tilesX = (region.width() + kTile - 1) / kTile, tilesY = (region.height() + kTile - 1) / kTile;
   const int tileCount = tilesX * tilesY;
@@ -123,8 +133,8 @@ Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& 
         for (int x = x0; x < x1; ++x) {
           ++local.primary;
           dvec3 c = tracer.trace(tracer.cameraRay(x, y), local);
-          std::uint8_t* px = image.pixel(x - region.x0, y - region.y0);
-          for (int k = 0; k < 3; ++k) px[k] = radianceToByte(c[k]);
+          float* px = image.pixel(x - region.x0, y - region.y0);
+          for (int k = 0; k < 3; ++k) px[k] = toFloat(c[k]);
           if (!std::isfinite(c.x + c.y + c.z)) ++local.nonFinite;
         }
       std::lock_guard lock(mutex);

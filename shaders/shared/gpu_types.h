@@ -230,7 +230,7 @@ GPU_CONST uint kBindingLights = 3u;
 GPU_CONST uint kBindingMaterials = 4u;
 GPU_CONST uint kBindingBvhNodes = 5u;
 GPU_CONST uint kBindingPrimRefs = 6u;
-GPU_CONST uint kBindingPixels = 7u;       // output: one packed RGBA8 uint per pixel of the band
+GPU_CONST uint kBindingPixels = 7u;       // output: one vec4 per pixel of the band, rgb = linear radiance, w = 1 when done (0: suspended)
 GPU_CONST uint kBindingPathStates = 8u;   // suspended pixels' state, one GpuPathState per pixel of the band
 GPU_CONST uint kBindingCounters = 9u;     // GpuCounters
 GPU_CONST uint kBindingParams = 10u;      // GpuRenderParams (a uniform buffer)
