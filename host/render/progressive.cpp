@@ -25,7 +25,7 @@ RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOp
   RadianceImage mean;
   mean.samples = 0;
   ProgressiveReport r;
-  std::uint32_t next = 1;
+  std::uint32_t next = std::max(options.firstBatchSamples, 1u);
   for (;;) {
     std::uint64_t left = options.spp == 0 ? UINT64_MAX : options.spp - r.samples;
     std::uint32_t count = static_cast<std::uint32_t>(std::min<std::uint64_t>({next, left, options.maxBatchSamples}));

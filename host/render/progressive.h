@@ -28,6 +28,10 @@ struct ProgressiveOptions {
   double timeLimitSeconds = 0;      // > 0: no batch is started that would end after this (one always runs)
   std::uint64_t firstSample = 0;    // the render's samples start here
   std::uint32_t maxBatchSamples = 1u << 16;
+  // The first batch's samples. 1 lets a time limit learn the time per sample early; without a
+  // time limit the pipeline asks for every sample at once, so that a backend's set-up (a
+  // Vulkan pipeline) is paid once.
+  std::uint32_t firstBatchSamples = 1;
   double targetBatchSeconds = 0.5;  // batches grow (at most doubling) toward this length
   // Polled between batches (the backends poll it inside theirs): true stops early.
   std::function<bool()> stop;

@@ -11,6 +11,8 @@
 #include <thread>
 
 #include "errors.h"
+#include "cpu/path_reference.h"
+#include "gpu/vulkan_path_renderer.h"
 #include "gpu/vulkan_renderer.h"
 #include "image/encode.h"
 #include "image/image_file.h"
@@ -27,6 +29,9 @@ namespace vkrt {
 namespace {
 
 // What both backends are asked for: the render's samples, as batches (render/progressive.h).
+// The sample count a render without --spp limit (--time alone) is planned as.
+constexpr int kMaxSamplesPerPixel = 1 << 30;
+
 struct SamplePlan {
   ProgressiveOptions progressive;
   std::uint32_t seed = 0;
@@ -48,8 +53,8 @@ std::function<void(std::uint64_t, std::uint64_t)> batchProgress(
 
 // The seam between the pipeline and the integrators, per backend: a BatchRenderer for the
 // scene's integrator. The Whitted model is renderReference / renderVulkan; the path
-// integrators (scene.path.integrator != Integrator::Raytracer) plug in here, each taking
-// the batch's samples and the seed from the options.
+// integrators (scene.path.integrator != Integrator::Raytracer) are renderPathReference /
+// renderVulkanPath, each taking the batch's samples and the seed.
 RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress,
                             RenderReport& report, const SamplePlan& plan) {
   auto t0 = std::chrono::steady_clock::now();
@@ -71,7 +76,20 @@ RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene
     o.sampleCount = batch.count;
     o.progress = batchProgress(plan, progress, px);
     RayCounts rays;
-    RadianceImage image = renderReference(scene, bvh, o, &rays);   // path integrators: by scene.path.integrator
+    RadianceImage image;
+    if (scene.path.integrator == Integrator::Raytracer) {
+      image = renderReference(scene, bvh, o, &rays);
+    } else {
+      PathOptions p;
+      p.threads = o.threads;
+      p.seed = o.seed;
+      p.firstSample = static_cast<std::uint32_t>(o.firstSample);
+      p.sampleCount = o.sampleCount;
+      p.crop = o.crop;
+      p.progress = o.progress;
+      p.stop = o.stop;
+      image = renderPathReference(scene, bvh, p, &rays);
+    }
     report.rays += rays;
     return image;
   };
@@ -118,7 +136,22 @@ RadianceImage renderWithVulkan(const RenderRequest& request, const SceneDesc& sc
     o.progress = batchProgress(plan, progress, px);
     RayCounts rays;
     VulkanTimings timings;
-    RadianceImage image = renderVulkan(context, gpuScene, o, &rays, &timings);   // path integrators: likewise
+    RadianceImage image;
+    if (scene.path.integrator == Integrator::Raytracer) {
+      image = renderVulkan(context, gpuScene, o, &rays, &timings);
+    } else {
+      VulkanPathOptions p;
+      p.reads = o.reads;
+      p.seed = o.seed;
+      p.firstSample = static_cast<std::uint32_t>(o.firstSample);
+      p.sampleCount = o.sampleCount;
+      p.stepBudget = o.stepBudget;
+      p.specialize = o.specialize;
+      p.progress = o.progress;
+      p.stop = o.stop;
+      p.crop = o.crop;
+      image = renderVulkanPath(context, gpuScene, p, &rays, &timings);
+    }
     report.rays += rays;
     report.vulkan = timings;   // the last batch's (the Whitted model has one)
     return image;
@@ -160,6 +193,9 @@ SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, Prog
                          : request.timeLimitSeconds > 0 ? 0
                                                         : static_cast<std::uint64_t>(scene.path.spp);
   plan.progressive.timeLimitSeconds = request.timeLimitSeconds;
+  if (request.timeLimitSeconds <= 0)
+    plan.progressive.firstBatchSamples =
+        static_cast<std::uint32_t>(std::min<std::uint64_t>(plan.progressive.spp, plan.progressive.maxBatchSamples));
   plan.progressive.progress = &progress;
   return plan;
 }
@@ -299,6 +335,12 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
   // section 7's, and the shader's exactness cut-off reasons in those (gamma 1).
   report.gamma = report.pathIntegrator ? scene.path.gamma : 1.0;
   SamplePlan plan = samplePlan(request, scene, progress);
+  // The render's total decides the camera rule (gpu_types.h: spp 1 samples pixel centres):
+  // --spp N renders as a scene of spp N, and --time alone as one of unbounded spp.
+  if (report.pathIntegrator)
+    scene.path.spp = plan.progressive.spp > 0 && plan.progressive.spp < kMaxSamplesPerPixel
+                         ? static_cast<int>(plan.progressive.spp)
+                         : kMaxSamplesPerPixel;
 
   RenderSession ownSession;   // for this render only, when not lent one
   RadianceImage image = request.backend == Backend::Cpu
