@@ -19,6 +19,8 @@ from pathlib import Path
 import mitsuba as mi
 import drjit as dr
 
+mi.set_variant("llvm_ad_rgb")   # before any class derives from Mitsuba's: they are per variant
+
 
 class ModifiedPhong(mi.BSDF):
     """f = kd/pi + ks (s+2)/(2 pi) max(r.wo, 0)^s, one-sided (black from behind)."""
