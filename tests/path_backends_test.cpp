@@ -33,17 +33,12 @@ double mean(const RadianceImage& r) {
   return s / static_cast<double>(r.rgb.size());
 }
 
-class PathBackends : public ::testing::TestWithParam<const char*> {};
-
 // A 32x32 crop below the image's centre, samples [0, 4) of the scene's render, seed 17.
 // Tolerance: at most 3% of the pixels (30 of 1024) more than 2/255 apart in some channel, and
 // the crop's mean radiance within 1% (float32 against double; paths that part at an edge).
-TEST_P(PathBackends, SameSeedNearlyTheSameImage) {
-  auto dir = cse168Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+void expectBackendsAgree(const SceneDesc& scene, const std::string& name) {
   Context* context = gpuContextOrSkip();
   if (!context) return;
-  SceneDesc scene = parseSceneFile(*dir + "/scenes/" + GetParam() + ".test");
   const int x0 = scene.width / 2 - 16, y0 = scene.height * 3 / 4 - 16;
   const PixelRect crop{x0, y0, x0 + 32, y0 + 32};
 
@@ -63,9 +58,24 @@ TEST_P(PathBackends, SameSeedNearlyTheSameImage) {
 
   ASSERT_EQ(onCpu.width, 32);
   ASSERT_EQ(onGpu.width, 32);
-  std::string name = std::string("path-backends-") + testName(std::string(GetParam()).replace(3, 1, "_"));
   EXPECT_TRUE(imagesClose(name, encoded(onGpu, scene.path.gamma), encoded(onCpu, scene.path.gamma), 2, 30));
   EXPECT_NEAR(mean(onGpu), mean(onCpu), 0.01 * mean(onCpu) + 1e-6);
+}
+
+class PathBackends : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(PathBackends, SameSeedNearlyTheSameImage) {
+  auto dir = cse168Dir();
+  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+  SceneDesc scene = parseSceneFile(*dir + "/scenes/" + GetParam() + ".test");
+  expectBackendsAgree(scene, std::string("path-backends-") + testName(std::string(GetParam()).replace(3, 1, "_")));
+}
+
+// The project's own path-traced scene: no warning, and the two backends agree on it.
+TEST(PathBackendsProjectScene, GiBoxParsesCleanlyAndBothBackendsAgree) {
+  ParsedScene parsed = parseSceneFileWithWarnings(sourcePath("scenes/gi/box.test"));
+  EXPECT_TRUE(parsed.warnings.empty()) << parsed.warnings.front().message;
+  expectBackendsAgree(parsed.scene, "path-backends-gi-box");
 }
 
 INSTANTIATE_TEST_SUITE_P(Cse168, PathBackends,
