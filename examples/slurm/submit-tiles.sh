@@ -52,13 +52,13 @@ work=$(realpath -m "${work:-$output.tiles}")
 mkdir -p "$work"
 here=$(dirname "$(realpath "$0")")
 count=$((cols * rows))
-common="ALL,VKRT=$vkrt,TILE_DIR=$work"
+common="ALL,VKRT=$vkrt"
 array=$(sbatch --parsable --array=0-$((count - 1)) --output="$work/tile-%a.log" \
-  --export="$common,SCENE=$scene,COLS=$cols,ROWS=$rows,FULL_W=$width,FULL_H=$height,VKRT_ARGS=${extra[*]}" \
+  --export="$common,TILE_DIR=$work,SCENE=$scene,COLS=$cols,ROWS=$rows,FULL_W=$width,FULL_H=$height,VKRT_ARGS=${extra[*]}" \
   "$here/tile-job.sh")
 array=${array%%;*}   # (a cluster name may follow)
 merge=$(sbatch --parsable $wait --dependency="afterok:$array" --kill-on-invalid-dep=yes \
-  --output="$work/merge.log" --export="$common,OUTPUT=$output,TILES=$count" "$here/merge-job.sh") || {
+  --output="$work/merge.log" --export="$common,PART_DIR=$work,OUTPUT=$output,PARTS=$count" "$here/merge-job.sh") || {
   echo "submit-tiles: the merge job failed (see $work/merge.log and $work/tile-*.log)" >&2; exit 1; }
 # (sbatch --wait may report success for a merge cancelled because a tile failed.)
 if [ -n "$wait" ] && [ ! -f "$output" ]; then
