@@ -2,6 +2,7 @@
 // and every box containing its contents.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <gtest/gtest.h>
 
@@ -124,6 +125,37 @@ TEST(Bvh, EveryPrimitiveInExactlyOneLeafInsideEveryEnclosingBox) {
   int maxDepth = checkTree(s, bvh);
   EXPECT_LT(maxDepth, 40);   // a balanced-ish tree for 3200 scattered primitives
   EXPECT_EQ(bvh.depth, maxDepth);
+}
+
+// The surface-area cost of the tree (one per interior node, a leaf's count, each weighted by
+// its box's area relative to the root's): what a traversal expects to test per ray. Pins the
+// tree's quality: a faster build must not make a worse tree.
+TEST(Bvh, SurfaceAreaCostOfARandomSceneStaysAtTheBinnedSahTree) {
+  SceneDesc s = randomScene(3000, 200, 7);
+  Bvh bvh = buildBvh(s);
+  auto area = [](const gpu::GpuBvhNode& n) {
+    double x = n.maxX - n.minX, y = n.maxY - n.minY, z = n.maxZ - n.minZ;
+    return 2.0 * (x * y + y * z + z * x);
+  };
+  double cost = 0.0;
+  for (const gpu::GpuBvhNode& n : bvh.nodes) cost += area(n) / area(bvh.nodes[0]) * (n.primCount > 0 ? n.primCount : 1);
+  EXPECT_LE(cost, 20.67);   // 20.667 with 16 bins, both for the sweep over all bins and the sparse one
+  EXPECT_GT(cost, 15.0);    // (a much lower figure would mean that the cost is measured wrongly)
+}
+
+// Subtrees built on other threads are appended in the order one thread writes them.
+TEST(Bvh, SameTreeForEveryThreadCount) {
+  SceneDesc s = randomScene(30000, 50, 11);
+  const Bvh one = buildBvh(s, dvec3(0.0), 1);
+  checkTree(s, one);
+  for (int threads : {2, 3, 8}) {
+    const Bvh many = buildBvh(s, dvec3(0.0), threads);
+    ASSERT_EQ(many.nodes.size(), one.nodes.size()) << threads << " threads";
+    EXPECT_EQ(std::memcmp(many.nodes.data(), one.nodes.data(), one.nodes.size() * sizeof(gpu::GpuBvhNode)), 0)
+        << threads << " threads";
+    EXPECT_EQ(many.primRefs, one.primRefs) << threads << " threads";
+    EXPECT_EQ(many.depth, one.depth) << threads << " threads";
+  }
 }
 
 // Centroids that span the whole float range: a sum or difference of two of them overflows.
