@@ -72,6 +72,36 @@ TEST(Flatten, CarriesValuesIntoGpuLayouts) {
   EXPECT_EQ(m.ambient.x, 0.2f);
 }
 
+// Many triangles are converted in two halves on two threads: each triangle keeps its index
+// and its own vertex normals, numbered in triangle order.
+TEST(Flatten, ManyTrianglesKeepTheirOrderAndTheirNormals) {
+  SceneDesc s = parseScene("size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\n", "many");
+  for (int i = 0; i < 120000; ++i) {
+    Triangle t;
+    const double x = 0.001 * i;
+    t.p[0] = dvec3(x, 0.0, 0.0);
+    t.p[1] = dvec3(x + 1.0, 0.0, 0.0);
+    t.p[2] = dvec3(x, 1.0, 0.0);
+    t.smooth = i % 3 == 0;
+    for (dvec3& n : t.n) n = glm::normalize(dvec3(1.0, static_cast<double>(i), 0.0));
+    s.triangles.push_back(t);
+  }
+  GpuScene g = flatten(s);
+  ASSERT_EQ(g.triangles.size(), s.triangles.size());
+  ASSERT_EQ(g.triangleNormals.size(), 40000u);
+  std::uint32_t next = 0;
+  for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+    const gpu::GpuTriangle& t = g.triangles[i];
+    ASSERT_EQ(t.p1.x, static_cast<float>(s.triangles[i].p[1].x - g.origin.x)) << "triangle " << i;
+    if (!s.triangles[i].smooth) {
+      ASSERT_EQ(t.normalsIndex, gpu::kNoNormals) << "triangle " << i;
+      continue;
+    }
+    ASSERT_EQ(t.normalsIndex, next++) << "triangle " << i;
+    ASSERT_EQ(g.triangleNormals[t.normalsIndex].n2.y, static_cast<float>(s.triangles[i].n[2].y)) << "triangle " << i;
+  }
+}
+
 // Walks the tree with the chain of ancestors: every primitive (not dropped as degenerate) is
 // in exactly one leaf of at most 4, inside every enclosing box. Returns the depth reached.
 int checkTree(const SceneDesc& s, const Bvh& bvh) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <future>
 #include <limits>
 #include <numeric>
 
@@ -14,6 +15,9 @@
 
 namespace vkrt {
 namespace {
+
+// Scene bounds are measured on two threads from this many triangles on.
+constexpr std::size_t kParallelMinTriangles = 50000;
 
 struct Box {
   dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
@@ -163,8 +167,17 @@ class BoxTree {
 }  // namespace
 
 bool sceneBounds(const SceneDesc& scene, dvec3& boxLo, dvec3& boxHi) {
-  Box box;
-  for (const Triangle& t : scene.triangles) box.add(triangleBox(t));
+  auto trianglesBox = [&scene](std::size_t begin, std::size_t end) {
+    Box b;
+    for (std::size_t i = begin; i < end; ++i) b.add(triangleBox(scene.triangles[i]));
+    return b;
+  };
+  // Many triangles: the second half on another thread.
+  const std::size_t nt = scene.triangles.size(), half = nt >= kParallelMinTriangles ? nt / 2 : nt;
+  std::future<Box> second;
+  if (half < nt) second = std::async(std::launch::async, trianglesBox, half, nt);
+  Box box = trianglesBox(0, half);
+  if (second.valid()) box.add(second.get());
   for (const Sphere& s : scene.spheres) box.add(sphereBox(s));
   if (!(box.lo.x <= box.hi.x)) return false;
   boxLo = box.lo;
