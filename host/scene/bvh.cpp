@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <future>
@@ -26,9 +27,6 @@ static_assert(kMedianDepth + 34 <= kMaxBvhDepth);
 constexpr std::uint32_t kParallelMinPrims = 4096;
 // Primitive boxes are made on two threads from this many primitives on.
 constexpr std::size_t kParallelBoxesMinPrims = 50000;
-// A node of at most this many primitives tries only the planes between its primitives' bins:
-// the same split as the sweep over all bins, without clearing and sweeping 3 x kBins bins.
-constexpr std::uint32_t kSparseMaxPrims = 12;
 
 // Four floats in one register (GCC and Clang vector extensions: SSE, NEON, or scalar code).
 // Lane 3 of every box and centroid is 0.
@@ -117,13 +115,20 @@ struct Binner {
   }
 };
 
+// The float next to f toward -infinity (down) or +infinity (up), for a float that has one (not
+// NaN, not the infinity it moves away from): std::nextafter without the library call.
+float nextFloat(float f, bool up) {
+  if (f == 0.0f) return up ? std::numeric_limits<float>::denorm_min() : -std::numeric_limits<float>::denorm_min();
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>((f > 0.0f) == up ? bits + 1 : bits - 1);
+}
 float roundDown(double v) {
   float f = static_cast<float>(v);
-  return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  return static_cast<double>(f) > v ? nextFloat(f, false) : f;
 }
 float roundUp(double v) {
   float f = static_cast<float>(v);
-  return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  return static_cast<double>(f) < v ? nextFloat(f, true) : f;
 }
 
 BuildPrim makePrim(const dvec3& lo, const dvec3& hi, std::uint32_t ref) {
@@ -217,25 +222,34 @@ class Builder {
   }
 
   // The best of (kBins - 1) planes on each axis by SAH, binning all three axes in one pass.
+  // Only the planes just above an occupied bin are tried: a plane between empty bins splits
+  // the primitives as the plane below it does, at the same cost, and the first of equal cost
+  // is kept. (A node of a few primitives occupies a few bins.)
   Split bestSplit(std::uint32_t begin, std::uint32_t end, const Binner& binner) const {
     Box binBox[3][kBins];
     std::uint32_t binCount[3][kBins] = {};
+    std::uint32_t occupied[3] = {};   // bit b: bin b holds a primitive
     for (std::uint32_t i = begin; i < end; ++i) {
       const F4 lo = loOf(prims_[i]), hi = hiOf(prims_[i]);
       const I4 b = binner.bins(centroidOf(lo, hi));
       for (int a = 0; a < 3; ++a) {
         binBox[a][b[a]].grow(lo, hi);
         ++binCount[a][b[a]];
+        occupied[a] |= 1u << b[a];
       }
     }
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
-      if (!(binner.scale[axis] > 0.0f)) continue;
+      const std::uint32_t bins = occupied[axis];
+      if (!(binner.scale[axis] > 0.0f) || (bins & (bins - 1)) == 0) continue;   // fewer than 2 bins
+      // What lies at or above each occupied bin but the lowest.
       float rightArea[kBins];
       std::uint32_t rightCount[kBins];
       Box acc;
       std::uint32_t n = 0;
-      for (int b = kBins - 1; b > 0; --b) {
+      for (std::uint32_t rest = bins & (bins - 1); rest != 0;) {
+        const int b = std::bit_width(rest) - 1;   // the highest left
+        rest &= ~(1u << b);
         acc.grow(binBox[axis][b]);
         n += binCount[axis][b];
         rightArea[b] = acc.area();
@@ -243,51 +257,16 @@ class Builder {
       }
       acc = Box();
       n = 0;
-      for (int b = 0; b < kBins - 1; ++b) {
+      const int highest = std::bit_width(bins) - 1;
+      for (std::uint32_t rest = bins; ;) {
+        const int b = std::countr_zero(rest);   // the lowest left
+        if (b == highest) break;
+        rest &= rest - 1;
+        const int above = std::countr_zero(rest);
         acc.grow(binBox[axis][b]);
         n += binCount[axis][b];
-        if (n == 0 || rightCount[b + 1] == 0) continue;
-        float cost = acc.area() * static_cast<float>(n) + rightArea[b + 1] * static_cast<float>(rightCount[b + 1]);
+        float cost = acc.area() * static_cast<float>(n) + rightArea[above] * static_cast<float>(rightCount[above]);
         if (cost < best.cost) best = {axis, b, cost};
-      }
-    }
-    return best;
-  }
-
-  // bestSplit() for a few primitives: the same split, trying only the planes that separate
-  // primitives (a plane between empty bins has the cost of the occupied bin before it, and
-  // the sweep keeps the first plane of equal cost).
-  Split bestSplitSparse(std::uint32_t begin, std::uint32_t end, const Binner& binner) const {
-    const std::uint32_t count = end - begin;
-    F4 lo[kSparseMaxPrims], hi[kSparseMaxPrims];
-    I4 bins[kSparseMaxPrims];
-    for (std::uint32_t i = 0; i < count; ++i) {
-      lo[i] = loOf(prims_[begin + i]);
-      hi[i] = hiOf(prims_[begin + i]);
-      bins[i] = binner.bins(centroidOf(lo[i], hi[i]));
-    }
-    Split best;
-    for (int axis = 0; axis < 3; ++axis) {
-      if (!(binner.scale[axis] > 0.0f)) continue;
-      std::uint32_t order[kSparseMaxPrims];
-      for (std::uint32_t i = 0; i < count; ++i) {   // insertion sort by bin
-        std::uint32_t j = i;
-        for (; j > 0 && bins[order[j - 1]][axis] > bins[i][axis]; --j) order[j] = order[j - 1];
-        order[j] = i;
-      }
-      float rightArea[kSparseMaxPrims];
-      Box acc;
-      for (std::uint32_t j = count - 1; j > 0; --j) {
-        acc.grow(lo[order[j]], hi[order[j]]);
-        rightArea[j] = acc.area();
-      }
-      acc = Box();
-      for (std::uint32_t j = 1; j < count; ++j) {
-        const std::uint32_t last = order[j - 1];
-        acc.grow(lo[last], hi[last]);
-        if (bins[last][axis] == bins[order[j]][axis]) continue;
-        float cost = acc.area() * static_cast<float>(j) + rightArea[j] * static_cast<float>(count - j);
-        if (cost < best.cost) best = {axis, bins[last][axis], cost};
       }
     }
     return best;
@@ -341,7 +320,7 @@ class Builder {
       return true;
     }
     const Binner binner(bounds.centroids);
-    Split s = count <= kSparseMaxPrims ? bestSplitSparse(begin, end, binner) : bestSplit(begin, end, binner);
+    Split s = bestSplit(begin, end, binner);
     if (s.axis < 0) {
       // All centroids coincide: split in the middle of the list if the leaf would be large.
       if (count <= kMaxLeafSize) return false;
