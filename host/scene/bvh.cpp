@@ -173,6 +173,7 @@ class Builder {
     if (end - mid >= kParallelMinPrims && mid - begin >= kParallelMinPrims && reserveThread()) {
       // The right subtree on another thread into a list of its own, appended after the left.
       Nodes rightNodes(1);
+      rightNodes.reserve(2 * (end - mid));   // at most 2n - 1 nodes: no reallocation
       int rightDepth = 0;
       auto task = std::async(std::launch::async, [&] {
         build(rightNodes, 0, mid, end, depth + 1, right, rightDepth);
