@@ -62,10 +62,10 @@ Image renderWithVulkan(const RenderRequest& request, SceneDesc& scene, ProgressB
 
   t0 = std::chrono::steady_clock::now();
   GpuScene gpuScene = flatten(scene);
-  std::vector<Triangle>().swap(scene.triangles);
-  std::vector<Sphere>().swap(scene.spheres);
   report.buildSeconds = secondsSince(t0);
   report.bvhNodes = gpuScene.bvh.nodes.size();
+  std::vector<Triangle>().swap(scene.triangles);
+  std::vector<Sphere>().swap(scene.spheres);
 
   t0 = std::chrono::steady_clock::now();
   VulkanOptions options;
