@@ -27,6 +27,8 @@ static_assert(kMedianDepth + 34 <= kMaxBvhDepth);
 constexpr std::uint32_t kParallelMinPrims = 4096;
 // Primitive boxes are made on two threads from this many primitives on.
 constexpr std::size_t kParallelBoxesMinPrims = 50000;
+// Nodes of at most this many primitives (a quarter of all) are split without the bins.
+constexpr std::uint32_t kSparseMaxPrims = 4;
 
 // Four floats in one register (GCC and Clang vector extensions: SSE, NEON, or scalar code).
 // Lane 3 of every box and centroid is 0.
@@ -227,6 +229,8 @@ class Builder {
   // the primitives as the plane below it does, at the same cost, and the first of equal cost
   // is kept. (A node of a few primitives occupies a few bins.)
   Split bestSplit(std::uint32_t begin, std::uint32_t end, const Binner& binner) const {
+    if (end - begin == 2) return bestSplitOfTwo(begin, binner);
+    if (end - begin <= kSparseMaxPrims) return bestSplitSparse(begin, end, binner);
     Box binBox[3][kBins];
     std::uint32_t binCount[3][kBins] = {};
     std::uint32_t occupied[3] = {};   // bit b: bin b holds a primitive
@@ -268,6 +272,60 @@ class Builder {
         n += binCount[axis][b];
         float cost = acc.area() * static_cast<float>(n) + rightArea[above] * static_cast<float>(rightCount[above]);
         if (cost < best.cost) best = {axis, b, cost};
+      }
+    }
+    return best;
+  }
+
+  // bestSplit() of two primitives (a third of all nodes), without the bins. On an axis where
+  // their centroids differ (the centroids' box is theirs), one falls in the first bin and the
+  // other in the last; the split is the same on every such axis, at the cost of the two boxes'
+  // areas, so the sweep keeps the first.
+  Split bestSplitOfTwo(std::uint32_t first, const Binner& binner) const {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(binner.scale[axis] > 0.0f)) continue;
+      Box a, b;
+      a.grow(loOf(prims_[first]), hiOf(prims_[first]));
+      b.grow(loOf(prims_[first + 1]), hiOf(prims_[first + 1]));
+      return {axis, 0, a.area() * 1.0f + b.area() * 1.0f};
+    }
+    return {};
+  }
+
+  // bestSplit() for a few primitives: the same split, trying only the planes that separate
+  // primitives (a plane between empty bins has the cost of the occupied bin before it, and
+  // the sweep keeps the first plane of equal cost).
+  Split bestSplitSparse(std::uint32_t begin, std::uint32_t end, const Binner& binner) const {
+    const std::uint32_t count = end - begin;
+    F4 lo[kSparseMaxPrims], hi[kSparseMaxPrims];
+    I4 bins[kSparseMaxPrims];
+    for (std::uint32_t i = 0; i < count; ++i) {
+      lo[i] = loOf(prims_[begin + i]);
+      hi[i] = hiOf(prims_[begin + i]);
+      bins[i] = binner.bins(centroidOf(lo[i], hi[i]));
+    }
+    Split best;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(binner.scale[axis] > 0.0f)) continue;
+      std::uint32_t order[kSparseMaxPrims];
+      for (std::uint32_t i = 0; i < count; ++i) {   // insertion sort by bin
+        std::uint32_t j = i;
+        for (; j > 0 && bins[order[j - 1]][axis] > bins[i][axis]; --j) order[j] = order[j - 1];
+        order[j] = i;
+      }
+      float rightArea[kSparseMaxPrims];
+      Box acc;
+      for (std::uint32_t j = count - 1; j > 0; --j) {
+        acc.grow(lo[order[j]], hi[order[j]]);
+        rightArea[j] = acc.area();
+      }
+      acc = Box();
+      for (std::uint32_t j = 1; j < count; ++j) {
+        const std::uint32_t last = order[j - 1];
+        acc.grow(lo[last], hi[last]);
+        if (bins[last][axis] == bins[order[j]][axis]) continue;
+        float cost = acc.area() * static_cast<float>(j) + rightArea[j] * static_cast<float>(count - j);
+        if (cost < best.cost) best = {axis, bins[last][axis], cost};
       }
     }
     return best;
