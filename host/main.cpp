@@ -14,6 +14,7 @@
 #include "cli/options.h"
 #include "errors.h"
 #include "gpu/context.h"
+#include "image/encode.h"
 #include "image/image_file.h"
 #include "image/merge.h"
 #include "image/png.h"
@@ -32,6 +33,19 @@ std::function<void(const std::vector<vkrt::Diagnostic>&)> warningPrinter(bool qu
   return [](const std::vector<vkrt::Diagnostic>& warnings) {
     for (const vkrt::Diagnostic& w : warnings) std::fprintf(stderr, "%s\n", w.format().c_str());
   };
+}
+
+// Warnings about options that the scene shows do not apply (--spp for a Whitted scene).
+std::function<void(const std::string&)> optionWarningPrinter(bool quiet) {
+  if (quiet) return nullptr;
+  return [](const std::string& w) { std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str()); };
+}
+
+// " (N samples)" after a path integrator's output, with "time up" when --time ended it.
+std::string samplesNote(const vkrt::RenderReport& r) {
+  if (!r.pathIntegrator) return "";
+  return ", " + std::to_string(r.samples) + (r.samples == 1 ? " sample" : " samples") + " per pixel" +
+         (r.timeUp ? " when the time was up" : "");
 }
 
 // The heatmap of --diff, when asked for.
@@ -131,8 +145,9 @@ int compareBackends(const vkrt::Options& o) {
     vkrt::RenderRequest request = o.request;
     request.backend = backends[i];
     request.onWarnings = warningPrinter(o.quiet || i > 0);   // the same scene twice: once
+    request.onOptionWarning = optionWarningPrinter(o.quiet || i > 0);
     vkrt::ProgressBar progress(!o.quiet && !o.json);
-    images[i] = vkrt::renderSceneInMemory(request, progress, reports[i], false);
+    images[i] = vkrt::encodeImage(vkrt::renderSceneInMemory(request, progress, reports[i], false), reports[i].gamma);
     if (!o.json && !o.quiet) printStats(request, reports[i]);
   }
   vkrt::ImageDiff diff = vkrt::compare(images[0], images[1]);
@@ -183,6 +198,7 @@ int renderBatch(const vkrt::Options& o) {
     vkrt::RenderRequest request = o.request;
     request.scenePath = scenePath;
     request.onWarnings = warningPrinter(o.quiet);
+    request.onOptionWarning = optionWarningPrinter(o.quiet);
     request.onOutput = [&written](const std::string& path) {
       auto it = written.find(std::filesystem::absolute(path).lexically_normal().string());
       if (it != written.end())
@@ -205,8 +221,8 @@ int renderBatch(const vkrt::Options& o) {
     if (status == kExitOk) {
       ++rendered;
       if (!o.quiet)
-        std::fprintf(stderr, "vkrt: [%zu/%zu] ok      %s -> %s (%dx%d) in %.2f s\n", done, n, scenePath.c_str(),
-                     report.outputPath.c_str(), report.width, report.height, seconds);
+        std::fprintf(stderr, "vkrt: [%zu/%zu] ok      %s -> %s (%dx%d%s) in %.2f s\n", done, n, scenePath.c_str(),
+                     report.outputPath.c_str(), report.width, report.height, samplesNote(report).c_str(), seconds);
     } else {
       ++failed;
       std::fprintf(stderr, "vkrt: [%zu/%zu] exit %-2d %s: %s, nothing written, in %.2f s\n", done, n, status,
@@ -243,6 +259,15 @@ int main(int argc, char** argv) {
   try {
     if (options.mergeCommand) {
       vkrt::MergeReport merged;
+      if (vkrt::areSampleBatches(options.mergeTiles)) {
+        vkrt::RadianceImage mean = vkrt::mergeSampleBatches(options.mergeTiles, &merged);
+        vkrt::writeImageAtomic(mean, options.mergeOutput, merged.samples.gamma);
+        if (!options.quiet)
+          std::fprintf(stderr, "vkrt: averaged %d batches (%llu samples per pixel) into %s (%dx%d)\n", merged.tiles,
+                       static_cast<unsigned long long>(merged.samples.total()), options.mergeOutput.c_str(),
+                       mean.width, mean.height);
+        return kExitOk;
+      }
       vkrt::Image image = vkrt::mergeCrops(options.mergeTiles, options.allowGaps, &merged);
       vkrt::writeImageAtomic(image, options.mergeOutput);
       if (!options.quiet)
@@ -268,13 +293,14 @@ int main(int argc, char** argv) {
     vkrt::ProgressBar progress(!options.quiet);
     vkrt::Image image;
     options.request.onWarnings = warningPrinter(options.quiet);
+    options.request.onOptionWarning = optionWarningPrinter(options.quiet);
     vkrt::RenderReport report =
         vkrt::renderSceneFile(options.request, progress, options.checkAgainst ? &image : nullptr);
     if (options.stats) printStats(options.request, report);
     warnNonFinite(options, report);
     if (!options.quiet)
-      std::fprintf(stderr, "vkrt: wrote %s (%dx%d) in %.2f s\n", report.outputPath.c_str(), report.width,
-                   report.height, totalSeconds(report));
+      std::fprintf(stderr, "vkrt: wrote %s (%dx%d%s) in %.2f s\n", report.outputPath.c_str(), report.width,
+                   report.height, samplesNote(report).c_str(), totalSeconds(report));
     if (options.checkAgainst)
       return reportComparison(options, image, vkrt::readImage(*options.checkAgainst),
                               report.outputPath + " vs " + *options.checkAgainst);

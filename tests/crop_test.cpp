@@ -3,6 +3,7 @@
 // boundaries); crops carry their record, and merging a grid of them gives the full render.
 #include <gtest/gtest.h>
 
+#include "image/encode.h"
 #include "image/crop.h"
 #include "image/png.h"
 #include "scene/bvh.h"
@@ -50,11 +51,11 @@ std::vector<PixelRect> cropsOf(int w, int h) {
 TEST(Crop, CpuCropsAreTheFullRendersPixels) {
   SceneDesc scene = cropScene();
   Bvh bvh = buildBvh(scene);
-  Image full = renderReference(scene, bvh, CpuOptions{}, nullptr);
+  Image full = encodeImage(renderReference(scene, bvh, CpuOptions{}, nullptr), 1.0);
   for (const PixelRect& r : cropsOf(scene.width, scene.height)) {
     CpuOptions options;
     options.crop = r;
-    Image crop = renderReference(scene, bvh, options, nullptr);
+    Image crop = encodeImage(renderReference(scene, bvh, options, nullptr), 1.0);
     ASSERT_EQ(crop.width, r.width()) << rectName(r);
     ASSERT_EQ(crop.height, r.height()) << rectName(r);
     EXPECT_TRUE(crop.rgb == region(full, r).rgb)
@@ -74,14 +75,14 @@ TEST(Crop, VulkanCropsAreTheFullRendersPixels) {
     options.maxStateBytes = 1;
     options.stepBudget = budget;
     VulkanTimings timings;
-    Image full = renderVulkan(*ctx, flat, options, nullptr, &timings);
+    Image full = encodeImage(renderVulkan(*ctx, flat, options, nullptr, &timings), 1.0);
     EXPECT_GT(timings.bands, 1u);
     if (budget) {
       EXPECT_GT(timings.suspensions, 0u);
     }
     for (const PixelRect& r : cropsOf(scene.width, scene.height)) {
       options.crop = r;
-      Image crop = renderVulkan(*ctx, flat, options, nullptr, nullptr);
+      Image crop = encodeImage(renderVulkan(*ctx, flat, options, nullptr, nullptr), 1.0);
       ASSERT_EQ(crop.width, r.width()) << rectName(r);
       ASSERT_EQ(crop.height, r.height()) << rectName(r);
       EXPECT_TRUE(crop.rgb == region(full, r).rgb)

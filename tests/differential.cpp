@@ -10,6 +10,7 @@
 #include "cpu/reference.h"
 #include "gpu/vulkan_renderer.h"
 #include "image/compare.h"
+#include "image/encode.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
@@ -119,7 +120,7 @@ class Renders {
         RayCounts rays;
         CpuOptions cpu;
         cpu.threads = options_.cpuThreads;
-        image = renderReference(*s, buildBvh(*s), cpu, &rays);
+        image = encodeImage(renderReference(*s, buildBvh(*s), cpu, &rays), 1.0);
         if (rays.nonFinite)
           outcome_.problems.emplace_back(check, name + ": the CPU reference produced " +
                                                     std::to_string(rays.nonFinite) + " NaN or infinite pixels");
@@ -144,7 +145,7 @@ class Renders {
         RayCounts rays;
         VulkanTimings timings;
         int before = context.validationMessages();
-        image = renderVulkan(context, flatten(*s), vk, &rays, &timings);
+        image = encodeImage(renderVulkan(context, flatten(*s), vk, &rays, &timings), 1.0);
         if (rays.nonFinite)
           outcome_.problems.emplace_back(check, name + " (" + key.second + "): the shader produced " +
                                                     std::to_string(rays.nonFinite) + " NaN or infinite pixels");

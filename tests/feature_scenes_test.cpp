@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "image/encode.h"
 #include "cpu/reference.h"
 #include "image/compare.h"
 #include "scene/parse.h"
@@ -21,7 +22,7 @@ Image render(const SceneDesc& s, int threads) {
   Bvh bvh = buildBvh(s);
   CpuOptions o;
   o.threads = threads;
-  return renderReference(s, bvh, o, nullptr);
+  return encodeImage(renderReference(s, bvh, o, nullptr), 1.0);
 }
 
 class FeatureScene : public ::testing::TestWithParam<std::string> {};

@@ -247,3 +247,57 @@ TEST(Flatten, CutoffBoundFollowsTheLights) {
   EXPECT_TRUE(std::isinf(b.x) && std::isinf(b.y) && std::isinf(b.z));
   EXPECT_EQ(b.w, 0.0f) << "a negative term can make the light negative";
 }
+
+// The path integrators' data: quad lights in the scene-centred frame with their area and
+// normal, the material w fields, and the settings in the shader's ids.
+TEST(Flatten, QuadLightsMaterialFieldsAndPathSettings) {
+  SceneDesc s = parseScene("size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\nvertex 10 0 0\nvertex 12 0 0\nvertex 10 2 0\n"
+                           "tri 0 1 2\n",
+                           "t.test");
+  Material ggx = s.materials.at(0);
+  ggx.brdf = BrdfModel::Ggx;
+  ggx.roughness = 0.25;
+  s.materials.push_back(ggx);
+  Material light;
+  light.emission = dvec3(5, 4, 3);
+  light.quadLight = 0;
+  s.materials.push_back(light);
+  QuadLight q;
+  q.a = dvec3(10, 3, 0);
+  q.ab = dvec3(0, 0, 2);
+  q.ac = dvec3(3, 0, 0);
+  q.radiance = dvec3(5, 4, 3);
+  s.quadLights.push_back(q);
+  s.maxDepth = -1;
+  s.path.integrator = Integrator::PathTracer;
+  s.path.nextEvent = NextEvent::Mis;
+  s.path.sampling = Sampling::Brdf;
+  s.path.russianRoulette = true;
+  s.path.lightSamples = 9;
+  s.path.lightStratify = true;
+  s.path.spp = 16;
+  GpuScene g = flatten(s);
+  ASSERT_EQ(g.quadLights.size(), 1u);
+  const gpu::GpuQuadLight& gq = g.quadLights[0];
+  EXPECT_FLOAT_EQ(gq.corner.x, static_cast<float>(10 - g.origin.x));
+  EXPECT_FLOAT_EQ(gq.corner.y, static_cast<float>(3 - g.origin.y));
+  EXPECT_FLOAT_EQ(gq.corner.w, 6.0f);                          // area
+  EXPECT_EQ(gq.normal.y, -1.0f);                               // normalize(cross(ac, ab))
+  EXPECT_EQ(gq.edgeAB.z, 2.0f);
+  EXPECT_EQ(gq.radiance.x, 5.0f);
+  EXPECT_EQ(g.materials[0].ambient.w, gpu::kBrdfPhong);
+  EXPECT_EQ(g.materials[0].emission.w, gpu::kNoQuadLight);
+  EXPECT_EQ(g.materials[1].ambient.w, gpu::kBrdfGgx);
+  EXPECT_EQ(g.materials[1].diffuse.w, 0.25f);
+  EXPECT_EQ(g.materials[2].emission.w, 0.0f);
+  EXPECT_EQ(g.path.integrator, gpu::kIntegratorPathTracer);
+  EXPECT_EQ(g.path.nextEvent, gpu::kNextEventMis);
+  EXPECT_EQ(g.path.sampling, gpu::kSamplingBrdf);
+  EXPECT_EQ(g.path.russianRoulette, 1u);
+  EXPECT_EQ(g.path.maxDepth, gpu::kUnlimitedDepth);
+  EXPECT_EQ(g.path.lightSamples, 9u);
+  EXPECT_EQ(g.path.lightStrata, 3u);
+  EXPECT_EQ(g.path.quadLightCount, 1u);
+  EXPECT_EQ(g.spp, 16u);
+  EXPECT_EQ(g.path.cameraOrigin.x, g.push.cameraOrigin.x);
+}

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "image/encode.h"
 #include "image/compare.h"
 #include "image/png.h"
 #include "scene/flatten.h"
@@ -37,8 +38,8 @@ std::pair<std::uint64_t, std::uint64_t> expectCutoffChangesNoPixel(const std::st
   forced.stepBudget = stepBudget;   // (a small budget suspends and resumes pixels)
   RayCounts cutRays, exactRays;   // (nonFinite checked by the renderGpu tests of the same scenes)
   GpuScene flat = flatten(scene);
-  Image cut = renderVulkan(*context, flat, forced, &cutRays, nullptr);
-  Image all = renderVulkan(*context, flat, exact, &exactRays, nullptr);
+  Image cut = encodeImage(renderVulkan(*context, flat, forced, &cutRays, nullptr), 1.0);
+  Image all = encodeImage(renderVulkan(*context, flat, exact, &exactRays, nullptr), 1.0);
   EXPECT_TRUE(imagesClose("gpu-cutoff/" + name, cut, all, 0, 0));
   EXPECT_LE(cutRays.reflection, exactRays.reflection);
   EXPECT_EQ(context->validationMessages(), 0);
@@ -75,7 +76,7 @@ TEST_P(GpuFeatureScene, SpecializationChangesNoPixel) {
   generic.specialize = false;
   VulkanTimings specializedRun, genericRun;
   Image specialized = renderGpu(scene, 0, &specializedRun);
-  Image all = renderVulkan(*context, flatten(scene), generic, nullptr, &genericRun);
+  Image all = encodeImage(renderVulkan(*context, flatten(scene), generic, nullptr, &genericRun), 1.0);
   EXPECT_EQ(genericRun.leftOut, "");
   EXPECT_TRUE(imagesClose("gpu-specialize/" + GetParam(), specialized, all, 0, 0)) << "left out: " << specializedRun.leftOut;
 }

@@ -91,7 +91,7 @@ TEST(ImageFile, OtherExtensionsWarnAndWritePng) {
   RunResult r = runVkrt("--backend cpu -o " + dir + "/o.bmp " + dir + "/s.test");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("vkrt: warning: output file '" + dir +
-                          "/o.bmp' is not named .png or .ppm: vkrt writes PNG, under that name"),
+                          "/o.bmp' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name"),
             std::string::npos)
       << r.output;
   EXPECT_EQ(readFile(dir + "/o.bmp").substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));

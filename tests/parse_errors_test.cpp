@@ -23,6 +23,7 @@ struct BadInput {
 };
 
 const std::string kOk = "size 64 48\ncamera 0 0 5 0 0 0 0 1 0 45\n";   // lines 1-2
+const std::string kPath = kOk + "integrator pathtracer\n";                // lines 1-3
 
 std::vector<BadInput> badInputs() {
   return {
@@ -68,6 +69,40 @@ std::vector<BadInput> badInputs() {
       {"NegativeShininess", kOk + "shininess -2\n", 3, "shininess must not be negative"},
       {"ZeroDirectional", kOk + "directional 0 0 0 1 1 1\n", 3, "directional light direction must not be zero"},
       {"SingularSphere", kOk + "scale 1 0 1\nsphere 0 0 0 1\n", 4, "singular transform"},
+      // SPEC-PATHTRACING section 1 (kPath: lines 1-3, integrator pathtracer)
+      {"MaxDepthBelowMinusOne", kPath + "maxdepth -2\n", 4,
+       "'maxdepth' argument 1: expected a non-negative integer, or -1 (no limit), got '-2'"},
+      {"UnlimitedMaxDepthUnderRaytracerGivenLater", kOk + "maxdepth -1\nintegrator raytracer\n", 3,
+       "got '-1': -1 (no limit) is for the path integrators, and integrator raytracer (line 4) is the Whitted model"},
+      {"UnknownIntegrator", kOk + "integrator foo\n", 3,
+       "'integrator' argument 1: expected raytracer, analyticdirect, direct or pathtracer, got 'foo'"},
+      {"MissingIntegrator", kOk + "integrator\n", 3,
+       "'integrator' expects 1 argument (raytracer, analyticdirect, direct or pathtracer), got 0"},
+      {"LightSamplesZero", kPath + "lightsamples 0\n", 4,
+       "'lightsamples' argument 1: expected an integer from 1 to 1000000000, got '0'"},
+      {"LightSamplesNotInteger", kPath + "lightsamples 2.5\n", 4, "expected an integer from 1 to 1000000000, got '2.5'"},
+      {"StratifiedLightSamplesNotSquare", kPath + "lightsamples 10\nlightstratify on\n", 5,
+       "'lightstratify on' needs a perfect square 'lightsamples', got 10 (line 4)"},
+      {"StratifiedThenLightSamplesNotSquare", kPath + "lightstratify on\nlightsamples 8\n", 4,
+       "'lightstratify on' needs a perfect square 'lightsamples', got 8 (line 5)"},
+      {"UnknownLightStratify", kPath + "lightstratify yes\n", 4, "'lightstratify' argument 1: expected on or off, got 'yes'"},
+      {"SppZero", kPath + "spp 0\n", 4, "'spp' argument 1: expected an integer from 1 to 1000000000, got '0'"},
+      {"SppNegative", kPath + "spp -4\n", 4, "'spp' argument 1: expected an integer from 1 to 1000000000, got '-4'"},
+      {"GammaZero", kPath + "gamma 0\n", 4, "gamma must be positive, got '0'"},
+      {"GammaNegative", kPath + "gamma -2.2\n", 4, "gamma must be positive, got '-2.2'"},
+      {"RoughnessNegative", kPath + "roughness -0.1\n", 4, "roughness must not be negative, got '-0.1'"},
+      {"UnknownNextEvent", kPath + "nexteventestimation yes\n", 4,
+       "'nexteventestimation' argument 1: expected off, on or mis, got 'yes'"},
+      {"UnknownRussianRoulette", kPath + "russianroulette 1\n", 4, "'russianroulette' argument 1: expected on or off, got '1'"},
+      {"UnknownImportanceSampling", kPath + "importancesampling uniform\n", 4,
+       "'importancesampling' argument 1: expected hemisphere, cosine or brdf, got 'uniform'"},
+      {"UnknownBrdf", kPath + "brdf blinn\n", 4, "'brdf' argument 1: expected phong or ggx, got 'blinn'"},
+      {"QuadLightMissingArguments", kPath + "quadLight 0 0 0 1 0 0 0 1 0\n", 4,
+       "'quadLight' expects 12 arguments (ax ay az abx aby abz acx acy acz r g b), got 9"},
+      {"QuadLightDegenerate", kPath + "quadLight 0 0 0 1 0 0 2 0 0 1 1 1\n", 4,
+       "degenerate quadLight: its sides ab and ac span no area"},
+      {"QuadLightDegenerateUnderTransform", kPath + "scale 1 0 1\nquadLight 0 0 0 1 0 0 0 1 0 1 1 1\n", 5,
+       "degenerate quadLight: its sides ab and ac span no area (under the current transform)"},
   };
 }
 

@@ -85,6 +85,63 @@ std::vector<Accepted> acceptedInputs() {
       {"OutputWithoutExtension", kOk + "output out.d/render\n", 3,
        "output file 'out.d/render' is not named .png or .ppm",
        [](const SceneDesc& s) { EXPECT_EQ(s.output, "out.d/render"); }},
+      // SPEC-PATHTRACING section 1: what the scene's integrator does not use is ignored (the
+      // setting keeps its default), decided at the end of file.
+      {"SppUnderRaytracer", kOk + "spp 16\n", 3, "'spp' ignored: integrator raytracer (the default) does not use it",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.spp, 1); }},
+      {"GammaUnderRaytracer", kOk + "gamma 2.2\n", 3, "'gamma' ignored: integrator raytracer (the default)",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.gamma, 1.0); }},
+      {"LightSamplesUnderRaytracer", kOk + "lightsamples 4\n", 3, "'lightsamples' ignored: integrator raytracer",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.lightSamples, 1); }},
+      {"LightStratifyUnderRaytracer", kOk + "integrator raytracer\nlightstratify on\n", 4,
+       "'lightstratify' ignored: integrator raytracer (line 3) does not use it",
+       [](const SceneDesc& s) { EXPECT_FALSE(s.path.lightStratify); }},
+      {"NextEventUnderRaytracer", kOk + "nexteventestimation mis\n", 3, "'nexteventestimation' ignored",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.nextEvent, NextEvent::Off); }},
+      {"RussianRouletteUnderRaytracer", kOk + "russianroulette on\n", 3, "'russianroulette' ignored",
+       [](const SceneDesc& s) { EXPECT_FALSE(s.path.russianRoulette); }},
+      {"ImportanceSamplingUnderRaytracer", kOk + "importancesampling cosine\n", 3, "'importancesampling' ignored",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.sampling, Sampling::Hemisphere); }},
+      {"BrdfUnderRaytracer", kOk + "brdf ggx\nsphere 0 0 0 1\n", 3, "'brdf' ignored: integrator raytracer",
+       [](const SceneDesc& s) { EXPECT_EQ(s.materials[s.spheres[0].material].brdf, BrdfModel::Phong); }},
+      {"RoughnessUnderRaytracer", kOk + "roughness 0.3\nsphere 0 0 0 1\n", 3, "'roughness' ignored",
+       [](const SceneDesc& s) { EXPECT_EQ(s.materials[s.spheres[0].material].roughness, 0.0); }},
+      {"QuadLightUnderRaytracer", kOk + "quadLight -1 1 -1 0 0 2 2 0 0 5 5 5\nsphere 0 0 0 1\n", 3,
+       "'quadLight' ignored: integrator raytracer (the default) does not use it (the Whitted model has no area lights)",
+       [](const SceneDesc& s) {
+         EXPECT_TRUE(s.quadLights.empty());
+         EXPECT_TRUE(s.triangles.empty());
+         EXPECT_EQ(s.materials.size(), 1u);
+       }},
+      {"QuadLightThenRaytracer", kOk + "quadLight -1 1 -1 0 0 2 2 0 0 5 5 5\nintegrator raytracer\n", 3,
+       "'quadLight' ignored: integrator raytracer (line 4) does not use it",
+       [](const SceneDesc& s) { EXPECT_TRUE(s.triangles.empty()); }},
+      {"NextEventUnderDirect", kOk + "integrator direct\nnexteventestimation on\n", 4,
+       "'nexteventestimation' ignored: integrator direct (line 3) does not use it",
+       [](const SceneDesc& s) {
+         EXPECT_EQ(s.path.integrator, Integrator::Direct);
+         EXPECT_EQ(s.path.nextEvent, NextEvent::Off);
+       }},
+      {"LightSamplesUnderAnalyticDirect", kOk + "lightsamples 9\nintegrator analyticdirect\n", 3,
+       "'lightsamples' ignored: integrator analyticdirect (line 4) does not use it",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.lightSamples, 1); }},
+      {"BrdfUnderAnalyticDirect", kOk + "integrator analyticdirect\nbrdf ggx\nsphere 0 0 0 1\n", 4,
+       "'brdf' ignored: integrator analyticdirect",
+       [](const SceneDesc& s) { EXPECT_EQ(s.materials[s.spheres[0].material].brdf, BrdfModel::Phong); }},
+      {"KeywordValueInAnotherCase", kOk + "integrator PathTracer\n", 3,
+       "'PathTracer' read as 'pathtracer' (keywords are case-sensitive)",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.integrator, Integrator::PathTracer); }},
+      {"OnOffInAnotherCase", kOk + "integrator pathtracer\nrussianroulette ON\n", 4, "'ON' read as 'on'",
+       [](const SceneDesc& s) { EXPECT_TRUE(s.path.russianRoulette); }},
+      {"KeywordCaseQuadLight", kOk + "integrator direct\nquadlight 0 0 0 1 0 0 0 1 0 1 1 1\n", 4,
+       "'quadlight' read as 'quadLight'",
+       [](const SceneDesc& s) { EXPECT_EQ(s.quadLights.size(), 1u); }},
+      {"RepeatedIntegrator", kOk + "integrator direct\nintegrator pathtracer\n", 4,
+       "'integrator' given again (before at line 3): the last one counts",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.integrator, Integrator::PathTracer); }},
+      {"ExtraArgumentsToIntegrator", kOk + "integrator direct fast\n", 3,
+       "'integrator' takes 1 argument (raytracer, analyticdirect, direct or pathtracer), got 2: the extra one is ignored",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.integrator, Integrator::Direct); }},
   };
 }
 
@@ -170,6 +227,17 @@ TEST(ParseWarnings, KeywordsInAnyCase) {
   EXPECT_EQ(p.warnings[3].message, "... and 1 more of this kind (keywords in another case), on line 8");
 }
 
+// Commands the integrator does not use are one kind, summarised like the others, at their
+// lines, though found only at the end of file.
+TEST(ParseWarnings, IgnoredPathCommandsAreSummarised) {
+  ParsedScene p = parseSceneWithWarnings(kOk + "spp 4\ngamma 2\nbrdf ggx\nroughness 1\nlightsamples 4\nsphere 0 0 0 1\n",
+                                         "w.test");
+  ASSERT_EQ(p.warnings.size(), static_cast<std::size_t>(kMaxWarningsPerKind + 1));
+  for (int i = 0; i < kMaxWarningsPerKind; ++i) EXPECT_EQ(p.warnings[i].line, 3 + i);
+  EXPECT_EQ(p.warnings.back().format(), "w.test:6: warning: ... and 2 more of this kind (commands the integrator "
+                                        "does not use), on lines 6 to 7");
+}
+
 TEST(ParseWarnings, ByteOrderMarkIsSkippedSilently) {
   const std::string bom = "\xEF\xBB\xBF";
   for (const std::string& text :
@@ -248,7 +316,8 @@ TEST(ParseWarnings, ErrorsStayErrorsAndWarningsComeWithThem) {
               "e.test:1: warning: 'maxdepth' before 'size' (line 2): accepted, though the format puts 'size' first\n"
               "e.test:3: warning: unknown command 'refraction' (line skipped)\n"
               "e.test:4: warning: 'maxdepth' given again (before at line 1): the last one counts\n"
-              "e.test:4: error: 'maxdepth' argument 1: expected a non-negative integer, got '-1'\n"
+              "e.test:4: error: 'maxdepth' argument 1: expected a non-negative integer, got '-1': -1 (no limit) is "
+              "for the path integrators, and integrator raytracer (the default) is the Whitted model\n"
               "e.test:6: error: 'vertex' argument 2: expected a finite number, got 'nan'");
   }
   // No size at all is an error, and then commands before it are not warned about.

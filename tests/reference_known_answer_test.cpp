@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "image/encode.h"
 #include "cpu/reference.h"
 #include "image/image.h"
 #include "scene/parse.h"
@@ -132,7 +133,7 @@ TEST(KnownAnswer, AMillionReflectionsBetweenParallelMirrors) {
   ASSERT_EQ(scene.maxDepth, kDepth);
   Bvh bvh = buildBvh(scene);
   RayCounts rays;
-  Image img = renderReference(scene, bvh, CpuOptions{}, &rays);
+  Image img = encodeImage(renderReference(scene, bvh, CpuOptions{}, &rays), 1.0);
   EXPECT_EQ(rays.primary, 1u);
   EXPECT_EQ(rays.reflection, static_cast<std::uint64_t>(kDepth));
   EXPECT_EQ(rays.nonFinite, 0u);

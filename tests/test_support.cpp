@@ -19,6 +19,7 @@
 #include "cpu/reference.h"
 #include "gpu/device_error.h"
 #include "image/compare.h"
+#include "image/encode.h"
 #include "image/png.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
@@ -36,6 +37,13 @@ bool inCi() {
 std::optional<std::string> cse167Dir() {
   const char* env = std::getenv("VKRT_CSE167_DIR");
   fs::path dir = env ? fs::path(env) : fs::path(VKRT_SOURCE_DIR) / ".." / "shared" / "cse167";
+  if (fs::is_directory(dir / "scenes")) return fs::canonical(dir).string();
+  return std::nullopt;
+}
+
+std::optional<std::string> cse168Dir() {
+  const char* env = std::getenv("VKRT_CSE168_DIR");
+  fs::path dir = env ? fs::path(env) : fs::path(VKRT_SOURCE_DIR) / ".." / "shared" / "cse168";
   if (fs::is_directory(dir / "scenes")) return fs::canonical(dir).string();
   return std::nullopt;
 }
@@ -87,7 +95,7 @@ bool fileExists(const std::string& path) { return fs::exists(path); }
 Image renderScene(const SceneDesc& scene) {
   Bvh bvh = buildBvh(scene);
   RayCounts rays;
-  Image image = renderReference(scene, bvh, CpuOptions{}, &rays);
+  Image image = encodeImage(renderReference(scene, bvh, CpuOptions{}, &rays), 1.0);
   EXPECT_EQ(rays.nonFinite, 0u) << "the CPU reference produced NaN or infinite colours";
   return image;
 }
@@ -152,7 +160,7 @@ Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget, VulkanTimings*
   options.reads = reads;
   int before = context->validationMessages();
   RayCounts rays;
-  Image image = renderVulkan(*context, flatten(scene), options, &rays, timings);
+  Image image = encodeImage(renderVulkan(*context, flatten(scene), options, &rays, timings), 1.0);
   EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";
   EXPECT_EQ(rays.nonFinite, 0u) << "the shader produced NaN or infinite colours";
   return image;

@@ -20,6 +20,9 @@ bool inCi();
 
 // The course data folder (../shared/cse167 beside the source tree, or $VKRT_CSE167_DIR), if present.
 std::optional<std::string> cse167Dir();
+// The path-tracing course data folder (../shared/cse168 beside the source tree, or
+// $VKRT_CSE168_DIR), if present.
+std::optional<std::string> cse168Dir();
 
 // The project's scenes (scenes/*.test), by stem, sorted.
 std::vector<std::string> projectSceneNames();

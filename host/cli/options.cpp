@@ -15,14 +15,16 @@ const char* usageText() {
   return "usage: vkrt [options] SCENE.test [SCENE.test ...]\n"
          "       vkrt diff [comparison options] A.png B.png\n"
          "       vkrt merge [--allow-gaps] -o OUT.png TILE.png [TILE.png ...]\n"
+         "       vkrt merge -o OUT.pfm|OUT.png BATCH.pfm [BATCH.pfm ...]\n"
          "\n"
-         "Renders CSE167 scene files to PNG (or PPM) images, or compares two images.\n"
+         "Renders CSE167 (and CSE168) scene files to PNG, PPM or PFM images, or compares two images.\n"
          "Several scenes are rendered in one run, one line each, then a summary; the exit\n"
          "status is then the highest of theirs.\n"
          "\n"
          "options:\n"
          "  -o, --output FILE      write the image to FILE (overrides the scene's 'output');\n"
-         "                         FILE.ppm writes binary PPM, any other name PNG\n"
+         "                         FILE.ppm writes binary PPM, FILE.pfm linear float (PFM, no\n"
+         "                         quantization or gamma), any other name PNG\n"
          "  -o, --output DIR/      write each image into DIR (a trailing '/'): under the file name\n"
          "                         of the scene's 'output', or the scene's stem + .png without one\n"
          "  --size WxH             render at W x H pixels instead of the scene's size (same camera)\n"
@@ -39,6 +41,12 @@ const char* usageText() {
          "  --reads auto|texel|storage  how the shader reads the scene (default auto: texel\n"
          "                         buffers, faster on lavapipe, where the device's limits allow)\n"
          "  --maxdepth N           override the scene's maxdepth (fewer reflections: faster, less exact)\n"
+         "  --spp N                path integrators: N samples per pixel instead of the scene's spp\n"
+         "  --seed N               path integrators: the random numbers' seed, 0 to 4294967295\n"
+         "                         (default 0); another seed gives independent samples\n"
+         "  --time SECONDS         path integrators: render batches of samples until the time is up,\n"
+         "                         then write (at most --spp samples when given, else no limit);\n"
+         "                         the samples taken are reported\n"
          "  --cutoff auto|on|off   Vulkan: stop mirror paths that can no longer change the 8-bit\n"
          "                         result (same image); auto: where it can stop paths early\n"
          "  --no-cutoff            the same as --cutoff off\n"
@@ -62,6 +70,10 @@ const char* usageText() {
          "merge: puts crops (--crop) back together into their full image, each where its record\n"
          "says; tiles of different full images, overlapping tiles, pixels no tile covers (unless\n"
          "--allow-gaps: they stay black) and a tile without a record are usage errors (1).\n"
+         "With sample batches of one path-traced render (PFM images carrying a vkrt-samples\n"
+         "record, rendered with different --seed), merge averages them weighted by their sample\n"
+         "counts, into PFM or PNG (the recorded gamma); batches of different sizes, places or\n"
+         "gammas, or sharing samples, are usage errors (1).\n"
          "\n"
          "  -q, --quiet            print nothing but errors (no warnings, no progress)\n"
          "  -h, --help             show this help\n"
@@ -116,6 +128,24 @@ double scaleValue(const std::string& v) {
   auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
   if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || !(f > 0))
     throw UsageError("--scale expects a number greater than 0 (e.g. 0.5), got '" + v + "'");
+  return f;
+}
+
+// --seed N: a whole number from 0 to 2^32 - 1.
+std::uint32_t seedValue(const std::string& v) {
+  std::uint32_t n = 0;
+  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+  if (ec != std::errc() || end != v.data() + v.size())
+    throw UsageError("--seed expects a whole number from 0 to 4294967295, got '" + v + "'");
+  return n;
+}
+
+// --time SECONDS: a finite number greater than 0, at most a year.
+double timeValue(const std::string& v) {
+  double f = 0;
+  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
+  if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || !(f > 0) || f > 31536000.0)
+    throw UsageError("--time expects seconds, a number greater than 0 (e.g. 2.5), got '" + v + "'");
   return f;
 }
 
@@ -230,6 +260,12 @@ Options parseOptions(const std::vector<std::string>& args) {
         throw UsageError("unknown --reads '" + r + "' (expected: auto, texel or storage)");
     } else if (a == "--no-specialize") {   // for the benchmark and tests; not in --help
       o.request.specialize = false;
+    } else if (name == "--spp") {
+      o.request.spp = static_cast<std::uint64_t>(integerValue(name, take(name), 1, 1 << 30));
+    } else if (name == "--seed") {
+      o.request.seed = seedValue(take(name));
+    } else if (name == "--time") {
+      o.request.timeLimitSeconds = timeValue(take(name));
     } else if (name == "--maxdepth") {
       o.request.maxDepth = integerValue(name, take(name), 0, 1000000);
     } else if (a == "--no-cutoff") {
@@ -294,7 +330,7 @@ Options parseOptions(const std::vector<std::string>& args) {
                        " scenes: give a folder (-o DIR/, with the '/') or leave -o out");
     o.request.output = *output;
     if (!hasImageExtension(*output)) {
-      std::string w = "output file '" + *output + "' is not named .png or .ppm: vkrt writes PNG, under that name";
+      std::string w = "output file '" + *output + "' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name";
       if (o.request.strict) throw UsageError(w + " [--strict]");
       o.warnings.push_back(w);
     }

@@ -9,145 +9,28 @@
 #include <thread>
 #include <vector>
 
-#include "scene/ray_offset.h"
+#include "cpu/scene_query.h"
 
 namespace vkrt {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kInf = kInfinity;
 constexpr int kTile = 16;
 
-struct Ray {
-  dvec3 origin;
-  dvec3 dir;   // unit length
-};
-
-struct Hit {
-  double t = kInf;
-  std::uint32_t prim = 0;      // primRef
-  double b1 = 0.0, b2 = 0.0;   // barycentric weights of p1 and p2 (triangles)
-};
-
-// ---- intersection (double) ------------------------------------------------------------------
-
-// Plane intersection followed by an inside test on the three edge functions.
-bool hitTriangle(const Triangle& tri, const Ray& ray, double tMin, double tMax, Hit& hit) {
-  dvec3 e1 = tri.p[1] - tri.p[0], e2 = tri.p[2] - tri.p[0];
-  dvec3 n = glm::cross(e1, e2);
-  double nn = glm::dot(n, n);
-  double denom = glm::dot(n, ray.dir);
-  if (nn == 0.0 || denom == 0.0) return false;   // degenerate, or ray in the plane
-  double t = glm::dot(n, tri.p[0] - ray.origin) / denom;
-  if (!(t > tMin && t < tMax)) return false;
-  dvec3 q = ray.origin + t * ray.dir;
-  double w0 = glm::dot(glm::cross(tri.p[1] - q, tri.p[2] - q), n);
-  double w1 = glm::dot(glm::cross(tri.p[2] - q, tri.p[0] - q), n);
-  double w2 = glm::dot(glm::cross(tri.p[0] - q, tri.p[1] - q), n);
-  if (w0 < 0.0 || w1 < 0.0 || w2 < 0.0) return false;
-  hit.t = t;
-  hit.b1 = w1 / nn;
-  hit.b2 = w2 / nn;
-  return true;
-}
-
-// The ray goes into object space unnormalised, so its t is the world t.
-bool hitSphere(const Sphere& s, const Ray& ray, double tMin, double tMax, Hit& hit) {
-  dvec3 o = dvec3(s.objectFromWorld * glm::dvec4(ray.origin, 1.0)) - s.center;
-  dvec3 d = dvec3(s.objectFromWorld * glm::dvec4(ray.dir, 0.0));
-  double a = glm::dot(d, d);
-  double halfB = glm::dot(o, d);
-  double c = glm::dot(o, o) - s.radius * s.radius;
-  double disc = halfB * halfB - a * c;
-  if (disc < 0.0 || a == 0.0) return false;
-  double root = std::sqrt(disc);
-  double tNear = (-halfB - root) / a, tFar = (-halfB + root) / a;
-  double t = tNear > tMin ? tNear : tFar;
-  if (!(t > tMin && t < tMax)) return false;
-  hit.t = t;
-  return true;
-}
-
-// Slab test against a float box; true when the ray may enter it within (tMin, tMax).
-bool hitBox(const gpu::GpuBvhNode& n, const Ray& ray, const dvec3& invDir, double tMin, double tMax) {
-  const double lo[3] = {n.minX, n.minY, n.minZ}, hi[3] = {n.maxX, n.maxY, n.maxZ};
-  for (int a = 0; a < 3; ++a) {
-    if (ray.dir[a] == 0.0) {
-      if (ray.origin[a] < lo[a] || ray.origin[a] > hi[a]) return false;
-      continue;
-    }
-    double t0 = (lo[a] - ray.origin[a]) * invDir[a], t1 = (hi[a] - ray.origin[a]) * invDir[a];
-    if (t0 > t1) std::swap(t0, t1);
-    tMin = std::max(tMin, t0);
-    tMax = std::min(tMax, t1);
-    if (tMin > tMax) return false;
-  }
-  return true;
+// The nearest float; beyond float's range, +-infinity (a plain cast would be undefined there).
+float toFloat(double c) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  if (c > kMax) return std::numeric_limits<float>::infinity();
+  if (c < -kMax) return -std::numeric_limits<float>::infinity();
+  return static_cast<float>(c);
 }
 
 class Tracer {
  public:
-  // The camera basis is computed once here, not per pixel.
-  Tracer(const SceneDesc& scene, const Bvh& bvh) : scene_(scene), bvh_(bvh) {
-    const Camera& c = scene.camera;
-    w_ = glm::normalize(c.from - c.at);
-    u_ = glm::normalize(glm::cross(c.up, w_));
-    v_ = glm::cross(w_, u_);
-    halfW_ = scene.width / 2.0;
-    halfH_ = scene.height / 2.0;
-    tanY_ = std::tan(glm::radians(c.fovyDegrees) / 2.0);
-    tanX_ = tanY_ * scene.width / scene.height;
-    offsets_ = primitiveOffsets(scene);
-    frameOrigin_ = floatFrameOrigin(scene);
-  }
+  Tracer(const SceneDesc& scene, const Bvh& bvh) : scene_(scene), query_(scene, bvh) {}
 
-  // Nearest hit with t in (tMin, tMax), or the first one found when anyHit.
   bool intersect(const Ray& ray, double tMin, double tMax, bool anyHit, Hit& hit) const {
-    if (bvh_.primRefs.empty()) return false;   // the root is then an empty leaf
-    dvec3 invDir(1.0 / ray.dir.x, 1.0 / ray.dir.y, 1.0 / ray.dir.z);
-    std::uint32_t stack[kMaxBvhDepth];
-    int top = 0;
-    stack[top++] = 0;
-    bool found = false;
-    hit.t = tMax;
-    while (top > 0) {
-      const gpu::GpuBvhNode& node = bvh_.nodes[stack[--top]];
-      if (!hitBox(node, ray, invDir, tMin, hit.t)) continue;
-      if (node.primCount > 0) {
-        for (std::uint32_t i = 0; i < node.primCount; ++i) {
-          std::uint32_t ref = bvh_.primRefs[node.leftOrFirst + i];
-          Hit h;
-          bool ok = (ref & gpu::kPrimSphereBit)
-                        ? hitSphere(scene_.spheres[ref & ~gpu::kPrimSphereBit], ray, tMin, hit.t, h)
-                        : hitTriangle(scene_.triangles[ref], ray, tMin, hit.t, h);
-          if (ok) {
-            h.prim = ref;
-            hit = h;
-            found = true;
-            if (anyHit) return true;
-          }
-        }
-      } else {
-        stack[top++] = node.leftOrFirst + 1;
-        stack[top++] = node.leftOrFirst;
-      }
-    }
-    return found;
-  }
-
-  // The unit normal at hit point p (SPEC 4: never flipped toward the ray) and the material.
-  std::uint32_t surfaceAt(const Hit& hit, const dvec3& p, dvec3& normal) const {
-    if (hit.prim & gpu::kPrimSphereBit) {
-      const Sphere& s = scene_.spheres[hit.prim & ~gpu::kPrimSphereBit];
-      dvec3 pObject = dvec3(s.objectFromWorld * glm::dvec4(p, 1.0));
-      normal = glm::normalize(glm::transpose(glm::dmat3(s.objectFromWorld)) * (pObject - s.center));
-      return s.material;
-    }
-    const Triangle& t = scene_.triangles[hit.prim];
-    if (t.smooth)
-      normal = glm::normalize((1.0 - hit.b1 - hit.b2) * t.n[0] + hit.b1 * t.n[1] + hit.b2 * t.n[2]);
-    else
-      normal = glm::normalize(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
-    return t.material;
+    return query_.intersect(ray, tMin, tMax, anyHit, hit);
   }
 
   // A hit's own colour, everything of SPEC 5 but the mirror term: A + Em + the lights, each
@@ -200,11 +83,9 @@ class Tracer {
       if (!intersect(ray, tMin, kInf, false, hit)) break;   // a miss is black
       dvec3 p = ray.origin + hit.t * ray.dir;
       dvec3 normal;
-      std::uint32_t materialIndex = surfaceAt(hit, p, normal);
+      std::uint32_t materialIndex = query_.surfaceAt(hit, p, normal);
       const Material& m = scene_.materials[materialIndex];
-      const SecondaryRayOffsets offset = secondaryRayOffsets(
-          (hit.prim & gpu::kPrimSphereBit) ? offsets_.spheres[hit.prim & ~gpu::kPrimSphereBit] : offsets_.triangles[hit.prim],
-          p - frameOrigin_, p - scene_.camera.from);
+      const SecondaryRayOffsets offset = query_.offsetsAt(hit, p);
       radiance += throughput * localShading(m, p, normal, -ray.dir, offset, counts);
       // Possibly continue along the mirror direction.
       if (depth >= scene_.maxDepth || m.specular == dvec3(0.0)) break;
@@ -218,26 +99,20 @@ class Tracer {
   }
 
   // SPEC section 3: the ray through the centre of pixel (column, row).
-  Ray cameraRay(int column, int row) const {
-    double a = tanX_ * ((column + 0.5) - halfW_) / halfW_;
-    double b = tanY_ * (halfH_ - (row + 0.5)) / halfH_;
-    return {scene_.camera.from, glm::normalize(a * u_ + b * v_ - w_)};
-  }
+  Ray cameraRay(int column, int row) const { return query_.cameraRay(column + 0.5, row + 0.5); }
 
  private:
   const SceneDesc& scene_;
-  const Bvh& bvh_;
-  dvec3 u_, v_, w_;
-  double halfW_, halfH_, tanX_, tanY_;
-  PrimitiveOffsets offsets_;   // the secondary-ray offsets (gpu_types.h, "Secondary rays")
-  dvec3 frameOrigin_;          // where the shader's float32 frame has its origin (flatten())
+  SceneQuery query_;
 };
 
 }  // namespace
 
-Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options, RayCounts* counts) {
+RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options,
+                              RayCounts* counts) {
   const PixelRect region = options.crop ? *options.crop : PixelRect{0, 0, scene.width, scene.height};
-  Image image(region.width(), region.height());
+  RadianceImage image(region.width(), region.height());
+  image.samples = options.sampleCount;   // the mean of identical samples is the one traced
   Tracer tracer(scene, bvh);
   const int tilesX = (region.width() + kTile - 1) / kTile, tilesY = (region.height() + kTile - 1) / kTile;
   const int tileCount = tilesX * tilesY;
@@ -258,8 +133,8 @@ Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& 
         for (int x = x0; x < x1; ++x) {
           ++local.primary;
           dvec3 c = tracer.trace(tracer.cameraRay(x, y), local);
-          std::uint8_t* px = image.pixel(x - region.x0, y - region.y0);
-          for (int k = 0; k < 3; ++k) px[k] = radianceToByte(c[k]);
+          float* px = image.pixel(x - region.x0, y - region.y0);
+          for (int k = 0; k < 3; ++k) px[k] = toFloat(c[k]);
           if (!std::isfinite(c.x + c.y + c.z)) ++local.nonFinite;
         }
       std::lock_guard lock(mutex);

@@ -1,4 +1,4 @@
-// CPU reference renderer: SceneDesc (+ its BVH) -> Image, in double precision, written
+// CPU reference renderer: SceneDesc (+ its BVH) -> RadianceImage, in double precision, written
 // plainly after SPEC sections 3-7. It is the tests' oracle for the GPU backend, so it shares
 // no intersection or shading code with the shader.
 #pragma once
@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "image/crop.h"
-#include "image/image.h"
+#include "image/radiance_image.h"
 #include "scene/bvh.h"
 #include "scene/scene_desc.h"
 
@@ -17,10 +17,17 @@ namespace vkrt {
 
 struct RayCounts {
   std::uint64_t primary = 0, shadow = 0, reflection = 0;
-  // Pixels whose colour came out NaN or infinite (written as 0 or 1: radianceToByte); the
+  // Pixels whose colour came out NaN or infinite (encoded as 0 or 1: image/encode.h); the
   // tests require 0 on every scene they render, and vkrt warns when it is not.
   std::uint64_t nonFinite = 0;
   std::uint64_t total() const { return primary + shadow + reflection; }
+  RayCounts& operator+=(const RayCounts& o) {
+    primary += o.primary;
+    shadow += o.shadow;
+    reflection += o.reflection;
+    nonFinite += o.nonFinite;
+    return *this;
+  }
 };
 
 struct CpuOptions {
@@ -33,8 +40,17 @@ struct CpuOptions {
   // Only these pixels of the scene's image (inside it), as an image of the crop's size; the
   // camera rays are the full image's (SPEC section 3).
   std::optional<PixelRect> crop;
+  // The samples to render: [firstSample, firstSample + sampleCount) of each pixel, drawn with
+  // `seed` (gpu_types.h, "Random numbers"); the image returned is their mean, with
+  // RadianceImage::samples = sampleCount. The Whitted model (Integrator::Raytracer) is
+  // deterministic: every sample is the same, so it traces one and ignores the seed.
+  std::uint32_t seed = 0;
+  std::uint64_t firstSample = 0;
+  std::uint32_t sampleCount = 1;
 };
 
-Image renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options, RayCounts* counts);
+// The Whitted model of SPEC sections 3-7 (the path integrators plug in beside it, for
+// scene.path.integrator != Integrator::Raytracer).
+RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options, RayCounts* counts);
 
 }  // namespace vkrt

@@ -10,6 +10,7 @@
 #include "gpu/compute_pipeline.h"
 #include "errors.h"
 #include "gpu/device_error.h"
+#include "gpu/tile_order.h"
 #include "timing.h"
 #include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
 #include "raytrace_texel.comp.h"   // kRaytraceTexelSpirv: the same with VKRT_TEXEL_READS
@@ -18,15 +19,6 @@ namespace vkrt {
 namespace {
 
 constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
-
-// A stride coprime with `n`, near n times the golden ratio's fraction, so that consecutive
-// workgroups land on tiles far apart.
-std::uint32_t scatterStride(std::uint32_t n) {
-  if (n <= 2) return 1;
-  std::uint32_t s = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(n * 0.6180339887));
-  while (std::gcd(s, n) != 1) ++s;
-  return s;
-}
 
 // Which features the scene uses; the shader is specialised to them (all on when not
 // specializing). Also says, for --stats, what was left out.
@@ -85,8 +77,8 @@ bool cutoffPays(const gpu::GpuPushConstants& p, std::uint32_t maxDepth) {
 
 }  // namespace
 
-Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options, RayCounts* rays,
-                   VulkanTimings* timings) {
+RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options,
+                           RayCounts* rays, VulkanTimings* timings) {
   VulkanTimings t;
   // The pixels computed: the whole image or the crop; bands and tiles cover these only.
   const PixelRect region = options.crop ? *options.crop
@@ -115,7 +107,7 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   Buffer materials = Buffer::withContents(context, scene.materials);
   Buffer nodes = Buffer::withContents(context, scene.bvh.nodes);
   Buffer primRefs = Buffer::withContents(context, scene.bvh.primRefs);
-  Buffer pixels(context, std::size_t{width} * bandHeight * sizeof(std::uint32_t), true);
+  Buffer pixels(context, std::size_t{width} * bandHeight * sizeof(gpu::vec4), true);
   Buffer states(context, std::size_t{width} * bandHeight * sizeof(gpu::GpuPathState));
   Buffer counters(context, sizeof(gpu::GpuCounters), true);
   std::memset(counters.mapped(), 0, sizeof(gpu::GpuCounters));
@@ -203,7 +195,8 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
   }
   t.pipelineSeconds = secondsSince(t0);
 
-  Image image(static_cast<int>(width), static_cast<int>(height));
+  RadianceImage image(static_cast<int>(width), static_cast<int>(height));
+  image.samples = options.sampleCount;   // the Whitted model: the mean of identical samples
   gpu::GpuPushConstants push = scene.push;
   auto* counter = static_cast<volatile gpu::GpuCounters*>(counters.mapped());
   for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
@@ -230,14 +223,14 @@ Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOp
 
     t0 = std::chrono::steady_clock::now();
     std::uint32_t rows = std::min(bandHeight, height - y0);
-    const auto* packed = static_cast<const std::uint32_t*>(pixels.mapped());
+    const auto* band = static_cast<const float*>(pixels.mapped());   // vec4 per pixel
     for (std::uint32_t y = 0; y < rows; ++y) {
-      std::uint8_t* out = image.pixel(0, static_cast<int>(y0 + y));
-      const std::uint32_t* in = packed + std::size_t{y} * width;
+      float* out = image.pixel(0, static_cast<int>(y0 + y));
+      const float* in = band + std::size_t{y} * width * 4;
       for (std::uint32_t x = 0; x < width; ++x) {
-        out[3 * x] = static_cast<std::uint8_t>(in[x]);
-        out[3 * x + 1] = static_cast<std::uint8_t>(in[x] >> 8);
-        out[3 * x + 2] = static_cast<std::uint8_t>(in[x] >> 16);
+        out[3 * x] = in[4 * x];
+        out[3 * x + 1] = in[4 * x + 1];
+        out[3 * x + 2] = in[4 * x + 2];
       }
     }
     t.readbackSeconds += secondsSince(t0);

@@ -1,4 +1,4 @@
-// The Vulkan backend: GpuScene -> Image through raytrace.comp. The image is traced in bands
+// The Vulkan backend: GpuScene -> RadianceImage through raytrace.comp. The image is traced in bands
 // of rows (bounded memory, a moving progress bar); each band is dispatched again until no
 // pixel is left suspended (the loop budget of llvmpipe, see gpu_types.h).
 #pragma once
@@ -11,7 +11,7 @@
 #include "cpu/reference.h"
 #include "gpu/context.h"
 #include "image/crop.h"
-#include "image/image.h"
+#include "image/radiance_image.h"
 #include "scene/flatten.h"
 
 namespace vkrt {
@@ -36,6 +36,12 @@ struct VulkanOptions {
   // Only these pixels of the scene's image (inside it), as an image of the crop's size; the
   // camera rays are the full image's (GpuRenderParams).
   std::optional<PixelRect> crop;
+  // The samples to render, as CpuOptions (cpu/reference.h): [firstSample, firstSample +
+  // sampleCount) with `seed`; the image is their mean, with RadianceImage::samples =
+  // sampleCount. The Whitted model traces one (it is deterministic) and ignores the seed.
+  std::uint32_t seed = 0;
+  std::uint64_t firstSample = 0;
+  std::uint32_t sampleCount = 1;
 };
 
 struct VulkanTimings {
@@ -49,7 +55,9 @@ struct VulkanTimings {
 
 // Throws DeviceError (also for a scene beyond the backend's or the device's limits),
 // OutOfMemory, InternalError.
-Image renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options, RayCounts* rays,
-                   VulkanTimings* timings);
+// The Whitted model (raytrace.comp); the path integrators plug in beside it, for
+// scene.integrator != kIntegratorRaytracer.
+RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options,
+                           RayCounts* rays, VulkanTimings* timings);
 
 }  // namespace vkrt

@@ -1,4 +1,4 @@
-// Crop rectangles, their record, and reading the text records of PNG and PPM files.
+// Crop rectangles, their record, and reading the text records of PNG, PPM and PFM files.
 #include "image/crop.h"
 
 #include <cstdint>
@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "errors.h"
+#include "image/pfm.h"
 
 namespace vkrt {
 namespace {
@@ -82,6 +83,7 @@ std::optional<CropRecord> parseCropRecord(const std::string& value) {
 std::vector<std::pair<std::string, std::string>> readImageText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
+  if (isPfmFile(path)) return readPfmText(path);
   std::vector<std::pair<std::string, std::string>> text;
   unsigned char signature[8] = {};
   in.read(reinterpret_cast<char*>(signature), 8);

@@ -42,8 +42,8 @@ std::optional<PixelRect> parseCropOption(const std::string& text);
 std::string cropProblem(const PixelRect& rect, int fullWidth, int fullHeight);
 
 // The text records of an image file: PNG tEXt chunks (keyword, text), or the "# KEY VALUE"
-// comment lines of a PPM header. Throws IoError when the file cannot be read; a file that is
-// neither gives none.
+// comment lines of a PPM header, or the trailer of a PFM (image/pfm.h). Throws IoError when
+// the file cannot be read; a file that is none of these gives none.
 std::vector<std::pair<std::string, std::string>> readImageText(const std::string& path);
 
 }  // namespace vkrt

@@ -1,8 +1,11 @@
-// The writer for a file name: PPM for .ppm, PNG otherwise.
+// The writer for a file name: PFM for .pfm, PPM for .ppm, PNG otherwise.
 #include "image/image_file.h"
 
 #include <cctype>
 
+#include "errors.h"
+#include "image/encode.h"
+#include "image/pfm.h"
 #include "image/png.h"
 #include "image/ppm.h"
 
@@ -23,19 +26,30 @@ std::string extensionOf(const std::string& path) {
 }  // namespace
 
 ImageFormat imageFormatFor(const std::string& path) {
-  return extensionOf(path) == "ppm" ? ImageFormat::Ppm : ImageFormat::Png;
+  std::string ext = extensionOf(path);
+  return ext == "pfm" ? ImageFormat::Pfm : ext == "ppm" ? ImageFormat::Ppm : ImageFormat::Png;
 }
 
 bool hasImageExtension(const std::string& path) {
   std::string ext = extensionOf(path);
-  return ext == "png" || ext == "ppm";
+  return ext == "png" || ext == "ppm" || ext == "pfm";
 }
 
 void writeImageAtomic(const Image& image, const std::string& path) {
+  if (imageFormatFor(path) == ImageFormat::Pfm)
+    throw UsageError("'" + path + "': a .pfm holds linear radiance, and this image is 8-bit; write .png or .ppm");
   if (imageFormatFor(path) == ImageFormat::Ppm)
     writePpmAtomic(image, path);
   else
     writePngAtomic(image, path);
+}
+
+void writeImageAtomic(const RadianceImage& image, const std::string& path, double gamma) {
+  switch (imageFormatFor(path)) {
+    case ImageFormat::Pfm: writePfmAtomic(image, path); break;
+    case ImageFormat::Ppm: writePpmAtomic(encodeImage(image, gamma), path); break;
+    case ImageFormat::Png: writePngAtomic(image, gamma, path); break;   // encoded row by row
+  }
 }
 
 }  // namespace vkrt

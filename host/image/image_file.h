@@ -1,23 +1,32 @@
-// Image output by file name: `.ppm` (any case) writes binary PPM, anything else PNG. The one
-// place that decides which writer a path gets.
+// Image output by file name: `.pfm` (any case) writes a Portable Float Map (linear,
+// unquantized), `.ppm` binary PPM, anything else PNG. The one place that decides which writer
+// a path gets.
 #pragma once
 
 #include <string>
 
 #include "image/image.h"
+#include "image/radiance_image.h"
 
 namespace vkrt {
 
-enum class ImageFormat { Png, Ppm };
+enum class ImageFormat { Png, Ppm, Pfm };
 
-// The format written for `path`: Ppm for a name ending in .ppm (any case), else Png.
+// The format written for `path`: Pfm for a name ending in .pfm, Ppm for .ppm (any case),
+// else Png.
 ImageFormat imageFormatFor(const std::string& path);
 
-// True when `path` ends in .png or .ppm (any case): the names vkrt writes as their extension
+// True when `path` ends in .png, .ppm or .pfm (any case): the names vkrt writes as their extension
 // says. Any other name gets PNG bytes, and a warning.
 bool hasImageExtension(const std::string& path);
 
-// Writes `image` in the format of imageFormatFor(path), atomically. Throws IoError.
+// Writes `image` in the format of imageFormatFor(path), atomically. Throws IoError, and
+// UsageError for a .pfm name (bytes are no linear radiance: PFM is written from a
+// RadianceImage).
 void writeImageAtomic(const Image& image, const std::string& path);
+
+// Writes a render: .pfm as it is (linear float, with its records), .png and .ppm encoded with
+// `gamma` (image/encode.h). Throws IoError.
+void writeImageAtomic(const RadianceImage& image, const std::string& path, double gamma);
 
 }  // namespace vkrt

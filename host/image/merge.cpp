@@ -1,12 +1,14 @@
 // Merging crops: read each tile's record and pixels, check that the tiles make one image,
-// copy them into place.
+// copy them into place. Merging sample batches: check that they are of one render, average.
 #include "image/merge.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 #include "errors.h"
 #include "image/crop.h"
+#include "image/pfm.h"
 #include "image/png.h"
 
 namespace vkrt {
@@ -70,8 +72,97 @@ Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, Merg
     for (int y = 0; y < t.image.height; ++y)
       std::memcpy(merged.pixel(t.record.rect.x0, t.record.rect.y0 + y), t.image.pixel(0, y),
                   static_cast<std::size_t>(t.image.width) * 3);
-  if (report) *report = {static_cast<int>(tiles.size()), gaps};
+  if (report) *report = {static_cast<int>(tiles.size()), gaps, {}};
   return merged;
+}
+
+namespace {
+
+std::optional<std::string> recordOf(const std::vector<std::pair<std::string, std::string>>& text,
+                                    const std::string& keyword) {
+  std::optional<std::string> value;
+  for (const auto& [k, v] : text)
+    if (k == keyword) value = v;
+  return value;
+}
+
+std::string gammaText(double gamma) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", gamma);
+  return buf;
+}
+
+}  // namespace
+
+bool areSampleBatches(const std::vector<std::string>& paths) {
+  std::optional<std::optional<std::string>> place;   // the first file's crop record, or none
+  for (const std::string& path : paths) {
+    auto text = readImageText(path);
+    if (!recordOf(text, kSamplesKeyword)) return false;
+    std::optional<std::string> crop = recordOf(text, kCropKeyword);
+    if (place && *place != crop) return false;
+    place = crop;
+  }
+  return !paths.empty();
+}
+
+RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeReport* report) {
+  if (paths.empty()) throw UsageError("merge needs at least one batch");
+  RadianceImage mean;
+  mean.samples = 0;
+  SampleRecord merged;
+  std::string firstPath;
+  std::optional<std::string> firstCrop;
+  std::vector<std::pair<std::string, SampleRecord>> seen;
+  for (const std::string& path : paths) {
+    if (!isPfmFile(path))
+      throw UsageError("batch '" + path + "' is not a PFM file: sample batches are averaged from linear float "
+                       "images; render each batch with -o NAME.pfm");
+    RadianceImage batch = readPfm(path);
+    std::optional<std::string> value = recordOf(batch.text, kSamplesKeyword);
+    if (!value)
+      throw UsageError("batch '" + path + "' has no " + kSamplesKeyword +
+                       " record: it is not the image of a path-traced render");
+    std::optional<SampleRecord> record = parseSampleRecord(*value);
+    if (!record) throw UsageError("batch '" + path + "': malformed " + kSamplesKeyword + " record '" + *value + "'");
+    std::optional<std::string> crop = recordOf(batch.text, kCropKeyword);
+    if (seen.empty()) {
+      firstPath = path;
+      firstCrop = crop;
+      merged.gamma = record->gamma;
+    } else {
+      if (batch.width != mean.width || batch.height != mean.height)
+        throw UsageError("batches of different sizes: '" + firstPath + "' is " + std::to_string(mean.width) + "x" +
+                         std::to_string(mean.height) + ", '" + path + "' " + std::to_string(batch.width) + "x" +
+                         std::to_string(batch.height));
+      if (crop != firstCrop)
+        throw UsageError("batches of different places: '" + firstPath + "' is " +
+                         (firstCrop ? "the crop " + *firstCrop : std::string("the whole image")) + ", '" + path +
+                         "' " + (crop ? "the crop " + *crop : std::string("the whole image")));
+      if (record->gamma != merged.gamma)
+        throw UsageError("batches of different gammas: '" + firstPath + "' has gamma " + gammaText(merged.gamma) +
+                         ", '" + path + "' gamma " + gammaText(record->gamma));
+    }
+    for (const auto& [otherPath, other] : seen) {
+      std::string shared = sharedSample(other, *record);
+      if (!shared.empty())
+        throw UsageError("batches '" + otherPath + "' and '" + path + "' hold the same samples (" + shared +
+                         "): render each batch with its own --seed");
+    }
+    seen.emplace_back(path, *record);
+    batch.samples = record->total();
+    batch.text.clear();
+    accumulateMean(mean, std::move(batch));
+    merged.ranges.insert(merged.ranges.end(), record->ranges.begin(), record->ranges.end());
+  }
+  if (firstCrop) mean.text.emplace_back(kCropKeyword, *firstCrop);
+  mean.text.emplace_back(kSamplesKeyword, formatSampleRecord(merged));
+  if (report) {
+    report->tiles = static_cast<int>(paths.size());
+    report->gapPixels = 0;
+    report->samples = merged;
+  }
+  return mean;
 }
 
 }  // namespace vkrt

@@ -1,5 +1,6 @@
-// `vkrt merge`: crops (images carrying a CropRecord) put back together into their full image.
-// Knows nothing of rendering: the records say everything.
+// `vkrt merge`: crops (images carrying a CropRecord) put back together into their full image,
+// or sample batches of one render (PFM images carrying a SampleRecord) averaged. Knows nothing
+// of rendering: the records say everything.
 #pragma once
 
 #include <cstdint>
@@ -7,12 +8,15 @@
 #include <vector>
 
 #include "image/image.h"
+#include "image/radiance_image.h"
+#include "image/samples.h"
 
 namespace vkrt {
 
 struct MergeReport {
-  int tiles = 0;
+  int tiles = 0;                 // tiles, or batches
   std::uint64_t gapPixels = 0;   // pixels no tile covers (black; only with allowGaps)
+  SampleRecord samples;          // batches: the merged image's samples (and gamma)
 };
 
 // Reads every tile and places it where its record says. Throws UsageError for a set of tiles
@@ -21,5 +25,22 @@ struct MergeReport {
 // pixels no tile covers unless `allowGaps` (they stay black then). Throws IoError when a
 // tile cannot be read.
 Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report = nullptr);
+
+}  // namespace vkrt
+
+namespace vkrt {
+
+// True when the files are sample batches rather than crops: every one carries a vkrt-samples
+// record, and they lie at one place (the same crop record, or none). Throws IoError.
+bool areSampleBatches(const std::vector<std::string>& paths);
+
+// Reads every batch and averages them weighted by their sample counts (image/samples.h:
+// accumulateMean); the result carries the crop record (if any) and the union of the samples
+// records. Throws UsageError for batches that are not of one render: one that is not a PFM
+// (8-bit bytes are quantized: batches are averaged from linear float), one without a record or
+// with a malformed one, sizes, places (crop records) or gammas that differ, and two that share
+// a sample (the same seed and sample indices: the same numbers twice). IoError when a file
+// cannot be read.
+RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeReport* report = nullptr);
 
 }  // namespace vkrt

@@ -6,11 +6,13 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <vector>
 
 #include <zlib.h>
 
 #include "image/atomic_file.h"
+#include "image/encode.h"
 #include "interrupt.h"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -74,15 +76,17 @@ void filterRow(const std::uint8_t* row, const std::uint8_t* above, std::size_t b
   }
 }
 
-void writePngStream(int fd, const Image& image, const std::string& path) {
+// `row(y, out)` fills out (width * 3 bytes) with row y, top first, each row once in order.
+void writePngStream(int fd, int width, int height, const std::vector<std::pair<std::string, std::string>>& records,
+                    const std::function<void(int, std::uint8_t*)>& row, const std::string& path) {
   static const std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   writeAll(fd, kSignature, sizeof kSignature, path);
   std::vector<std::uint8_t> header;
-  putBigEndian(header, static_cast<std::uint32_t>(image.width));
-  putBigEndian(header, static_cast<std::uint32_t>(image.height));
+  putBigEndian(header, static_cast<std::uint32_t>(width));
+  putBigEndian(header, static_cast<std::uint32_t>(height));
   header.insert(header.end(), {8, 2, 0, 0, 0});   // 8 bits, RGB, deflate, filters, no interlace
   writeChunk(fd, "IHDR", header.data(), header.size(), path);
-  for (const auto& [keyword, value] : image.text) {
+  for (const auto& [keyword, value] : records) {
     std::vector<std::uint8_t> text(keyword.begin(), keyword.end());
     text.push_back(0);
     text.insert(text.end(), value.begin(), value.end());
@@ -95,8 +99,8 @@ void writePngStream(int fd, const Image& image, const std::string& path) {
     throw IoError("cannot write '" + path + "': zlib failed to start");
   }
   std::vector<std::uint8_t> compressed(1u << 20);
-  const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3;
-  std::vector<std::uint8_t> filtered(rowBytes + 1), trial(rowBytes + 1);
+  const std::size_t rowBytes = static_cast<std::size_t>(width) * 3;
+  std::vector<std::uint8_t> filtered(rowBytes + 1), trial(rowBytes + 1), current(rowBytes), above(rowBytes);
   auto pump = [&](int flush) {
     do {
       z.next_out = compressed.data();
@@ -108,9 +112,11 @@ void writePngStream(int fd, const Image& image, const std::string& path) {
     } while (z.avail_out == 0);
   };
   try {
-    for (int y = 0; y < image.height; ++y) {
+    for (int y = 0; y < height; ++y) {
       throwIfInterrupted();
-      filterRow(image.pixel(0, y), y > 0 ? image.pixel(0, y - 1) : nullptr, rowBytes, filtered, trial);
+      row(y, current.data());
+      filterRow(current.data(), y > 0 ? above.data() : nullptr, rowBytes, filtered, trial);
+      current.swap(above);
       z.next_in = filtered.data();
       z.avail_in = static_cast<uInt>(filtered.size());
       pump(Z_NO_FLUSH);
@@ -127,7 +133,23 @@ void writePngStream(int fd, const Image& image, const std::string& path) {
 }  // namespace
 
 void writePngAtomic(const Image& image, const std::string& path) {
-  writeFileAtomic(path, ".png.tmp", [&](int fd) { writePngStream(fd, image, path); });
+  const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3;
+  writeFileAtomic(path, ".png.tmp", [&](int fd) {
+    writePngStream(fd, image.width, image.height, image.text,
+                   [&](int y, std::uint8_t* out) { std::memcpy(out, image.pixel(0, y), rowBytes); }, path);
+  });
+}
+
+void writePngAtomic(const RadianceImage& image, double gamma, const std::string& path) {
+  writeFileAtomic(path, ".png.tmp", [&](int fd) {
+    writePngStream(fd, image.width, image.height, image.text,
+                   [&](int y, std::uint8_t* out) {
+                     const float* in = image.pixel(0, y);
+                     for (std::size_t i = 0, n = static_cast<std::size_t>(image.width) * 3; i < n; ++i)
+                       out[i] = encodeChannel(in[i], gamma);
+                   },
+                   path);
+  });
 }
 
 Image readImage(const std::string& path) {

@@ -10,7 +10,7 @@ namespace vkrt {
 ProgressBar::ProgressBar(bool enabled)
     : active_(enabled && ::isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()), lastDraw_(start_) {}
 
-void ProgressBar::update(std::uint64_t done, std::uint64_t total) {
+void ProgressBar::update(std::uint64_t done, std::uint64_t total, const std::string& note) {
   if (!active_ || total == 0) return;
   std::lock_guard lock(mutex_);
   auto now = std::chrono::steady_clock::now();
@@ -24,10 +24,11 @@ void ProgressBar::update(std::uint64_t done, std::uint64_t total) {
   for (int i = 0; i < kWidth; ++i) bar[i] = i < filled ? '#' : ' ';
   bar[kWidth] = '\0';
   if (fraction > 0.0 && done < total)
-    std::fprintf(stderr, "\r[%s] %3d%%  ETA %.1f s ", bar, static_cast<int>(fraction * 100.0),
-                 elapsed * (1.0 - fraction) / fraction);
+    std::fprintf(stderr, "\r[%s] %3d%%  ETA %.1f s  %s ", bar, static_cast<int>(fraction * 100.0),
+                 elapsed * (1.0 - fraction) / fraction, note.c_str());
   else
-    std::fprintf(stderr, "\r[%s] %3d%%  %.1f s     ", bar, static_cast<int>(fraction * 100.0), elapsed);
+    std::fprintf(stderr, "\r[%s] %3d%%  %.1f s  %s     ", bar, static_cast<int>(fraction * 100.0), elapsed,
+                 note.c_str());
   std::fflush(stderr);
   drawn_ = true;
 }

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <mutex>
+#include <string>
 
 namespace vkrt {
 
@@ -12,7 +13,8 @@ class ProgressBar {
  public:
   // Draws only when `enabled` and stderr is a terminal.
   explicit ProgressBar(bool enabled);
-  void update(std::uint64_t done, std::uint64_t total);
+  // `note`, when given, follows the ETA (a progressive render's "12/64 samples").
+  void update(std::uint64_t done, std::uint64_t total, const std::string& note = {});
   // Clears the bar's line.
   void finish();
 

@@ -1,4 +1,5 @@
-// parse -> build -> render (CPU reference or Vulkan) -> PNG or PPM, with a timer per stage.
+// parse -> build -> render (CPU reference or Vulkan, in sample batches) -> PNG, PPM or PFM,
+// with a timer per stage.
 #include "render/render.h"
 
 #include <chrono>
@@ -10,10 +11,15 @@
 #include <thread>
 
 #include "errors.h"
+#include "cpu/path_reference.h"
+#include "gpu/vulkan_path_renderer.h"
 #include "gpu/vulkan_renderer.h"
+#include "image/encode.h"
 #include "image/image_file.h"
+#include "image/samples.h"
 #include "image/png.h"
 #include "interrupt.h"
+#include "render/progressive.h"
 #include "scene/flatten.h"
 #include "scene/diagnostic.h"
 #include "scene/parse.h"
@@ -22,8 +28,35 @@
 namespace vkrt {
 namespace {
 
-Image renderWithCpu(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress,
-                    RenderReport& report) {
+// What both backends are asked for: the render's samples, as batches (render/progressive.h).
+// The sample count a render without --spp limit (--time alone) is planned as.
+constexpr int kMaxSamplesPerPixel = 1 << 30;
+
+struct SamplePlan {
+  ProgressiveOptions progressive;
+  std::uint32_t seed = 0;
+};
+
+// One batch's pixel progress on the bar: a Whitted render (one batch) shows pixels, a
+// progressive one samples (renderProgressive maps pixels into them).
+std::function<void(std::uint64_t, std::uint64_t)> batchProgress(
+    const SamplePlan& plan, ProgressBar& bar, const std::function<void(std::uint64_t, std::uint64_t)>& pixelProgress) {
+  const bool samples = plan.progressive.progress != nullptr;
+  return [samples, &bar, pixelProgress](std::uint64_t done, std::uint64_t total) {
+    if (samples && pixelProgress)
+      pixelProgress(done, total);
+    else if (!samples)
+      bar.update(done, total);
+    waitForSignalIfTesting("render");
+  };
+}
+
+// The seam between the pipeline and the integrators, per backend: a BatchRenderer for the
+// scene's integrator. The Whitted model is renderReference / renderVulkan; the path
+// integrators (scene.path.integrator != Integrator::Raytracer) are renderPathReference /
+// renderVulkanPath, each taking the batch's samples and the seed.
+RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress,
+                            RenderReport& report, const SamplePlan& plan) {
   auto t0 = std::chrono::steady_clock::now();
   Bvh bvh = buildBvh(scene);
   report.buildSeconds = secondsSince(t0);
@@ -32,23 +65,47 @@ Image renderWithCpu(const RenderRequest& request, const SceneDesc& scene, Progre
   t0 = std::chrono::steady_clock::now();
   CpuOptions options;
   options.threads = request.threads;
-  options.progress = [&progress](std::uint64_t done, std::uint64_t total) {
-    progress.update(done, total);
-    waitForSignalIfTesting("render");
-  };
   options.stop = [] { return pendingInterrupt() != 0; };
   options.crop = request.crop;
+  options.seed = plan.seed;
   report.backend = "cpu";
   report.threads = request.threads > 0 ? request.threads : static_cast<int>(std::thread::hardware_concurrency());
-  Image image = renderReference(scene, bvh, options, &report.rays);
+  BatchRenderer batches = [&](const SampleBatch& batch, const std::function<void(std::uint64_t, std::uint64_t)>& px) {
+    CpuOptions o = options;
+    o.firstSample = batch.firstSample;
+    o.sampleCount = batch.count;
+    o.progress = batchProgress(plan, progress, px);
+    RayCounts rays;
+    RadianceImage image;
+    if (scene.path.integrator == Integrator::Raytracer) {
+      image = renderReference(scene, bvh, o, &rays);
+    } else {
+      PathOptions p;
+      p.threads = o.threads;
+      p.seed = o.seed;
+      p.firstSample = static_cast<std::uint32_t>(o.firstSample);
+      p.sampleCount = o.sampleCount;
+      p.crop = o.crop;
+      p.progress = o.progress;
+      p.stop = o.stop;
+      image = renderPathReference(scene, bvh, p, &rays);
+    }
+    report.rays += rays;
+    return image;
+  };
+  ProgressiveReport done;
+  RadianceImage image = renderProgressive(batches, plan.progressive, &done);
+  report.samples = done.samples;
+  report.batches = done.batches;
+  report.timeUp = done.timeUp;
   report.renderSeconds = secondsSince(t0);
   return image;
 }
 
 // Frees the scene's triangles and spheres once they are flattened: nothing after that reads them
 // (152 bytes a triangle, 150 MB for a million, held through the upload and render otherwise).
-Image renderWithVulkan(const RenderRequest& request, SceneDesc& scene, ProgressBar& progress,
-                       RenderReport& report, RenderSession& session) {
+RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, ProgressBar& progress,
+                               RenderReport& report, RenderSession& session, const SamplePlan& plan) {
   auto t0 = std::chrono::steady_clock::now();
   // The device first: without one there is nothing to build for.
   bool made = false;
@@ -73,25 +130,90 @@ Image renderWithVulkan(const RenderRequest& request, SceneDesc& scene, ProgressB
   options.reads = request.reads;
   options.specialize = request.specialize;
   options.cutoff = request.cutoff;
-  options.progress = [&progress](std::uint64_t done, std::uint64_t total) {
-    progress.update(done, total);
-    waitForSignalIfTesting("render");
-  };
   options.stop = [] { return pendingInterrupt() != 0; };
   options.crop = request.crop;
-  Image image = renderVulkan(context, gpuScene, options, &report.rays, &report.vulkan);
+  options.seed = plan.seed;
+  BatchRenderer batches = [&](const SampleBatch& batch, const std::function<void(std::uint64_t, std::uint64_t)>& px) {
+    VulkanOptions o = options;
+    o.firstSample = batch.firstSample;
+    o.sampleCount = batch.count;
+    o.progress = batchProgress(plan, progress, px);
+    RayCounts rays;
+    VulkanTimings timings;
+    RadianceImage image;
+    if (scene.path.integrator == Integrator::Raytracer) {
+      image = renderVulkan(context, gpuScene, o, &rays, &timings);
+    } else {
+      VulkanPathOptions p;
+      p.reads = o.reads;
+      p.seed = o.seed;
+      p.firstSample = static_cast<std::uint32_t>(o.firstSample);
+      p.sampleCount = o.sampleCount;
+      p.stepBudget = o.stepBudget;
+      p.specialize = o.specialize;
+      p.progress = o.progress;
+      p.stop = o.stop;
+      p.crop = o.crop;
+      image = renderVulkanPath(context, gpuScene, p, &rays, &timings);
+    }
+    report.rays += rays;
+    report.vulkan = timings;   // the last batch's (the Whitted model has one)
+    return image;
+  };
+  ProgressiveReport done;
+  RadianceImage image = renderProgressive(batches, plan.progressive, &done);
+  report.samples = done.samples;
+  report.batches = done.batches;
+  report.timeUp = done.timeUp;
   report.renderSeconds = setup + secondsSince(t0);
   return image;
 }
 
-// The image needs width * height * 3 bytes for as long as the render runs (the renderers and
-// the PNG writer add about a megabyte to that; the Vulkan backend's bands are bounded). Refuse
-// before allocating when the machine does not have that much memory available, naming the
-// `size` line and both numbers, rather than dying half-way.
+// The samples of this render, and the warnings for options that do not apply (the Whitted
+// model has one deterministic sample: --spp, --seed and --time change nothing).
+SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress) {
+  SamplePlan plan;
+  plan.progressive.stop = [] { return pendingInterrupt() != 0; };
+  if (scene.path.integrator == Integrator::Raytracer) {
+    std::vector<std::string> given;
+    if (request.spp > 0) given.push_back("--spp");
+    if (request.seed) given.push_back("--seed");
+    if (request.timeLimitSeconds > 0) given.push_back("--time");
+    if (!given.empty()) {
+      std::string list;
+      for (std::size_t i = 0; i < given.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == given.size() ? " and " : ", ") + given[i];
+      std::string w = list + (given.size() > 1 ? " do" : " does") + " not apply to " + scene.sourcePath +
+                      ": its integrator is raytracer (one deterministic sample per pixel)";
+      if (request.strict) throw UsageError(w + " [--strict]");
+      if (request.onOptionWarning) request.onOptionWarning(w);
+    }
+    plan.progressive.spp = 1;   // one batch; the bar counts pixels (the backend's progress)
+    plan.progressive.progress = nullptr;
+    return plan;
+  }
+  plan.seed = request.seed.value_or(0);
+  plan.progressive.spp = request.spp > 0 ? request.spp
+                         : request.timeLimitSeconds > 0 ? 0
+                                                        : static_cast<std::uint64_t>(scene.path.spp);
+  plan.progressive.timeLimitSeconds = request.timeLimitSeconds;
+  if (request.timeLimitSeconds <= 0)
+    plan.progressive.firstBatchSamples =
+        static_cast<std::uint32_t>(std::min<std::uint64_t>(plan.progressive.spp, plan.progressive.maxBatchSamples));
+  plan.progressive.progress = &progress;
+  return plan;
+}
+
+// The image needs width * height * 15 bytes for as long as the render runs: 12 for the linear
+// float image the renderers return, 3 for the bytes it is encoded into for PNG or PPM (the
+// renderers and the writers add about a megabyte to that; the Vulkan backend's bands are
+// bounded; a progressive render's running mean is that float image, each batch one more).
+// Refuse before allocating when the machine does not have that much memory available, naming
+// the `size` line and both numbers, rather than dying half-way.
 void checkImageFitsInMemory(const SceneDesc& scene, int width, int height) {
   const unsigned long long have = availableMemoryBytes();
   if (have == 0) return;   // unknown: let the allocation decide
-  const unsigned long long need = 3ULL * static_cast<unsigned>(width) * static_cast<unsigned>(height);
+  const unsigned long long need = 15ULL * static_cast<unsigned>(width) * static_cast<unsigned>(height);
   if (need > have)
     throw OutOfMemory("a " + std::to_string(width) + "x" + std::to_string(height) + " image (" +
                       scene.sourcePath + ":" + std::to_string(scene.sizeLine) + ") needs " +
@@ -184,8 +306,8 @@ std::string resolveOutput(const SceneDesc& scene, const RenderRequest& request) 
   return scene.output;
 }
 
-Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
-                          bool checkOutput, RenderSession* session) {
+RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
+                                  bool checkOutput, RenderSession* session) {
   auto t0 = std::chrono::steady_clock::now();
   ParsedScene parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict});
   SceneDesc& scene = parsed.scene;
@@ -212,25 +334,43 @@ Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, R
   report.spheres = scene.spheres.size();
   report.lights = scene.lights.size();
 
+  report.pathIntegrator = scene.path.integrator != Integrator::Raytracer;
+  // The Whitted model ignores `gamma` (SPEC-PATHTRACING section 1): its bytes are SPEC
+  // section 7's, and the shader's exactness cut-off reasons in those (gamma 1).
+  report.gamma = report.pathIntegrator ? scene.path.gamma : 1.0;
+  SamplePlan plan = samplePlan(request, scene, progress);
+  // The render's total decides the camera rule (gpu_types.h: spp 1 samples pixel centres):
+  // --spp N renders as a scene of spp N, and --time alone as one of unbounded spp.
+  if (report.pathIntegrator)
+    scene.path.spp = plan.progressive.spp > 0 && plan.progressive.spp < kMaxSamplesPerPixel
+                         ? static_cast<int>(plan.progressive.spp)
+                         : kMaxSamplesPerPixel;
+
   RenderSession ownSession;   // for this render only, when not lent one
-  Image image = request.backend == Backend::Cpu
-                    ? renderWithCpu(request, scene, progress, report)
-                    : renderWithVulkan(request, scene, progress, report, session ? *session : ownSession);
+  RadianceImage image = request.backend == Backend::Cpu
+                            ? renderWithCpu(request, scene, progress, report, plan)
+                            : renderWithVulkan(request, scene, progress, report, session ? *session : ownSession, plan);
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
   checkFinite(request, scene, report);
   if (request.crop) image.text.emplace_back(kCropKeyword, formatCropRecord({*request.crop, scene.width, scene.height}));
+  // A path integrator's image says which samples it is the mean of, so that batches rendered
+  // apart (other seeds) can be averaged by `vkrt merge`. The Whitted model's is exact: none.
+  if (report.pathIntegrator)
+    image.text.emplace_back(kSamplesKeyword,
+                            formatSampleRecord({{{plan.seed, plan.progressive.firstSample, report.samples}},
+                                                scene.path.gamma}));
   return image;
 }
 
 RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image,
                              RenderSession* session) {
   RenderReport report;
-  Image rendered = renderSceneInMemory(request, progress, report, true, session);
+  RadianceImage rendered = renderSceneInMemory(request, progress, report, true, session);
   auto t0 = std::chrono::steady_clock::now();
-  writeImageAtomic(rendered, report.outputPath);
+  writeImageAtomic(rendered, report.outputPath, report.gamma);
   report.writeSeconds = secondsSince(t0);
-  if (image) *image = std::move(rendered);
+  if (image) *image = encodeImage(rendered, report.gamma);
   return report;
 }
 

@@ -1,5 +1,5 @@
 // The whole pipeline for one scene file: parse -> build (BVH, GPU layouts) -> render with a
-// backend -> PNG. Knows nothing of the command line; main() turns its exceptions into exit codes.
+// backend, in sample batches (render/progressive.h) -> RadianceImage -> PNG, PPM or PFM. Knows nothing of the command line; main() turns its exceptions into exit codes.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +12,8 @@
 #include "cpu/reference.h"
 #include "gpu/vulkan_renderer.h"
 #include "image/crop.h"
+#include "image/image.h"
+#include "image/radiance_image.h"
 #include "render/progress.h"
 #include "scene/diagnostic.h"
 #include "scene/scene_desc.h"
@@ -43,6 +45,15 @@ struct RenderRequest {
   bool specialize = true;              // Vulkan: compile out what the scene does not use
   Cutoff cutoff = Cutoff::Auto;        // Vulkan: the exactness cut-off of the mirror loop
   int maxDepth = -1;                   // overrides the scene's `maxdepth` when >= 0
+  // Path integrators (SceneDesc::path.integrator other than Raytracer): the samples per pixel
+  // instead of the scene's `spp` when > 0 (--spp); the random generator's seed (--seed); a
+  // time limit in seconds when > 0 (--time): batches of samples until it is up, then the
+  // image; with no spp given, the time alone decides (the scene's `spp` is then no limit).
+  // The Whitted model (one deterministic sample) ignores them, with a warning
+  // (onOptionWarning) when given.
+  std::uint64_t spp = 0;
+  std::optional<std::uint32_t> seed;   // none: 0
+  double timeLimitSeconds = 0;
   // Every warning is an error: the scene's (SPEC section 8), and pixels whose colour came
   // out NaN or infinite (then no image is written).
   bool strict = false;
@@ -52,6 +63,10 @@ struct RenderRequest {
   // Called once with the scene's warnings, if it has any, after parsing and before the
   // render starts (not called with --strict: they are errors then).
   std::function<void(const std::vector<Diagnostic>&)> onWarnings;
+  // Called with a warning about the command line that only the parsed scene reveals (--spp
+  // for a Whitted scene), before the render starts. With `strict` such a warning is a
+  // UsageError instead.
+  std::function<void(const std::string&)> onOptionWarning;
 };
 
 struct RenderReport {
@@ -64,6 +79,13 @@ struct RenderReport {
   double instanceSeconds = 0, deviceSeconds = 0;
   VulkanTimings vulkan;
   RayCounts rays;
+  // The samples per pixel rendered, in how many batches; whether a time limit ended the render
+  // before its spp; the gamma the image is encoded with at output (the scene's `gamma`).
+  bool pathIntegrator = false;   // false: the Whitted model (one deterministic sample)
+  std::uint64_t samples = 1;
+  std::uint32_t batches = 1;
+  bool timeUp = false;
+  double gamma = 1.0;
 };
 
 // What scenes rendered one after another in one process share: the Vulkan context (instance
@@ -93,9 +115,10 @@ class RenderSession {
 RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image = nullptr,
                              RenderSession* session = nullptr);
 
-// The same without writing the image (--compare); `checkOutput` also resolves and checks the
-// output path first, as renderSceneFile does.
-Image renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
+// The same without writing the image (--compare): the linear image, with its records (the
+// crop's, and a path integrator's vkrt-samples: image/samples.h); report.gamma encodes it.
+// `checkOutput` also resolves and checks the output path first, as renderSceneFile does.
+RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
                           bool checkOutput, RenderSession* session = nullptr);
 
 // The memory the machine has available now (MemAvailable), or 0 when unknown.

@@ -5,6 +5,7 @@
 // scene7 7 more pixels off the course's reference).
 #include "scene/flatten.h"
 
+#include <algorithm>
 #include <cmath>
 #include <future>
 #include <limits>
@@ -82,6 +83,37 @@ void cutoffConstants(const SceneDesc& scene, gpu::GpuPushConstants& p) {
   };
   p.cutoffBound = {toFloat(bound.x), toFloat(bound.y), toFloat(bound.z), nonNegative ? 1.0f : 0.0f};
   p.cutoffSpecular = {toFloat(specular.x), toFloat(specular.y), toFloat(specular.z), 0.0f};
+}
+
+// The settings of SPEC-PATHTRACING in the shader's terms, and the camera.
+gpu::GpuPathParams pathParams(const SceneDesc& scene, const dvec3& origin) {
+  const PathSettings& s = scene.path;
+  const gpu::GpuPushConstants camera = cameraConstants(scene, origin);
+  gpu::GpuPathParams p{};
+  p.cameraOrigin = camera.cameraOrigin;
+  p.cameraRight = camera.cameraRight;
+  p.cameraUp = camera.cameraUp;
+  p.cameraBack = camera.cameraBack;
+  switch (s.integrator) {
+    case Integrator::Raytracer: p.integrator = gpu::kIntegratorRaytracer; break;
+    case Integrator::AnalyticDirect: p.integrator = gpu::kIntegratorAnalyticDirect; break;
+    case Integrator::Direct: p.integrator = gpu::kIntegratorDirect; break;
+    case Integrator::PathTracer: p.integrator = gpu::kIntegratorPathTracer; break;
+  }
+  p.nextEvent = s.nextEvent == NextEvent::On ? gpu::kNextEventOn
+                : s.nextEvent == NextEvent::Mis ? gpu::kNextEventMis
+                                                : gpu::kNextEventOff;
+  p.sampling = s.sampling == Sampling::Brdf ? gpu::kSamplingBrdf
+               : s.sampling == Sampling::Cosine ? gpu::kSamplingCosine
+                                                : gpu::kSamplingHemisphere;
+  p.russianRoulette = s.russianRoulette ? 1u : 0u;
+  p.maxDepth = scene.maxDepth < 0 ? gpu::kUnlimitedDepth : static_cast<gpu::uint>(scene.maxDepth);
+  p.lightSamples = static_cast<gpu::uint>(std::max(s.lightSamples, 1));
+  // The parser accepts `lightstratify on` only with a perfect square.
+  p.lightStrata = s.lightStratify ? static_cast<gpu::uint>(std::lround(std::sqrt(double(p.lightSamples)))) : 0u;
+  p.quadLightCount = static_cast<gpu::uint>(scene.quadLights.size());
+  p.lightCount = static_cast<gpu::uint>(scene.lights.size());
+  return p;
 }
 
 // Triangles [begin, end) into their GPU layout at the same indices; the normals of smooth
@@ -168,9 +200,24 @@ GpuScene flatten(const SceneDesc& scene) {
     g.lights.push_back(gl);
   }
   for (const Material& m : scene.materials) {
-    g.materials.push_back({f4(m.ambient), f4(m.diffuse), f4(m.specular, static_cast<float>(m.shininess)),
-                           f4(m.emission)});
+    g.materials.push_back({f4(m.ambient, m.brdf == BrdfModel::Ggx ? gpu::kBrdfGgx : gpu::kBrdfPhong),
+                           f4(m.diffuse, static_cast<float>(m.roughness)),
+                           f4(m.specular, static_cast<float>(m.shininess)),
+                           f4(m.emission, m.quadLight >= 0 ? static_cast<float>(m.quadLight) : gpu::kNoQuadLight)});
   }
+  for (const QuadLight& q : scene.quadLights) {
+    const dvec3 across = glm::cross(q.ac, q.ab);   // |cross(ac, ab)| = |cross(ab, ac)|: the area
+    const double area = glm::length(across);
+    gpu::GpuQuadLight gq{};
+    gq.corner = f4(q.a - origin, static_cast<float>(area));
+    gq.edgeAB = f4(q.ab);
+    gq.edgeAC = f4(q.ac);
+    gq.normal = f4(area > 0.0 ? across / area : dvec3(0.0));
+    gq.radiance = f4(q.radiance);
+    g.quadLights.push_back(gq);
+  }
+  g.path = pathParams(scene, origin);
+  g.spp = static_cast<std::uint32_t>(std::max(scene.path.spp, 1));
   return g;
 }
 

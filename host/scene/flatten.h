@@ -18,7 +18,12 @@ struct GpuScene {
   std::vector<gpu::GpuTriangleNormals> triangleNormals;   // only for `trinormal` triangles
   std::vector<gpu::GpuSphere> spheres;
   std::vector<gpu::GpuLight> lights;
-  std::vector<gpu::GpuMaterial> materials;
+  std::vector<gpu::GpuMaterial> materials;   // w fields: BRDF model, roughness, shininess, quad light
+  std::vector<gpu::GpuQuadLight> quadLights;   // scene-centred, as every other position
+  // The path integrators' settings and camera (gpu_types.h); the renderer adds the seed, the
+  // sample range and the camera rule. Meaningless for Integrator::Raytracer.
+  gpu::GpuPathParams path{};
+  std::uint32_t spp = 1;   // the scene's `spp`
   Bvh bvh;
 };
 

@@ -1,4 +1,5 @@
-// Scene file parser: .test text -> SceneDesc (SPEC sections 1, 2, 4 and 8).
+// Scene file parser: .test text -> SceneDesc (SPEC sections 1, 2, 4 and 8; SPEC-PATHTRACING
+// sections 1 and 2).
 // Parser-only state (transform stack, current material, vertex lists) stays in this file.
 #include "scene/parse.h"
 
@@ -16,13 +17,14 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "errors.h"
+#include "image/image_file.h"
 #include "scene/number.h"
 
 namespace vkrt {
 namespace {
 
 constexpr int kMaxErrors = 50;
-constexpr int kMaxArgs = 10;   // camera has the most
+constexpr int kMaxArgs = 12;   // quadLight has the most
 constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 
 // The commands of the format. kCommandNames spells them as the format does, in this order,
@@ -30,12 +32,17 @@ constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
 enum class Command {
   Vertex, Tri, VertexNormal, TriNormal, Size, MaxDepth, Output, Camera, Sphere, MaxVerts, MaxVertNorms,
   Translate, Rotate, Scale, PushTransform, PopTransform, Directional, Point, Attenuation, Ambient, Diffuse,
-  Specular, Emission, Shininess, Count
+  Specular, Emission, Shininess,
+  // SPEC-PATHTRACING section 1
+  Integrator, QuadLight, LightSamples, LightStratify, Spp, NextEventEstimation, RussianRoulette,
+  ImportanceSampling, Brdf, Roughness, Gamma, Count
 };
 constexpr std::string_view kCommandNames[] = {
     "vertex", "tri", "vertexnormal", "trinormal", "size", "maxdepth", "output", "camera", "sphere", "maxverts",
     "maxvertnorms", "translate", "rotate", "scale", "pushTransform", "popTransform", "directional", "point",
-    "attenuation", "ambient", "diffuse", "specular", "emission", "shininess"};
+    "attenuation", "ambient", "diffuse", "specular", "emission", "shininess", "integrator", "quadLight",
+    "lightsamples", "lightstratify", "spp", "nexteventestimation", "russianroulette", "importancesampling", "brdf",
+    "roughness", "gamma"};
 static_assert(std::size(kCommandNames) == static_cast<std::size_t>(Command::Count));
 
 std::string_view nameOf(Command c) { return kCommandNames[static_cast<std::size_t>(c)]; }
@@ -64,12 +71,53 @@ std::optional<Command> commandNamedIgnoringCase(std::string_view name) {
 std::string quoted(std::string_view token) { return "'" + escapedBytes(token) + "'"; }
 
 // The kinds of warning (SPEC section 8); each kind is summarised after kMaxWarningsPerKind.
-enum class WarningKind { UnknownCommand, KeywordCase, ExtraArguments, Repeated, BeforeSize, OutputName, Count };
+enum class WarningKind {
+  UnknownCommand, KeywordCase, ExtraArguments, Repeated, BeforeSize, OutputName, NotForIntegrator, Count
+};
 constexpr const char* kWarningKindNames[] = {
     "unknown commands", "keywords in another case", "extra arguments", "repeated commands",
-    "commands before 'size'", "output names"};
+    "commands before 'size'", "output names", "commands the integrator does not use"};
 static_assert(std::size(kWarningKindNames) == static_cast<std::size_t>(WarningKind::Count));
 constexpr std::size_t kWarningKinds = static_cast<std::size_t>(WarningKind::Count);
+
+// The keyword values of SPEC-PATHTRACING section 1, in the order of their enums.
+constexpr std::string_view kIntegratorNames[] = {"raytracer", "analyticdirect", "direct", "pathtracer"};
+constexpr std::string_view kNextEventNames[] = {"off", "on", "mis"};
+constexpr std::string_view kSamplingNames[] = {"hemisphere", "cosine", "brdf"};
+constexpr std::string_view kBrdfNames[] = {"phong", "ggx"};
+constexpr std::string_view kOnOffNames[] = {"on", "off"};
+
+// Which integrators use a command of SPEC-PATHTRACING section 1 (a bit per Integrator). The
+// others ignore it, with a warning: `raytracer` uses none of them, `analyticdirect` is exact
+// and diffuse (it has no light samples and no BRDF), `direct` follows no paths.
+using IntegratorSet = unsigned;
+constexpr IntegratorSet bit(Integrator i) { return 1u << static_cast<unsigned>(i); }
+constexpr IntegratorSet kAllPath = bit(Integrator::AnalyticDirect) | bit(Integrator::Direct) | bit(Integrator::PathTracer);
+constexpr IntegratorSet kSampled = bit(Integrator::Direct) | bit(Integrator::PathTracer);
+constexpr IntegratorSet kPathsOnly = bit(Integrator::PathTracer);
+
+IntegratorSet integratorsUsing(Command c) {
+  switch (c) {
+    case Command::QuadLight:
+    case Command::Spp:
+    case Command::Gamma: return kAllPath;
+    case Command::LightSamples:
+    case Command::LightStratify:
+    case Command::Brdf:
+    case Command::Roughness: return kSampled;
+    case Command::NextEventEstimation:
+    case Command::RussianRoulette:
+    case Command::ImportanceSampling: return kPathsOnly;
+    default: return ~0u;
+  }
+}
+
+std::string_view nameOf(Integrator i) { return kIntegratorNames[static_cast<std::size_t>(i)]; }
+
+bool isPerfectSquare(int n) {
+  int r = static_cast<int>(std::lround(std::sqrt(static_cast<double>(n))));
+  return r * r == n;
+}
 
 // What each byte is to the tokenizer: one table lookup per byte.
 enum ByteClass : unsigned char { kToken, kBlank, kComment, kBinary };
@@ -241,6 +289,7 @@ class Parser {
       beforeSizeLine_ = line_;
       beforeSizeCommand_ = nameOf(*cmd);
     }
+    if (integratorsUsing(*cmd) != ~0u) integratorCommands_.push_back({*cmd, line_});
     switch (*cmd) {
       case Command::Vertex: return cmdVertex();
       case Command::Tri: return cmdTri();
@@ -266,11 +315,28 @@ class Parser {
       case Command::Specular: return cmdColor("specular", material_.specular);
       case Command::Emission: return cmdColor("emission", material_.emission);
       case Command::Shininess: return cmdShininess();
+      case Command::Integrator: return cmdIntegrator();
+      case Command::QuadLight: return cmdQuadLight();
+      case Command::LightSamples:
+        if (cmdSampleCount(*cmd, scene_.path.lightSamples)) lightSamplesLine_ = line_;
+        return;
+      case Command::Spp: return static_cast<void>(cmdSampleCount(*cmd, scene_.path.spp));
+      case Command::LightStratify:
+        if (cmdOnOff(*cmd, scene_.path.lightStratify)) lightStratifyLine_ = scene_.path.lightStratify ? line_ : 0;
+        return;
+      case Command::RussianRoulette: return static_cast<void>(cmdOnOff(*cmd, scene_.path.russianRoulette));
+      case Command::NextEventEstimation:
+        return static_cast<void>(cmdKeyword(*cmd, kNextEventNames, scene_.path.nextEvent));
+      case Command::ImportanceSampling:
+        return static_cast<void>(cmdKeyword(*cmd, kSamplingNames, scene_.path.sampling));
+      case Command::Brdf: return static_cast<void>(cmdKeyword(*cmd, kBrdfNames, material_.brdf));
+      case Command::Roughness: return cmdRoughness();
+      case Command::Gamma: return cmdGamma();
       case Command::Count: break;
     }
   }
 
-  // A repeated `size`, `camera`, `maxdepth` or `output`: the last one counts. `previousLine`
+  // A repeated `size`, `camera`, `maxdepth`, `output` or `integrator`: the last one counts. `previousLine`
   // is the line of the one before (0: none).
   void noteRepeat(std::string_view cmd, int previousLine) {
     if (previousLine > 0)
@@ -351,8 +417,11 @@ class Parser {
     noteRepeat("maxdepth", maxDepthLine_);
     maxDepthLine_ = line_;
     if (!numbers("maxdepth", 1, "depth", a)) return;
-    if (auto d = integer("maxdepth", a[0], 0, "a non-negative integer", 0, 1'000'000))
+    // -1 (no limit) is for the path integrators; the integrator is known at the end of file.
+    if (auto d = integer("maxdepth", a[0], 0, "a non-negative integer, or -1 (no limit)", -1, 1'000'000)) {
       scene_.maxDepth = static_cast<int>(*d);
+      unlimitedDepthLine_ = *d == -1 ? line_ : 0;
+    }
   }
 
   void cmdOutput() {
@@ -364,10 +433,7 @@ class Parser {
     }
     ignoreExtraArguments("output", 1, usage);
     std::string_view name = args_[0];
-    std::string_view base = name.substr(name.find_last_of('/') + 1);   // npos + 1 == 0
-    std::size_t dot = base.rfind('.');
-    if (dot == std::string_view::npos ||
-        !(equalIgnoringCase(base.substr(dot + 1), "png") || equalIgnoringCase(base.substr(dot + 1), "ppm")))
+    if (!hasImageExtension(std::string(name)))
       warn(WarningKind::OutputName, "output file " + quoted(name) +
                                         " is not named .png or .ppm: vkrt writes PNG, under that name");
     scene_.output = std::string(name);
@@ -581,6 +647,165 @@ class Parser {
     material_.shininess = a[0];
   }
 
+  // ---- path tracing (SPEC-PATHTRACING section 1) ----------------------------------------------
+  // Reads one keyword argument of `names` into `value` (an enum in the order of `names`). A
+  // keyword in another case is read as that keyword, with a warning, as commands are.
+  template <typename Enum, std::size_t N>
+  bool cmdKeyword(Command cmd, const std::string_view (&names)[N], Enum& value) {
+    std::string usage;
+    for (std::size_t i = 0; i < N; ++i) usage += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + std::string(names[i]);
+    std::string name(nameOf(cmd));
+    if (argCount_ < 1) {
+      error("'" + name + "' expects 1 argument (" + usage + "), got 0");
+      return false;
+    }
+    ignoreExtraArguments(name, 1, usage.c_str());
+    for (std::size_t i = 0; i < N; ++i) {
+      if (names[i] == args_[0]) {
+        value = static_cast<Enum>(i);
+        return true;
+      }
+    }
+    for (std::size_t i = 0; i < N; ++i) {
+      if (equalIgnoringCase(names[i], args_[0])) {
+        warn(WarningKind::KeywordCase,
+             quoted(args_[0]) + " read as '" + std::string(names[i]) + "' (keywords are case-sensitive)");
+        value = static_cast<Enum>(i);
+        return true;
+      }
+    }
+    error("'" + name + "' argument 1: expected " + usage + ", got " + quoted(args_[0]));
+    return false;
+  }
+
+  bool cmdOnOff(Command cmd, bool& value) {
+    int v = value ? 0 : 1;   // the index in kOnOffNames
+    if (!cmdKeyword(cmd, kOnOffNames, v)) return false;
+    value = v == 0;
+    return true;
+  }
+
+  void cmdIntegrator() {
+    noteRepeat("integrator", integratorLine_);
+    Integrator i = scene_.path.integrator;
+    if (cmdKeyword(Command::Integrator, kIntegratorNames, i)) {
+      scene_.path.integrator = i;
+      integratorLine_ = line_;
+    }
+  }
+
+  // `spp`, `lightsamples`: a count of samples, at least 1.
+  bool cmdSampleCount(Command cmd, int& value) {
+    double a[1];
+    std::string name(nameOf(cmd));
+    if (!numbers(name, 1, "N", a)) return false;
+    auto n = integer(name, a[0], 0, "an integer from 1 to 1000000000", 1, 1'000'000'000);
+    if (n) value = static_cast<int>(*n);
+    return n.has_value();
+  }
+
+  void cmdRoughness() {
+    double a[1];
+    if (!numbers("roughness", 1, "alpha", a)) return;
+    if (a[0] < 0.0) return error("roughness must not be negative, got " + quoted(args_[0]));
+    material_.roughness = a[0];
+  }
+
+  void cmdGamma() {
+    double a[1];
+    if (!numbers("gamma", 1, "g", a)) return;
+    if (!(a[0] > 0.0)) return error("gamma must be positive, got " + quoted(args_[0]));
+    scene_.path.gamma = a[0];
+  }
+
+  // The light is kept here and becomes geometry at the end of file, when the integrator is
+  // known (under `raytracer` it is ignored).
+  void cmdQuadLight() {
+    double a[12];
+    if (!numbers("quadLight", 12, "ax ay az abx aby abz acx acy acz r g b", a)) return;
+    QuadLight q;
+    dvec3 corner{a[0], a[1], a[2]}, ab{a[3], a[4], a[5]}, ac{a[6], a[7], a[8]};
+    q.a = toWorldPoint(corner);
+    q.ab = toWorldPoint(corner + ab) - q.a;
+    q.ac = toWorldPoint(corner + ac) - q.a;
+    q.radiance = {a[9], a[10], a[11]};
+    q.line = line_;
+    if (glm::cross(q.ac, q.ab) == dvec3(0.0))
+      return error("degenerate quadLight: its sides ab and ac span no area" +
+                   std::string(transform_ == dmat4(1.0) ? "" : " (under the current transform)"));
+    pendingQuadLights_.push_back(q);
+  }
+
+  // What the integrator, known only now, does not use is ignored, with a warning at its line;
+  // quad lights become two triangles each.
+  void applyIntegrator() {
+    const Integrator integrator = scene_.path.integrator;
+    const std::string which = "integrator " + std::string(nameOf(integrator)) +
+                              (integratorLine_ > 0 ? " (line " + std::to_string(integratorLine_) + ")" : " (the default)");
+    IntegratorSet ignored = 0;   // bits per Command
+    for (const auto& [cmd, line] : integratorCommands_) {
+      if (integratorsUsing(cmd) & bit(integrator)) continue;
+      ignored |= 1u << (static_cast<unsigned>(cmd) - static_cast<unsigned>(Command::Integrator));
+      std::string why = cmd == Command::QuadLight && integrator == Integrator::Raytracer
+                            ? " (the Whitted model has no area lights)"
+                            : "";
+      warnAt(line, WarningKind::NotForIntegrator,
+             "'" + std::string(nameOf(cmd)) + "' ignored: " + which + " does not use it" + why);
+    }
+    auto isIgnored = [&](Command c) {
+      return (ignored >> (static_cast<unsigned>(c) - static_cast<unsigned>(Command::Integrator))) & 1u;
+    };
+    // An ignored setting keeps the format's default, so that the scene says what is rendered.
+    const PathSettings defaults;
+    const Material defaultMaterial;
+    if (isIgnored(Command::Spp)) scene_.path.spp = defaults.spp;
+    if (isIgnored(Command::Gamma)) scene_.path.gamma = defaults.gamma;
+    if (isIgnored(Command::LightSamples)) scene_.path.lightSamples = defaults.lightSamples;
+    if (isIgnored(Command::LightStratify)) scene_.path.lightStratify = defaults.lightStratify;
+    if (isIgnored(Command::NextEventEstimation)) scene_.path.nextEvent = defaults.nextEvent;
+    if (isIgnored(Command::RussianRoulette)) scene_.path.russianRoulette = defaults.russianRoulette;
+    if (isIgnored(Command::ImportanceSampling)) scene_.path.sampling = defaults.sampling;
+    for (Material& m : scene_.materials) {
+      if (isIgnored(Command::Brdf)) m.brdf = defaultMaterial.brdf;
+      if (isIgnored(Command::Roughness)) m.roughness = defaultMaterial.roughness;
+    }
+
+    // `lightstratify on` cuts the light into sqrt(N) x sqrt(N) cells.
+    if (lightStratifyLine_ > 0 && !isIgnored(Command::LightStratify) && !isPerfectSquare(scene_.path.lightSamples))
+      errorAt(lightStratifyLine_, "'lightstratify on' needs a perfect square 'lightsamples', got " +
+                                      std::to_string(scene_.path.lightSamples) + " (line " +
+                                      std::to_string(lightSamplesLine_) + ")");
+
+    // -1 (no limit) means nothing to the Whitted model: primary hit plus D reflections.
+    if (unlimitedDepthLine_ > 0 && integrator == Integrator::Raytracer)
+      errorAt(unlimitedDepthLine_, "'maxdepth' argument 1: expected a non-negative integer, got '-1': -1 (no limit) "
+                                   "is for the path integrators, and " + which + " is the Whitted model");
+
+    if (isIgnored(Command::QuadLight)) return;
+    for (const QuadLight& q : pendingQuadLights_) addQuadLight(q);
+  }
+
+  // The light, its own material (emission L and nothing else), and two triangles a, a+ac,
+  // a+ab+ac and a, a+ab+ac, a+ab: each has face normal cross(p1 - p0, p2 - p0) along
+  // cross(ac, ab), the side that emits.
+  void addQuadLight(const QuadLight& q) {
+    const int index = static_cast<int>(scene_.quadLights.size());
+    scene_.quadLights.push_back(q);
+    Material m;
+    m.ambient = m.diffuse = m.specular = dvec3(0.0);
+    m.emission = q.radiance;
+    m.quadLight = index;
+    scene_.materials.push_back(m);
+    const auto material = static_cast<std::uint32_t>(scene_.materials.size() - 1);
+    const dvec3 a = q.a, b = q.a + q.ab, c = q.a + q.ab + q.ac, d = q.a + q.ac;
+    for (const auto& corners : {std::array<dvec3, 3>{a, d, c}, std::array<dvec3, 3>{a, c, b}}) {
+      Triangle t;
+      for (int k = 0; k < 3; ++k) t.p[k] = corners[k];
+      t.material = material;
+      scene_.triangles.push_back(t);
+    }
+  }
+
   // ---- end of file ------------------------------------------------------------------------
   void finish() {
     int last = line_ > 0 ? line_ : 1;
@@ -591,6 +816,7 @@ class Parser {
       warnAt(beforeSizeLine_, WarningKind::BeforeSize,
              "'" + std::string(beforeSizeCommand_) + "' before 'size' (line " + std::to_string(firstSizeLine_) +
                  "): accepted, though the format puts 'size' first");
+    applyIntegrator();
     // Unbalanced pushTransforms at the end are valid (SPEC section 8).
   }
 
@@ -606,6 +832,15 @@ class Parser {
   int firstSizeLine_ = 0;
   int cameraLine_ = 0, maxDepthLine_ = 0;   // 0: not seen yet (the scene keeps the others)
   int beforeSizeLine_ = 0;                  // the first command before `size`
+  int integratorLine_ = 0, lightSamplesLine_ = 0;
+  int lightStratifyLine_ = 0;               // of the last `lightstratify`, when it said `on`
+  int unlimitedDepthLine_ = 0;              // of the last `maxdepth`, when it said -1
+  struct CommandLine {
+    Command command;
+    int line;
+  };
+  std::vector<CommandLine> integratorCommands_;   // the commands of SPEC-PATHTRACING section 1 but `integrator`
+  std::vector<QuadLight> pendingQuadLights_;
   std::string_view beforeSizeCommand_;
   const std::string_view* args_ = nullptr;
   int argCount_ = 0;

@@ -13,12 +13,23 @@ namespace vkrt {
 using glm::dmat4;
 using glm::dvec3;
 
+// SPEC-PATHTRACING section 1: the algorithm, and the path integrators' settings.
+enum class Integrator { Raytracer, AnalyticDirect, Direct, PathTracer };
+enum class NextEvent { Off, On, Mis };
+enum class Sampling { Hemisphere, Cosine, Brdf };
+enum class BrdfModel { Phong, Ggx };
+
 struct Material {
   dvec3 ambient{0.2, 0.2, 0.2};
   dvec3 diffuse{0.0};
   dvec3 specular{0.0};
   dvec3 emission{0.0};
   double shininess = 0.0;
+  BrdfModel brdf = BrdfModel::Phong;   // `brdf` (path integrators only)
+  double roughness = 0.0;              // `roughness`: GGX alpha, used unsquared
+  // The quad light (index into SceneDesc::quadLights) whose two triangles have this material:
+  // they emit that light's radiance on its front side only, and are black otherwise. -1: none.
+  int quadLight = -1;
   bool operator==(const Material&) const = default;
 };
 
@@ -46,6 +57,29 @@ struct Light {
   dvec3 attenuation{1, 0, 0};    // constant, linear, quadratic; used by point lights only
 };
 
+// `quadLight a ab ac L` (SPEC-PATHTRACING section 2), world space: the parallelogram with
+// corners a, a+ab, a+ab+ac, a+ac, emitting radiance L on the side of n = normalize(cross(ac, ab)).
+// It is also geometry: two triangles of SceneDesc::triangles, wound so that their face normal
+// is n, whose material has quadLight set to this light's index.
+struct QuadLight {
+  dvec3 a{0.0}, ab{0.0}, ac{0.0};
+  dvec3 radiance{0.0};
+  int line = 0;                  // the `quadLight` line (for messages)
+};
+
+// The path integrators' settings (SPEC-PATHTRACING sections 1 and 4); the defaults are the
+// format's. Ignored by Integrator::Raytracer.
+struct PathSettings {
+  Integrator integrator = Integrator::Raytracer;
+  int spp = 1;                   // camera samples per pixel
+  int lightSamples = 1;          // per quad light per shading point
+  bool lightStratify = false;    // lightSamples is then a perfect square
+  NextEvent nextEvent = NextEvent::Off;
+  bool russianRoulette = false;
+  Sampling sampling = Sampling::Hemisphere;
+  double gamma = 1.0;            // output encoding: byte = floor(255 clamp(L^(1/gamma), 0, 1))
+};
+
 struct Camera {
   dvec3 from{0.0}, at{0.0, 0.0, -1.0}, up{0.0, 1.0, 0.0};
   double fovyDegrees = 45.0;
@@ -55,7 +89,9 @@ struct SceneDesc {
   std::string sourcePath;        // the file as named by the user (for messages)
   int width = 0, height = 0;
   int sizeLine = 0;              // line of the `size` command
-  int maxDepth = 5;              // primary hit plus up to maxDepth mirror reflections
+  // Raytracer: primary hit plus up to maxDepth mirror reflections. Path integrators: light
+  // paths of at most maxDepth + 1 segments (SPEC-PATHTRACING section 4); -1 = no limit.
+  int maxDepth = 5;
   std::string output = "raytrace.png";
   int outputLine = 0;            // line of the `output` command, 0 when defaulted
   Camera camera;
@@ -63,6 +99,8 @@ struct SceneDesc {
   std::vector<Triangle> triangles;
   std::vector<Sphere> spheres;
   std::vector<Light> lights;
+  std::vector<QuadLight> quadLights;
+  PathSettings path;
 };
 
 }  // namespace vkrt

@@ -12,10 +12,12 @@ using vec4 = glm::vec4;
 using mat4 = glm::mat4;
 using uint = std::uint32_t;
 #  define GPU_CONST inline constexpr
+#  define GPU_FN inline
 #  define GPU_ASSERT_SIZE(T, n) static_assert(sizeof(T) == (n), #T " size drifted");
 #  define GPU_ASSERT_OFFSET(T, m, n) static_assert(offsetof(T, m) == (n), #T "." #m " moved");
 #else
 #  define GPU_CONST const
+#  define GPU_FN
 #  define GPU_ASSERT_SIZE(T, n)
 #  define GPU_ASSERT_OFFSET(T, m, n)
 #endif
@@ -107,13 +109,106 @@ struct GpuLight {
 GPU_ASSERT_SIZE(GpuLight, 48)
 
 struct GpuMaterial {
-  vec4 ambient;             // rgb, w unused
-  vec4 diffuse;             // rgb, w unused
+  vec4 ambient;             // rgb, w = the BRDF model: kBrdfPhong or kBrdfGgx (path integrators)
+  vec4 diffuse;             // rgb, w = GGX roughness (alpha, unsquared)
   vec4 specular;            // rgb, w = shininess
-  vec4 emission;            // rgb, w unused
+  vec4 emission;            // rgb, w = the quad light these triangles make (index), or kNoQuadLight
 };
 GPU_ASSERT_SIZE(GpuMaterial, 64)
 GPU_ASSERT_OFFSET(GpuMaterial, specular, 32)
+
+GPU_CONST float kBrdfPhong = 0.0f;
+GPU_CONST float kBrdfGgx = 1.0f;
+GPU_CONST float kNoQuadLight = -1.0f;   // GpuMaterial.emission.w of a surface that is no quad light
+
+// `quadLight` (SPEC-PATHTRACING section 2), in the scene-centred frame: the parallelogram
+// a + u ab + v ac, u, v in [0, 1], emitting `radiance` on the side of n = normalize(cross(ac, ab)).
+// Its two triangles are also in the triangle array, with a material whose emission.w names it.
+struct GpuQuadLight {
+  vec4 corner;              // xyz = a, w = area |cross(ab, ac)|
+  vec4 edgeAB;              // xyz = ab, w unused
+  vec4 edgeAC;              // xyz = ac, w unused
+  vec4 normal;              // xyz = n, w unused
+  vec4 radiance;            // rgb = L, w unused
+};
+GPU_ASSERT_SIZE(GpuQuadLight, 80)
+GPU_CONST uint kQuadLightTexels = 5u;   // RGBA32UI texels of one GpuQuadLight (texel-buffer reads)
+
+// Path integrators (SPEC-PATHTRACING sections 3-4); the ids the shader and the host share.
+GPU_CONST uint kIntegratorRaytracer = 0u;
+GPU_CONST uint kIntegratorAnalyticDirect = 1u;
+GPU_CONST uint kIntegratorDirect = 2u;
+GPU_CONST uint kIntegratorPathTracer = 3u;
+GPU_CONST uint kNextEventOff = 0u;
+GPU_CONST uint kNextEventOn = 1u;
+GPU_CONST uint kNextEventMis = 2u;
+GPU_CONST uint kSamplingHemisphere = 0u;
+GPU_CONST uint kSamplingCosine = 1u;
+GPU_CONST uint kSamplingBrdf = 2u;
+
+// ---- Random numbers: a counter-based generator ------------------------------------------------
+// The number for (seed, pixel, sample, dimension) is a hash of the four: a render is
+// reproducible bit for bit whatever the order in which pixels and samples are computed, a
+// crop draws the numbers of the full image (pixel = y * full width + x), sample batches of
+// one render draw different numbers (sample counts from the render's first sample), and the
+// CPU reference and the shader draw the same numbers for the same path.
+// Dimensions: kRngPixelX/Y jitter the camera ray inside its pixel; each path vertex (bounce
+// b = 0 at the primary hit) then uses b * kRngBounceStride + a slot:
+GPU_CONST uint kRngPixelX = 0u;
+GPU_CONST uint kRngPixelY = 1u;
+GPU_CONST uint kRngBounceStride = 65536u;
+GPU_CONST uint kRngBounceBase = 2u;           // + b * kRngBounceStride
+GPU_CONST uint kRngSlotDirectionU = 0u;       // the next direction (two numbers)
+GPU_CONST uint kRngSlotDirectionV = 1u;
+GPU_CONST uint kRngSlotLobe = 2u;             // which lobe of a BRDF-sampling mixture
+GPU_CONST uint kRngSlotRoulette = 3u;         // Russian roulette
+GPU_CONST uint kRngSlotLightBase = 4u;        // + 2 * (light * lightsamples + k): a light sample's u, v
+
+// How each backend turns these numbers into a path (each written on its own, to these rules,
+// so that the same seed gives the same paths up to float rounding):
+//  - Camera: a render of spp 1 samples the pixel centre (SPEC section 3); otherwise sample s
+//    of pixel (x, y) is at (x + u, y + v), u, v = kRngPixelX, kRngPixelY, instead of +0.5.
+//  - A frame around a unit axis n: a = |n.x| > 0.9 ? (0, 1, 0) : (1, 0, 0),
+//    t = normalize(cross(a, n)), b = cross(n, t); local (x, y, z) is x t + y b + z n.
+//  - With u, v = the direction slots of the vertex: hemisphere: z = u, phi = 2 pi v;
+//    cosine: z = sqrt(1 - u), sin = sqrt(u), phi = 2 pi v; Phong lobe: z = u^(1 / (s + 1))
+//    around r; GGX: theta_h = atan(alpha sqrt(u) / sqrt(1 - u)), phi = 2 pi v, around n, and
+//    w_i = 2 (w_o . h) h - w_o; (x, y) = sin(theta) (cos phi, sin phi).
+//  - BRDF sampling picks the specular lobe when the kRngSlotLobe number is below t
+//    (SPEC-PATHTRACING section 4).
+//  - Light sample k of N of quad light j: (s, t) = (u, v) of its two slots; stratified:
+//    ((k % m + u) / m, (k / m + v) / m), m = sqrt(N); the point a + s ab + t ac.
+//  - Russian roulette continues when the kRngSlotRoulette number is below p.
+//  - Bounce b is 0 at the camera ray's hit and grows by one at each scatter.
+
+// "lowbias32" (C. Wellons, 2018): an integer hash with small bias, cheap on any ISA.
+GPU_FN uint rngHash(uint x) {
+  x ^= x >> 16u;
+  x *= 0x7feb352du;
+  x ^= x >> 15u;
+  x *= 0x846ca68bu;
+  x ^= x >> 16u;
+  return x;
+}
+
+// The hash of (seed, pixel, sample): what the numbers of one sample share (a shader computes
+// it once per sample).
+GPU_FN uint rngSampleKey(uint seed, uint pixel, uint sampleIndex) {
+  return rngHash(sampleIndex + rngHash(pixel + rngHash(seed)));
+}
+
+// The number of `dimension` in the sample whose key is `key`: rngUniform's, bit for bit.
+GPU_FN float rngUniformKeyed(uint key, uint dimension) {
+  return float(rngHash(dimension + key) >> 8u) * 5.9604644775390625e-8f;   // 2^-24
+}
+
+// A uniform number in [0, 1): 24 random bits, so it is exact in float and never 1.
+GPU_FN float rngUniform(uint seed, uint pixel, uint sampleIndex, uint dimension) {
+  return rngUniformKeyed(rngSampleKey(seed, pixel, sampleIndex), dimension);
+}
+
+// The dimension of `slot` at path vertex `bounce`.
+GPU_FN uint rngDimension(uint bounce, uint slot) { return kRngBounceBase + bounce * kRngBounceStride + slot; }
 
 struct GpuBvhNode {         // axis-aligned box, rounded outward to float
   float minX, minY, minZ;
@@ -135,7 +230,7 @@ GPU_CONST uint kBindingLights = 3u;
 GPU_CONST uint kBindingMaterials = 4u;
 GPU_CONST uint kBindingBvhNodes = 5u;
 GPU_CONST uint kBindingPrimRefs = 6u;
-GPU_CONST uint kBindingPixels = 7u;       // output: one packed RGBA8 uint per pixel of the band
+GPU_CONST uint kBindingPixels = 7u;       // output: one vec4 per pixel of the band, rgb = linear radiance, w = 1 when done (0: suspended)
 GPU_CONST uint kBindingPathStates = 8u;   // suspended pixels' state, one GpuPathState per pixel of the band
 GPU_CONST uint kBindingCounters = 9u;     // GpuCounters
 GPU_CONST uint kBindingParams = 10u;      // GpuRenderParams (a uniform buffer)
@@ -262,6 +357,91 @@ GPU_ASSERT_OFFSET(GpuPathState, phase, 128)
 GPU_ASSERT_OFFSET(GpuPathState, stack, 160)
 
 GPU_CONST uint kNoHit = 0xFFFFFFFFu;
+
+// ---- pathtrace.comp: the path integrators (SPEC-PATHTRACING sections 2-4) ----------------------
+// It reads the scene at the bindings of raytrace.comp (kBindingTriangles .. kBindingPrimRefs),
+// and shares kBindingPathStates, kBindingCounters and kBindingParams (GpuRenderParams: sizes,
+// bands, tiles, the BVH root) with it. At kBindingPixels it adds each pixel's samples into a
+// vec4 (rgb = sum of the samples' radiance, w = 1 once the pixel's samples are all done).
+GPU_CONST uint kBindingQuadLights = 11u;   // GpuQuadLight[] (a texel buffer with the texel reads)
+GPU_CONST uint kBindingPathParams = 12u;   // GpuPathParams (a uniform buffer)
+GPU_CONST uint kPathBindingCount = 13u;
+
+// Its specialization constants: ids 0-5 mean what kSpecHasTriangles .. kSpecHasAttenuation do.
+GPU_CONST uint kPathSpecHasQuadLights = 6u;
+GPU_CONST uint kPathSpecHasGgx = 7u;          // some material has `brdf ggx`
+GPU_CONST uint kPathSpecCount = 8u;
+
+// GpuPathParams.maxDepth of `maxdepth -1`: no limit, only Russian roulette ends a path...
+GPU_CONST uint kUnlimitedDepth = 0xFFFFFFFFu;
+// ...or this many bounces (maxdepth -1 without Russian roulette in a closed scene of albedo 1
+// has no end): where the generator's dimensions, bounce * kRngBounceStride, would wrap.
+GPU_CONST uint kMaxBounces = 0xFFFFFFFFu / kRngBounceStride - 1u;
+// A shadow ray toward a point x' on a quad light ends at this fraction of |x' - x|, so that
+// the light's own triangles (at t = |x' - x|, up to rounding) never block it.
+GPU_CONST float kQuadShadowSpan = 0.9990234375f;   // 1 - 2^-10
+
+// One render's path settings, camera and sample range (a uniform buffer; std140 and std430
+// agree: vec4 and uint members only).
+struct GpuPathParams {
+  vec4 cameraOrigin;        // as GpuPushConstants: look-from, scene-centred frame
+  vec4 cameraRight;         // one pixel to the right
+  vec4 cameraUp;            // one pixel up
+  vec4 cameraBack;          // normalize(from - at)
+  uint integrator;          // kIntegratorAnalyticDirect, kIntegratorDirect or kIntegratorPathTracer
+  uint nextEvent;           // kNextEventOff, On or Mis
+  uint sampling;            // kSamplingHemisphere, Cosine or Brdf
+  uint russianRoulette;     // 0 or 1
+  uint maxDepth;            // SPEC-PATHTRACING section 4's D, or kUnlimitedDepth
+  uint lightSamples;        // N per quad light per shading point
+  uint lightStrata;         // sqrt(N) with `lightstratify on`, else 0
+  uint quadLightCount;
+  uint lightCount;          // point and directional lights
+  uint seed;
+  uint firstSample;         // this render's samples are [firstSample, firstSample + sampleCount)
+  uint sampleCount;
+  uint jitter;              // 0: every sample through the pixel centre (a render of spp 1); 1: uniform in the pixel
+  uint pad0, pad1, pad2;    // size 128
+};
+GPU_ASSERT_SIZE(GpuPathParams, 128)
+GPU_ASSERT_OFFSET(GpuPathParams, integrator, 64)
+GPU_ASSERT_OFFSET(GpuPathParams, maxDepth, 80)
+GPU_ASSERT_OFFSET(GpuPathParams, seed, 100)
+GPU_ASSERT_OFFSET(GpuPathParams, jitter, 112)
+
+struct GpuPathPush {
+  uint bandY0;              // first image row of this band
+  uint resume;              // 0: every pixel starts its samples; 1: continue suspended pixels
+  uint pad0, pad1;
+};
+GPU_ASSERT_SIZE(GpuPathPush, 16)
+
+// Everything a suspended pixel of pathtrace.comp needs to continue where it stopped.
+struct GpuPathTracerState {
+  vec4 origin;              // current ray (camera or scattered): xyz origin, w = tMin
+  vec4 direction;           // xyz unit direction, w = nearest t so far
+  vec4 throughput;          // rgb path throughput T, w = barycentric b1 of the nearest hit
+  vec4 radiance;            // rgb radiance of this sample so far, w = barycentric b2
+  vec4 pixelSum;            // rgb sum of the pixel's finished samples, w = pdf of the last scatter (MIS)
+  vec4 hitPoint;            // xyz of the shaded hit, w = the offset of its secondary rays
+  vec4 hitNormal;           // xyz unit shading normal, w = kGrazingPerMagnitude * the hit's magnitude
+  vec4 shadowDir;           // xyz shadow ray direction, w = its tMax
+  vec4 pending;             // rgb what the shadow ray adds when nothing blocks it, w = cos at the hit
+  uint phase;               // kPhaseTrace, kPhaseLight, kPhaseShadow or kPhaseDone
+  uint bounce;              // path vertex: 0 at the camera ray's hit
+  uint lightIndex;          // the next light sample of the vertex (quad lights' samples, then lights)
+  uint stackSize;
+  uint hitPrim;             // primRef of the nearest hit so far, or kNoHit
+  uint hitMaterial;
+  uint sampleIndex;         // samples of this render finished
+  uint pad0;                // size 176
+  uint stack[kTraversalStackSize];
+  float stackT[kTraversalStackSize];   // saved too, so that a resumed traversal is the same
+};
+GPU_ASSERT_SIZE(GpuPathTracerState, 176 + 8 * 96)
+GPU_ASSERT_OFFSET(GpuPathTracerState, phase, 144)
+GPU_ASSERT_OFFSET(GpuPathTracerState, stack, 176)
+GPU_ASSERT_OFFSET(GpuPathTracerState, stackT, 176 + 4 * 96)
 
 #ifdef __cplusplus
 }  // namespace gpu

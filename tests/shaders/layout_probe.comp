@@ -15,6 +15,8 @@ layout(std430, binding = 4) readonly buffer Materials { GpuMaterial materials[];
 layout(std430, binding = 5) readonly buffer BvhNodes { GpuBvhNode nodes[]; };
 layout(std140, binding = 6) uniform Params { GpuRenderParams params; };   // as raytrace.comp reads it
 layout(std430, binding = 7) writeonly buffer Out { uint words[]; };
+layout(std430, binding = 8) readonly buffer QuadLights { GpuQuadLight quadLights[]; };
+layout(std140, binding = 9) uniform PathParams { GpuPathParams pathParams; };   // as pathtrace.comp reads it
 
 uint n = 0u;
 void put(float f) { words[n++] = floatBitsToUint(f); }
@@ -41,4 +43,12 @@ void main() {
   put(p.width); put(p.height); put(p.maxDepth); put(p.lightCount); put(p.stepBudget); put(p.bandHeight);
   put(p.tilesX); put(p.tileOrderStride); put(p.primCount); put(p.rootEntry);
   put(p.originX); put(p.originY); put(p.fullWidth); put(p.fullHeight); put(p.pad0); put(p.pad1);
+  GpuQuadLight q = quadLights[1];
+  put(q.corner); put(q.edgeAB); put(q.edgeAC); put(q.normal); put(q.radiance);
+  GpuPathParams pp = pathParams;
+  put(pp.cameraOrigin); put(pp.cameraRight); put(pp.cameraUp); put(pp.cameraBack);
+  put(pp.integrator); put(pp.nextEvent); put(pp.sampling); put(pp.russianRoulette);
+  put(pp.maxDepth); put(pp.lightSamples); put(pp.lightStrata); put(pp.quadLightCount);
+  put(pp.lightCount); put(pp.seed); put(pp.firstSample); put(pp.sampleCount);
+  put(pp.jitter); put(pp.pad0); put(pp.pad1); put(pp.pad2);
 }

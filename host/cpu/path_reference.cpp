@@ -1,0 +1,513 @@
+// The path integrators on the CPU. One path's loop follows pbrt-v4's PathIntegrator::Li: the
+// throughput `beta`, next-event estimation at each vertex, BRDF sampling for the next
+// direction, MIS weights by the power heuristic, then Russian roulette. Double precision; the
+// random numbers are gpu_types.h's, drawn by its rules ("How each backend turns these numbers
+// into a path").
+#include "cpu/path_reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "cpu/path_brdf.h"
+#include "cpu/scene_query.h"
+#include "gpu_types.h"
+
+namespace vkrt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kTile = 16;
+// maxdepth -1 without Russian roulette has no end in a closed scene of albedo 1: paths stop
+// after this many bounces (where the generator's dimensions, bounce * kRngBounceStride, would
+// wrap around 2^32).
+constexpr std::uint32_t kMaxBounces = 0xFFFFFFFFu / gpu::kRngBounceStride - 1u;
+
+// A quad light as the integrators sample it.
+struct AreaLight {
+  dvec3 a, ab, ac;
+  dvec3 normal;            // n_L = normalize(cross(ac, ab)): the emitting side
+  double area = 0.0;       // |cross(ab, ac)|
+  dvec3 radiance;
+  int triangle = -1;       // one of its two triangles (for the shadow rays' offset at its end), or -1
+};
+
+// Emissive triangles and spheres (`emission`, not quad lights) as one more light for
+// next-event estimation (beyond the course; issue item 6): each light sample picks one of
+// them with probability proportional to area x sum(|emission|), then a point uniform in area
+// on it. Its numbers follow the quad lights' (gpu_types.h leaves them to us): sample k of N
+// takes the point's (u, v) from the pair of light index Q (the quad lights' count), slots
+// kRngSlotLightBase + 2 (Q N + k) and + 1, and the pick from slot kRngSlotLightBase + 2 (Q + 1) N + k.
+struct EmitterPoint {
+  dvec3 x;                 // the point
+  dvec3 normal;            // unit geometric normal there (emission is two-sided)
+  double areaPdf = 0.0;    // density per unit world area of choosing this point, given its primitive
+};
+
+// The random numbers of one camera sample (gpu_types.h): keyed by seed, pixel, sample.
+struct SampleNumbers {
+  std::uint32_t seed, pixel, sample;
+  double at(std::uint32_t dimension) const { return gpu::rngUniform(seed, pixel, sample, dimension); }
+  double at(std::uint32_t bounce, std::uint32_t slot) const { return at(gpu::rngDimension(bounce, slot)); }
+};
+
+// A scattering point of a path.
+struct Vertex {
+  dvec3 p, n, wo;          // point, unit normal (not flipped), unit direction toward the viewer
+  const Material* m;
+  SecondaryRayOffsets offset;
+};
+
+double powerHeuristic(double pdfA, double pdfB) {
+  const double a2 = pdfA * pdfA, b2 = pdfB * pdfB;
+  return a2 + b2 > 0.0 ? a2 / (a2 + b2) : 0.0;
+}
+
+class PathIntegrator {
+ public:
+  PathIntegrator(const SceneDesc& scene, const Bvh& bvh) : scene_(scene), query_(scene, bvh) {
+    for (const QuadLight& q : scene.quadLights) {
+      dvec3 c = glm::cross(q.ac, q.ab);
+      lights_.push_back({q.a, q.ab, q.ac, glm::normalize(c), glm::length(c), q.radiance, -1});
+    }
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+      int j = scene.materials[scene.triangles[i].material].quadLight;
+      if (j >= 0 && j < static_cast<int>(lights_.size()) && lights_[j].triangle < 0) lights_[j].triangle = static_cast<int>(i);
+    }
+    collectEmitters();
+  }
+
+  // The radiance of one camera sample through image position (px, py).
+  dvec3 sampleRadiance(double px, double py, const SampleNumbers& rng, RayCounts& counts) const {
+    ++counts.primary;
+    const Ray ray = query_.cameraRay(px, py);
+    switch (scene_.path.integrator) {
+      case Integrator::AnalyticDirect: return analyticDirect(ray);
+      case Integrator::Direct: return direct(ray, rng, counts);
+      default: return path(ray, rng, counts);
+    }
+  }
+
+ private:
+  // The power weight of an emitting material over `area`, 0 for quad lights and non-emitters.
+  double emitterWeight(std::uint32_t material, double area) const {
+    const Material& m = scene_.materials[material];
+    if (m.quadLight >= 0) return 0.0;
+    return area * (std::abs(m.emission.x) + std::abs(m.emission.y) + std::abs(m.emission.z));
+  }
+
+  // The emissive triangles and spheres, and the probability with which a light sample picks each.
+  void collectEmitters() {
+    std::vector<double> weights;
+    for (std::uint32_t i = 0; i < scene_.triangles.size(); ++i) {
+      const Triangle& t = scene_.triangles[i];
+      const double w = emitterWeight(t.material, 0.5 * glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])));
+      if (w > 0.0) emitters_.push_back(i), weights.push_back(w);
+    }
+    for (std::uint32_t i = 0; i < scene_.spheres.size(); ++i) {
+      const Sphere& sp = scene_.spheres[i];
+      // Any positive weight is unbiased; this one is the area for a uniform scale.
+      const double scale = std::cbrt(std::abs(glm::determinant(glm::dmat3(sp.worldFromObject))));
+      const double w = emitterWeight(sp.material, 4.0 * kPi * sp.radius * sp.radius * scale * scale);
+      if (w > 0.0) emitters_.push_back(i | gpu::kPrimSphereBit), weights.push_back(w);
+    }
+    double total = 0.0;
+    for (double w : weights) total += w;
+    trianglePick_.assign(scene_.triangles.size(), 0.0);
+    spherePick_.assign(scene_.spheres.size(), 0.0);
+    double running = 0.0;
+    for (std::size_t e = 0; e < emitters_.size(); ++e) {
+      running += weights[e];
+      emitterCdf_.push_back(running / total);
+      pickProbability(emitters_[e]) = weights[e] / total;
+    }
+    if (!emitterCdf_.empty()) emitterCdf_.back() = 1.0;
+  }
+
+  double& pickProbability(std::uint32_t prim) {
+    return (prim & gpu::kPrimSphereBit) ? spherePick_[prim & ~gpu::kPrimSphereBit] : trianglePick_[prim];
+  }
+  double pickProbability(std::uint32_t prim) const {
+    return (prim & gpu::kPrimSphereBit) ? spherePick_[prim & ~gpu::kPrimSphereBit] : trianglePick_[prim];
+  }
+
+  // A point of emitter primitive `prim` from (u, v): uniform in area on a triangle; on an
+  // ellipsoid, uniform on its object-space sphere, with the density moved to world area by
+  // the transform's area element |det M| |M^-T n|.
+  EmitterPoint emitterPoint(std::uint32_t prim, double u, double v) const {
+    EmitterPoint point;
+    if (prim & gpu::kPrimSphereBit) {
+      const Sphere& sp = scene_.spheres[prim & ~gpu::kPrimSphereBit];
+      const double z = 1.0 - 2.0 * u, r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * v;
+      const dvec3 nObject(r * std::cos(phi), r * std::sin(phi), z);
+      point.x = dvec3(sp.worldFromObject * glm::dvec4(sp.center + sp.radius * nObject, 1.0));
+      return sphereDensity(sp, nObject, point);
+    }
+    const Triangle& t = scene_.triangles[prim];
+    const double su = std::sqrt(u);
+    point.x = (1.0 - su) * t.p[0] + su * (1.0 - v) * t.p[1] + su * v * t.p[2];
+    const dvec3 c = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+    point.normal = glm::normalize(c);
+    point.areaPdf = 2.0 / glm::length(c);
+    return point;
+  }
+
+  // The normal and area density at the point of sphere `sp` whose object-space unit normal is nObject.
+  static EmitterPoint sphereDensity(const Sphere& sp, const dvec3& nObject, EmitterPoint point) {
+    const dvec3 m = glm::transpose(glm::dmat3(sp.objectFromWorld)) * nObject;   // M^-T n
+    const double areaElement = std::abs(glm::determinant(glm::dmat3(sp.worldFromObject))) * glm::length(m);
+    point.normal = glm::normalize(m);
+    point.areaPdf = 1.0 / (4.0 * kPi * sp.radius * sp.radius * areaElement);
+    return point;
+  }
+
+  // The solid-angle density with which the emitter light sample finds point p of primitive
+  // `prim` from a vertex at distance `distance` along unit `dir`.
+  double emitterSolidAnglePdf(std::uint32_t prim, const dvec3& p, double distance, const dvec3& dir) const {
+    EmitterPoint point;
+    if (prim & gpu::kPrimSphereBit) {
+      const Sphere& sp = scene_.spheres[prim & ~gpu::kPrimSphereBit];
+      const dvec3 pObject = dvec3(sp.objectFromWorld * glm::dvec4(p, 1.0));
+      point = sphereDensity(sp, glm::normalize(pObject - sp.center), point);
+    } else {
+      const Triangle& t = scene_.triangles[prim];
+      const dvec3 c = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+      point.normal = glm::normalize(c);
+      point.areaPdf = 2.0 / glm::length(c);
+    }
+    const double cosine = std::abs(glm::dot(point.normal, dir));
+    return cosine > 0.0 ? pickProbability(prim) * point.areaPdf * distance * distance / cosine : 0.0;
+  }
+
+  // Next-event estimation of the emissive triangles and spheres at vertex v (lightsamples
+  // samples, stratified like a quad light's).
+  dvec3 emitterLights(const Vertex& v, std::uint32_t bounce, bool mis, const SampleNumbers& rng, RayCounts& counts) const {
+    if (emitters_.empty()) return dvec3(0.0);
+    const std::uint32_t n = static_cast<std::uint32_t>(std::max(scene_.path.lightSamples, 1));
+    const std::uint32_t quads = static_cast<std::uint32_t>(lights_.size());
+    const int m = scene_.path.lightStratify ? static_cast<int>(std::lround(std::sqrt(static_cast<double>(n)))) : 0;
+    dvec3 sum(0.0);
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const std::uint32_t slot = gpu::kRngSlotLightBase + 2u * (quads * n + k);
+      double s = rng.at(bounce, slot), t = rng.at(bounce, slot + 1u);
+      if (m > 0) {
+        s = (static_cast<int>(k) % m + s) / m;
+        t = (static_cast<int>(k) / m + t) / m;
+      }
+      // Pick an emitter, then a point on it.
+      const double pick = rng.at(bounce, gpu::kRngSlotLightBase + 2u * (quads + 1u) * n + k);
+      const std::size_t e = std::min<std::size_t>(
+          static_cast<std::size_t>(std::upper_bound(emitterCdf_.begin(), emitterCdf_.end(), pick) - emitterCdf_.begin()),
+          emitters_.size() - 1);
+      const std::uint32_t prim = emitters_[e];
+      const EmitterPoint point = emitterPoint(prim, s, t);
+      const dvec3 d = point.x - v.p;
+      const double dist2 = glm::dot(d, d), dist = std::sqrt(dist2);
+      if (dist == 0.0) continue;
+      const dvec3 wi = d / dist;
+      const double cosLight = std::abs(glm::dot(point.normal, wi)), nDotI = glm::dot(v.n, wi);
+      if (cosLight <= 0.0 || nDotI <= 0.0) continue;
+      const dvec3 f = evalBrdf(*v.m, v.n, wi, v.wo);
+      if (f == dvec3(0.0)) continue;
+      Hit at;
+      at.prim = prim;
+      const double tMax = dist - query_.offsetsAt(at, point.x).at(cosLight);
+      if (!unoccluded(v.p, wi, v.offset.at(nDotI), tMax, counts)) continue;
+      const double lightPdf = pickProbability(prim) * point.areaPdf * dist2 / cosLight;
+      const std::uint32_t material =
+          (prim & gpu::kPrimSphereBit) ? scene_.spheres[prim & ~gpu::kPrimSphereBit].material : scene_.triangles[prim].material;
+      dvec3 contribution = scene_.materials[material].emission * f * (nDotI / (lightPdf * n));
+      if (mis) contribution *= powerHeuristic(lightPdf, directionPdf(scene_.path.sampling, *v.m, v.n, wi, v.wo));
+      sum += contribution;
+    }
+    return sum;
+  }
+
+  // Intersects `ray`; on a hit fills the vertex (wo = -dir) and returns true.
+  bool hitVertex(const Ray& ray, double tMin, Hit& hit, Vertex& v) const {
+    if (!query_.intersect(ray, tMin, kInfinity, false, hit)) return false;
+    v.p = ray.origin + hit.t * ray.dir;
+    v.m = &scene_.materials[query_.surfaceAt(hit, v.p, v.n)];
+    v.wo = -ray.dir;
+    v.offset = query_.offsetsAt(hit, v.p);
+    return true;
+  }
+
+  // Le(x, w_o): a quad light's radiance on its front side (black behind), or the surface's
+  // `emission` (both sides, as in the Whitted model).
+  dvec3 emitted(const Vertex& v) const {
+    if (v.m->quadLight >= 0) {
+      const AreaLight& light = lights_[v.m->quadLight];
+      return glm::dot(light.normal, v.wo) > 0.0 ? light.radiance : dvec3(0.0);
+    }
+    return v.m->emission;
+  }
+
+  bool unoccluded(const dvec3& p, const dvec3& dir, double tMin, double tMax, RayCounts& counts) const {
+    ++counts.shadow;
+    Hit blocker;
+    return !(tMin < tMax && query_.intersect({p, dir}, tMin, tMax, true, blocker));
+  }
+
+  // Point and directional lights (SPEC-PATHTRACING section 2: always sampled explicitly):
+  // f I cos / attenuation behind a shadow ray, the attenuation of SPEC.md.
+  dvec3 pointLights(const Vertex& v, RayCounts& counts) const {
+    dvec3 sum(0.0);
+    for (const Light& light : scene_.lights) {
+      dvec3 toLight;
+      double distance = kInfinity, divisor = 1.0;
+      if (light.type == LightType::Point) {
+        dvec3 d = light.vec - v.p;
+        distance = glm::length(d);
+        if (distance == 0.0) continue;
+        toLight = d / distance;
+        divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
+      } else {
+        toLight = glm::normalize(light.vec);
+      }
+      double nDotL = glm::dot(v.n, toLight);
+      if (nDotL <= 0.0) continue;
+      dvec3 f = evalBrdf(*v.m, v.n, toLight, v.wo);
+      if (f == dvec3(0.0) || !unoccluded(v.p, toLight, v.offset.at(nDotL), distance, counts)) continue;
+      sum += f * (light.color / divisor) * nDotL;
+    }
+    return sum;
+  }
+
+  // Next-event estimation of every quad light at vertex v of bounce b: lightsamples points on
+  // each (stratified or not), each behind a shadow ray; with `mis`, each weighted by the power
+  // heuristic against the BRDF sampling that could have found it.
+  dvec3 quadLights(const Vertex& v, std::uint32_t bounce, bool mis, const SampleNumbers& rng, RayCounts& counts) const {
+    const int n = std::max(scene_.path.lightSamples, 1);
+    const int m = scene_.path.lightStratify ? static_cast<int>(std::lround(std::sqrt(static_cast<double>(n)))) : 0;
+    dvec3 sum(0.0);
+    for (std::size_t j = 0; j < lights_.size(); ++j) {
+      const AreaLight& light = lights_[j];
+      for (int k = 0; k < n; ++k) {
+        // Sample a point x' on the light.
+        const std::uint32_t slot = gpu::kRngSlotLightBase + 2u * static_cast<std::uint32_t>(j * n + k);
+        double s = rng.at(bounce, slot), t = rng.at(bounce, slot + 1u);
+        if (m > 0) {
+          s = (k % m + s) / m;
+          t = (k / m + t) / m;
+        }
+        const dvec3 x = light.a + s * light.ab + t * light.ac;
+        const dvec3 d = x - v.p;
+        const double dist2 = glm::dot(d, d), dist = std::sqrt(dist2);
+        if (dist == 0.0) continue;
+        const dvec3 wi = d / dist;
+        const double cosLight = -glm::dot(light.normal, wi), nDotI = glm::dot(v.n, wi);
+        if (cosLight <= 0.0 || nDotI <= 0.0) continue;   // the light's back, or below the surface
+        const dvec3 f = evalBrdf(*v.m, v.n, wi, v.wo);
+        if (f == dvec3(0.0)) continue;
+        // The shadow ray stops short of the light by the offset policy at the light's end.
+        const double tMax = light.triangle >= 0 ? dist - query_.triangleOffsetsAt(light.triangle, x).at(cosLight)
+                                                : dist - gpu::kSecondaryRayTMin;
+        if (!unoccluded(v.p, wi, v.offset.at(nDotI), tMax, counts)) continue;
+        const double g = nDotI * cosLight / dist2;
+        dvec3 contribution = light.radiance * f * (g * light.area / n);
+        if (mis) {
+          const double lightPdf = dist2 / (light.area * cosLight);
+          contribution *= powerHeuristic(lightPdf, directionPdf(scene_.path.sampling, *v.m, v.n, wi, v.wo));
+        }
+        sum += contribution;
+      }
+    }
+    return sum;
+  }
+
+  // analyticdirect: Le + sum over quad lights of kd / pi L (Phi . n); point and directional
+  // lights diffuse and unshadowed like it.
+  dvec3 analyticDirect(const Ray& ray) const {
+    Hit hit;
+    Vertex v;
+    if (!hitVertex(ray, 0.0, hit, v)) return dvec3(0.0);
+    dvec3 radiance = emitted(v);
+    if (v.m->quadLight >= 0) return radiance;
+    for (const QuadLight& q : scene_.quadLights)
+      radiance += v.m->diffuse / kPi * q.radiance * analyticQuadFactor(q, v.p, v.n);
+    for (const Light& light : scene_.lights) {
+      dvec3 toLight = light.type == LightType::Point ? light.vec - v.p : light.vec;
+      double distance = glm::length(toLight);
+      if (distance == 0.0) continue;
+      toLight /= distance;
+      double divisor = light.type == LightType::Point ? light.attenuation.x + light.attenuation.y * distance +
+                                                             light.attenuation.z * distance * distance
+                                                       : 1.0;
+      radiance += v.m->diffuse / kPi * (light.color / divisor) * std::max(glm::dot(v.n, toLight), 0.0);
+    }
+    return radiance;
+  }
+
+  // direct: Le + one bounce of light sampling at the camera's hit.
+  dvec3 direct(const Ray& ray, const SampleNumbers& rng, RayCounts& counts) const {
+    Hit hit;
+    Vertex v;
+    if (!hitVertex(ray, 0.0, hit, v)) return dvec3(0.0);
+    dvec3 radiance = emitted(v);
+    if (v.m->quadLight >= 0) return radiance;   // a light's triangles reflect nothing
+    return radiance + pointLights(v, counts) + quadLights(v, 0, false, rng, counts);
+  }
+
+  // pathtracer (SPEC-PATHTRACING section 4). Vertex b = 0 is the camera ray's hit; vertices
+  // b < maxdepth scatter, and light reaching the last of them (by NEE or by hitting) counts.
+  dvec3 path(Ray ray, const SampleNumbers& rng, RayCounts& counts) const {
+    const PathSettings& settings = scene_.path;
+    const NextEvent nee = settings.nextEvent;
+    const int maxDepth = scene_.maxDepth;
+    dvec3 radiance(0.0), beta(1.0);
+    double tMin = 0.0;              // the camera ray takes every hit with t > 0
+    double previousPdf = 0.0;       // the BRDF-sampling density of the ray being traced (MIS)
+    for (std::uint32_t bounce = 0;; ++bounce) {
+      Hit hit;
+      Vertex v;
+      if (!hitVertex(ray, tMin, hit, v)) break;   // a miss is black
+
+      // Add the emission the ray found: camera rays always; indirect rays unless next-event
+      // estimation has already counted this light (on), or weighted against it (mis).
+      const dvec3 le = emitted(v);
+      if (le != dvec3(0.0)) {
+        const bool isQuad = v.m->quadLight >= 0;
+        const bool sampledByNee = isQuad || pickProbability(hit.prim) > 0.0;
+        if (bounce == 0 || nee == NextEvent::Off || !sampledByNee) {
+          radiance += beta * le;
+        } else if (nee == NextEvent::Mis) {
+          double lightPdf;
+          if (isQuad) {
+            const AreaLight& light = lights_[v.m->quadLight];
+            lightPdf = hit.t * hit.t / (light.area * glm::dot(light.normal, v.wo));
+          } else {
+            lightPdf = emitterSolidAnglePdf(hit.prim, v.p, hit.t, v.wo);
+          }
+          radiance += beta * le * powerHeuristic(previousPdf, lightPdf);
+        }
+      }
+      // A quad light's triangles reflect nothing; the depth rule stops the rest.
+      if (v.m->quadLight >= 0) break;
+      if ((maxDepth >= 0 && bounce >= static_cast<std::uint32_t>(maxDepth)) || bounce >= kMaxBounces) break;
+
+      // Sample direct illumination: point and directional lights always, quad lights by NEE.
+      radiance += beta * pointLights(v, counts);
+      if (nee != NextEvent::Off) {
+        radiance += beta * quadLights(v, bounce, nee == NextEvent::Mis, rng, counts);
+        radiance += beta * emitterLights(v, bounce, nee == NextEvent::Mis, rng, counts);
+      }
+
+      // Sample the next direction and update the throughput.
+      const dvec3 wi = glm::normalize(sampleDirection(settings.sampling, *v.m, v.n, v.wo,
+                                                      rng.at(bounce, gpu::kRngSlotDirectionU),
+                                                      rng.at(bounce, gpu::kRngSlotDirectionV),
+                                                      rng.at(bounce, gpu::kRngSlotLobe)));
+      const double pdf = directionPdf(settings.sampling, *v.m, v.n, wi, v.wo);
+      const dvec3 f = evalBrdf(*v.m, v.n, wi, v.wo);
+      if (!(pdf > 0.0) || f == dvec3(0.0)) break;
+      const double nDotI = glm::dot(v.n, wi);
+      beta *= f * (nDotI / pdf);
+      previousPdf = pdf;
+
+      // Possibly terminate the path with Russian roulette.
+      if (settings.russianRoulette) {
+        const double p = std::min(std::max({beta.x, beta.y, beta.z}), 1.0);
+        if (!(rng.at(bounce, gpu::kRngSlotRoulette) < p)) break;
+        beta /= p;
+      }
+      ++counts.reflection;
+      ray = {v.p, wi};
+      tMin = v.offset.at(std::abs(nDotI));
+    }
+    return radiance;
+  }
+
+  const SceneDesc& scene_;
+  SceneQuery query_;
+  std::vector<AreaLight> lights_;
+  std::vector<std::uint32_t> emitters_;   // primRefs of the emissive triangles and spheres
+  std::vector<double> emitterCdf_;        // their cumulative pick probabilities
+  std::vector<double> trianglePick_, spherePick_;   // each primitive's pick probability (0: none)
+};
+
+}  // namespace
+
+double analyticQuadFactor(const QuadLight& light, const dvec3& x, const dvec3& n) {
+  const dvec3 lightNormal = glm::normalize(glm::cross(light.ac, light.ab));
+  if (!(glm::dot(lightNormal, x - light.a) > 0.0)) return 0.0;   // behind the light (or in its plane)
+  const dvec3 v[4] = {light.a, light.a + light.ab, light.a + light.ab + light.ac, light.a + light.ac};
+  dvec3 phi(0.0);
+  for (int k = 0; k < 4; ++k) {
+    const dvec3 p = v[k] - x, q = v[(k + 1) % 4] - x;
+    const double theta = std::acos(std::clamp(glm::dot(glm::normalize(p), glm::normalize(q)), -1.0, 1.0));
+    phi += theta * glm::normalize(glm::cross(p, q));
+  }
+  return 0.5 * glm::dot(phi, n);
+}
+
+RadianceImage renderPathReference(const SceneDesc& scene, const Bvh& bvh, const PathOptions& options,
+                                  RayCounts* counts) {
+  if (scene.path.integrator == Integrator::Raytracer)
+    throw std::invalid_argument("renderPathReference: the raytracer integrator is the Whitted reference's");
+  const PixelRect region = options.crop ? *options.crop : PixelRect{0, 0, scene.width, scene.height};
+  const std::uint32_t totalSpp = static_cast<std::uint32_t>(std::max(scene.path.spp, 1));
+  const std::uint32_t first = options.firstSample;
+  const std::uint32_t count = options.sampleCount > 0 ? options.sampleCount
+                              : totalSpp > first      ? totalSpp - first
+                                                      : 0;
+  RadianceImage image(region.width(), region.height());
+  image.samples = count;
+  PathIntegrator integrator(scene, bvh);
+  const int tilesX = (region.width() + kTile - 1) / kTile, tilesY = (region.height() + kTile - 1) / kTile;
+  const int tileCount = tilesX * tilesY;
+  const std::uint64_t total = static_cast<std::uint64_t>(region.width()) * region.height() * count;
+  std::atomic<int> nextTile{0};
+  std::mutex mutex;   // guards done, the progress callback and the totals
+  std::uint64_t done = 0;
+  RayCounts totals;
+
+  auto worker = [&] {
+    RayCounts local;
+    for (int tile; (tile = nextTile.fetch_add(1)) < tileCount;) {
+      if (options.stop && options.stop()) break;
+      // (x, y): the full image's pixel; its place in `image` is relative to the region.
+      int x0 = region.x0 + (tile % tilesX) * kTile, y0 = region.y0 + (tile / tilesX) * kTile;
+      int x1 = std::min(x0 + kTile, region.x1), y1 = std::min(y0 + kTile, region.y1);
+      for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+          const std::uint32_t pixel = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(scene.width) +
+                                      static_cast<std::uint32_t>(x);
+          dvec3 sum(0.0);
+          for (std::uint32_t s = first; s < first + count; ++s) {
+            const SampleNumbers rng{options.seed, pixel, s};
+            // spp 1 samples the pixel's centre; otherwise a uniform point in the pixel.
+            const double u = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelX);
+            const double v = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelY);
+            sum += integrator.sampleRadiance(x + u, y + v, rng, local);
+          }
+          const dvec3 mean = count > 0 ? sum / static_cast<double>(count) : dvec3(0.0);
+          float* px = image.pixel(x - region.x0, y - region.y0);
+          for (int k = 0; k < 3; ++k) px[k] = static_cast<float>(mean[k]);
+          if (!std::isfinite(mean.x + mean.y + mean.z)) ++local.nonFinite;
+        }
+      std::lock_guard lock(mutex);
+      done += static_cast<std::uint64_t>(x1 - x0) * (y1 - y0) * count;
+      if (options.progress) options.progress(done, total);
+    }
+    std::lock_guard lock(mutex);
+    totals.primary += local.primary;
+    totals.shadow += local.shadow;
+    totals.reflection += local.reflection;
+    totals.nonFinite += local.nonFinite;
+  };
+
+  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
+  threads = std::clamp(threads, 1, std::max(1, tileCount));
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (counts) *counts = totals;
+  return image;
+}
+
+}  // namespace vkrt

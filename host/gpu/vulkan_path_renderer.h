@@ -1,0 +1,47 @@
+// The Vulkan backend of the path integrators (SPEC-PATHTRACING: analyticdirect, direct,
+// pathtracer): GpuScene -> RadianceImage through pathtrace.comp. Renders a range of samples
+// per pixel and returns their mean in float, so that batches of one render can be averaged
+// (weighted by their sample counts) into the same image as one render of all the samples.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "cpu/reference.h"
+#include "gpu/context.h"
+#include "gpu/vulkan_renderer.h"
+#include "image/crop.h"
+#include "image/radiance_image.h"
+#include "scene/flatten.h"
+
+namespace vkrt {
+
+struct VulkanPathOptions {
+  SceneReads reads = SceneReads::Auto;    // Auto: texel buffers where the device's limits allow
+  std::uint32_t seed = 0;                 // the generator's key (gpu_types.h)
+  // This call renders samples [firstSample, firstSample + sampleCount) of every pixel; the
+  // numbers each draws depend on its index only, not on the batch it comes in.
+  std::uint32_t firstSample = 0;
+  std::uint32_t sampleCount = 0;          // 0: the scene's spp
+  // The whole render's samples per pixel, for the camera rule (gpu_types.h: a render of spp 1
+  // samples the pixel centres, whatever sampleCount says); 0: the scene's spp.
+  std::uint32_t renderSpp = 0;
+  std::uint32_t stepBudget = 0;           // steps per pixel per dispatch; 0: kDefaultStepBudget
+  std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
+  bool specialize = true;                 // compile out what the scene does not use
+  std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixel samples done, total)
+  std::function<bool()> stop;   // polled before each dispatch: true stops early (image incomplete)
+  // Only these pixels of the scene's image, as an image of the crop's size: the full render's
+  // pixels bit for bit (the same camera rays and random numbers).
+  std::optional<PixelRect> crop;
+};
+
+// RayCounts: primary = camera rays (pixels x samples), shadow = shadow rays, reflection =
+// scattered rays, nonFinite = samples whose radiance was NaN or infinite (left out of the mean).
+// Throws DeviceError (also for a scene beyond the backend's or the device's limits),
+// OutOfMemory, InternalError.
+RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
+                               RayCounts* rays, VulkanTimings* timings);
+
+}  // namespace vkrt

@@ -1,0 +1,576 @@
+// pathtrace.comp: the path integrators of SPEC-PATHTRACING (analyticdirect, direct, pathtracer).
+// One invocation per pixel of a band renders that pixel's samples [firstSample, firstSample +
+// sampleCount) one after another and adds them up in float. Each sample is a path: camera
+// ray, then at each vertex emission, light samples (quad lights, by next-event estimation;
+// point and directional lights always) with shadow rays, and a scattered ray, as
+// GpuPathParams says. Random numbers come from the counter-based generator of gpu_types.h,
+// drawn by the rules stated there, so that the CPU reference follows the same paths.
+// Like raytrace.comp it is a state machine of bounded steps: a pixel that runs out of steps
+// saves its state (GpuPathTracerState) and the host dispatches again, so that no invocation
+// exceeds llvmpipe's loop budget whatever the path length (see kDefaultStepBudget).
+// Its math is float32 and written independently of the CPU reference (host/cpu/).
+#version 450
+#extension GL_GOOGLE_include_directive : require
+
+#include "gpu_types.h"
+
+layout(local_size_x = kWorkgroupSize, local_size_y = kWorkgroupSize) in;
+
+// Specialization constants: what the scene contains (gpu_types.h, kSpec*, kPathSpec*).
+layout(constant_id = kSpecHasTriangles) const bool kHasTriangles = true;
+layout(constant_id = kSpecHasSpheres) const bool kHasSpheres = true;
+layout(constant_id = kSpecHasSmoothNormals) const bool kHasSmoothNormals = true;
+layout(constant_id = kSpecHasPointLights) const bool kHasPointLights = true;
+layout(constant_id = kSpecHasDirectionalLights) const bool kHasDirectionalLights = true;
+layout(constant_id = kSpecHasAttenuation) const bool kHasAttenuation = true;
+layout(constant_id = kPathSpecHasQuadLights) const bool kHasQuadLights = true;
+layout(constant_id = kPathSpecHasGgx) const bool kHasGgx = true;
+
+#include "scene_reads.glsl"
+#include "intersect.glsl"
+
+#ifdef VKRT_TEXEL_READS
+layout(binding = kBindingQuadLights) uniform usamplerBuffer quadLightWords;   // RGBA32UI
+GpuQuadLight loadQuadLight(uint i) {
+  const uint n = kQuadLightTexels;
+  GpuQuadLight q;
+  q.corner = texelF(quadLightWords, n * i);
+  q.edgeAB = texelF(quadLightWords, n * i + 1u);
+  q.edgeAC = texelF(quadLightWords, n * i + 2u);
+  q.normal = texelF(quadLightWords, n * i + 3u);
+  q.radiance = texelF(quadLightWords, n * i + 4u);
+  return q;
+}
+#else
+layout(std430, binding = kBindingQuadLights) readonly buffer QuadLights { GpuQuadLight quadLights[]; };
+GpuQuadLight loadQuadLight(uint i) { return quadLights[i]; }
+#endif
+
+// rgb: the sum of the pixel's finished samples; w: 1 once all are done, 0 while suspended.
+layout(std430, binding = kBindingPixels) buffer Accumulation { vec4 accumulation[]; };
+layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathTracerState states[]; };
+layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
+
+layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
+layout(std140, binding = kBindingPathParams) uniform PathParams { GpuPathParams path; };
+layout(push_constant) uniform Push { GpuPathPush pc; };
+
+const float kPi = 3.14159265358979;
+const float kInvPi = 0.318309886183791;
+
+// ---- per-pixel state (registers; saved to states[] only on suspension) ----------------------
+vec3 rayOrigin, rayDir;
+float rayTMin, bestT, bestB1, bestB2;
+vec3 throughput;       // T: the path's weight up to the current vertex
+vec3 radiance;         // this sample's radiance so far
+vec3 pixelSum;         // the pixel's finished samples, added in sample order
+float lastPdf;         // solid-angle pdf of the scatter that made the current ray (MIS)
+vec3 hitPoint, hitNormal, shadowDir, pending;
+float shadowTMax, shadowCos;
+uint phase, bounce, lightIndex, hitPrim, hitMaterial, sampleIndex;
+// (the traversal stack, sp, hitTMin and hitGrazing: intersect.glsl)
+uint pixelX, pixelY, pixelIndex;   // in the full image; pixelIndex = y * fullWidth + x
+uint shadowRays = 0u, scatterRays = 0u, nonFinite = 0u;
+
+// ---- random numbers (gpu_types.h: the generator and how each number is used) ------------------
+
+uint sampleKey;   // rngSampleKey of the current sample
+void keySample() { sampleKey = rngSampleKey(path.seed, pixelIndex, path.firstSample + sampleIndex); }
+float random(uint dimension) { return rngUniformKeyed(sampleKey, dimension); }
+// The number of `slot` at the current path vertex.
+float randomAt(uint slot) { return random(rngDimension(bounce, slot)); }
+
+// pow(x, s) for x >= 0 as C defines it: pow(0, 0) = 1 (GLSL leaves pow(0, s) undefined).
+float powSafe(float x, float s) { return x > 0.0 ? pow(x, s) : (s == 0.0 ? 1.0 : 0.0); }
+float average(vec3 c) { return (c.r + c.g + c.b) / 3.0; }
+
+// The direction at polar angle theta (sine, cosine) and azimuth phi around the unit axis n,
+// in the frame of gpu_types.h.
+vec3 aroundAxis(vec3 n, float sinTheta, float cosTheta, float phi) {
+  vec3 a = abs(n.x) > 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+  vec3 t = normalize(cross(a, n));
+  vec3 b = cross(n, t);
+  return sinTheta * cos(phi) * t + sinTheta * sin(phi) * b + cosTheta * n;
+}
+
+// ---- BRDFs (SPEC-PATHTRACING section 3) ----------------------------------------------------------
+// Material w fields: ambient.w = model, diffuse.w = GGX alpha, specular.w = Phong exponent.
+
+bool isGgx(GpuMaterial m) { return kHasGgx && m.ambient.w == kBrdfGgx; }
+
+// GGX's D, with cos^4 (a^2 + tan^2) written as (a^2 cos^2 + sin^2)^2 (no division by cos).
+// Roughness 0 makes D a delta that no sampled or light direction hits: 0 (not 0 / 0).
+float ggxD(float alpha, float nDotH) {
+  float a2 = alpha * alpha, c2 = nDotH * nDotH;
+  if (!(nDotH > 0.0) || a2 == 0.0) return 0.0;
+  float d = a2 * c2 + (1.0 - c2);
+  return a2 / (kPi * d * d);
+}
+
+// Smith's G1 for a direction at cos = n.v > 0.
+float ggxG1(float alpha, float nDotV) {
+  float c2 = nDotV * nDotV;
+  float tan2 = (1.0 - c2) / c2;
+  return 2.0 / (1.0 + sqrt(1.0 + alpha * alpha * tan2));
+}
+
+// f(w_i, w_o), w_o toward the viewer, w_i toward the light; 0 unless both lie on the side of n.
+vec3 brdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
+  float nDotI = dot(n, wi), nDotO = dot(n, wo);
+  if (!(nDotI > 0.0 && nDotO > 0.0)) return vec3(0.0);
+  vec3 f = m.diffuse.rgb * kInvPi;
+  if (isGgx(m)) {
+    float alpha = m.diffuse.w;
+    vec3 h = normalize(wi + wo);
+    float d = ggxD(alpha, dot(n, h));
+    float g = ggxG1(alpha, nDotI) * ggxG1(alpha, nDotO);
+    vec3 fresnel = m.specular.rgb + (1.0 - m.specular.rgb) * pow(1.0 - clamp(dot(wi, h), 0.0, 1.0), 5.0);
+    f += fresnel * (g * d / (4.0 * nDotI * nDotO));
+  } else {
+    float s = m.specular.w;
+    vec3 r = 2.0 * nDotO * n - wo;
+    f += m.specular.rgb * ((s + 2.0) / (2.0 * kPi) * powSafe(max(dot(r, wi), 0.0), s));
+  }
+  return f;
+}
+
+// The probability of the specular lobe under `importancesampling brdf` (SPEC-PATHTRACING 4).
+float specularLobeChance(GpuMaterial m) {
+  float kd = average(m.diffuse.rgb), ks = average(m.specular.rgb);
+  float t = kd + ks > 0.0 ? ks / (kd + ks) : 0.0;
+  return isGgx(m) ? max(0.25, t) : t;
+}
+
+// The solid-angle pdf with which the scatter step picks w_i.
+float scatterPdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
+  float nDotI = dot(n, wi);
+  if (!(nDotI > 0.0)) return 0.0;
+  if (path.sampling == kSamplingHemisphere) return 0.5 * kInvPi;
+  if (path.sampling == kSamplingCosine) return nDotI * kInvPi;
+  float t = specularLobeChance(m);
+  float specular;
+  if (isGgx(m)) {
+    vec3 h = normalize(wi + wo);
+    float hDotI = dot(h, wi);
+    specular = hDotI > 0.0 ? ggxD(m.diffuse.w, dot(n, h)) * dot(n, h) / (4.0 * hDotI) : 0.0;
+  } else {
+    float s = m.specular.w;
+    vec3 r = 2.0 * dot(n, wo) * n - wo;
+    specular = (s + 1.0) / (2.0 * kPi) * powSafe(max(dot(r, wi), 0.0), s);
+  }
+  return (1.0 - t) * nDotI * kInvPi + t * specular;
+}
+
+// Draws w_i at the current vertex (the rules of gpu_types.h).
+vec3 sampleDirection(GpuMaterial m, vec3 n, vec3 wo) {
+  float u = randomAt(kRngSlotDirectionU), v = randomAt(kRngSlotDirectionV);
+  float phi = 2.0 * kPi * v;
+  if (path.sampling == kSamplingHemisphere) return aroundAxis(n, sqrt(max(1.0 - u * u, 0.0)), u, phi);
+  if (path.sampling == kSamplingBrdf && randomAt(kRngSlotLobe) < specularLobeChance(m)) {
+    if (isGgx(m)) {
+      float alpha = m.diffuse.w;
+      float tanTheta = alpha * sqrt(u) / sqrt(1.0 - u);
+      float cosTheta = 1.0 / sqrt(1.0 + tanTheta * tanTheta);
+      vec3 h = aroundAxis(n, tanTheta * cosTheta, cosTheta, phi);
+      return 2.0 * dot(wo, h) * h - wo;
+    }
+    float z = pow(u, 1.0 / (m.specular.w + 1.0));
+    vec3 r = 2.0 * dot(n, wo) * n - wo;
+    return aroundAxis(r, sqrt(max(1.0 - z * z, 0.0)), z, phi);
+  }
+  return aroundAxis(n, sqrt(u), sqrt(1.0 - u), phi);   // cosine
+}
+
+// ---- analyticdirect: the closed form (SPEC-PATHTRACING section 3) ------------------------------
+
+// Phi(x) = 1/2 sum_k theta_k Gamma_k over the corners a, a+ab, a+ab+ac, a+ac; 0 behind the
+// light (it emits on one side).
+vec3 polygonIrradianceVector(GpuQuadLight q, vec3 x) {
+  if (!(dot(q.normal.xyz, x - q.corner.xyz) > 0.0)) return vec3(0.0);
+  vec3 v[4] = vec3[4](q.corner.xyz - x, q.corner.xyz + q.edgeAB.xyz - x,
+                      q.corner.xyz + q.edgeAB.xyz + q.edgeAC.xyz - x, q.corner.xyz + q.edgeAC.xyz - x);
+  vec3 phi = vec3(0.0);
+  for (uint k = 0u; k < 4u; ++k) {
+    vec3 p = v[k], r = v[(k + 1u) & 3u];
+    vec3 across = cross(p, r);
+    // The angle between p and r; atan2 keeps its precision where acos of a dot product does not.
+    float theta = atan(length(across), dot(p, r));
+    phi += theta * normalize(across);
+  }
+  return 0.5 * phi;
+}
+
+// ---- the state machine's steps -----------------------------------------------------------------
+
+void startRay(vec3 origin, vec3 dir, float tMin) {
+  rayOrigin = origin;
+  rayDir = dir;
+  rayTMin = tMin;
+  bestT = kInfinity;
+  hitPrim = kNoHit;
+  sp = params.primCount > 0u ? 1u : 0u;   // an empty scene's root is an empty leaf: nothing to visit
+  stack[0] = params.rootEntry;
+  stackT[0] = 0.0;
+  phase = kPhaseTrace;
+}
+
+// The camera ray of sample `sampleIndex` (gpu_types.h: the pixel centre, or jittered).
+void startCamera() {
+  keySample();
+  float u = 0.5, v = 0.5;
+  if (path.jitter != 0u) {
+    u = random(kRngPixelX);
+    v = random(kRngPixelY);
+  }
+  float a = (float(pixelX) + u) - 0.5 * float(params.fullWidth);
+  float b = 0.5 * float(params.fullHeight) - (float(pixelY) + v);
+  vec3 dir = normalize(a * path.cameraRight.xyz + b * path.cameraUp.xyz - path.cameraBack.xyz);
+  throughput = vec3(1.0);
+  radiance = vec3(0.0);
+  bounce = 0u;
+  lastPdf = 0.0;
+  startRay(path.cameraOrigin.xyz, dir, 0.0);
+}
+
+// The sample is over: add it to the pixel (a NaN or infinite one is counted and left out),
+// then start the next.
+void finishSample() {
+  if (any(isnan(radiance)) || any(isinf(radiance)))
+    ++nonFinite;
+  else
+    pixelSum += radiance;
+  ++sampleIndex;
+  if (sampleIndex < path.sampleCount)
+    startCamera();
+  else
+    phase = kPhaseDone;
+}
+
+// Quad-light samples at a vertex: one per light for analyticdirect, N per light otherwise.
+uint quadLightSamples() {
+  return path.quadLightCount * (path.integrator == kIntegratorAnalyticDirect ? 1u : path.lightSamples);
+}
+
+// The nearest hit is known: its emission, then the lights (kPhaseLight), or the end of the path.
+void beginShading() {
+  hitPoint = rayOrigin + bestT * rayDir;
+  surfaceAt(hitPrim, rayOrigin, rayDir, bestT, vec2(bestB1, bestB2), hitPoint, path.cameraOrigin.xyz, hitNormal,
+            hitMaterial);
+  GpuMaterial m = loadMaterial(hitMaterial);
+  if (kHasQuadLights && m.emission.w != kNoQuadLight) {
+    // A quad light: radiance L on its front side, black behind; it reflects nothing.
+    GpuQuadLight q = loadQuadLight(uint(m.emission.w));
+    float cosLight = -dot(q.normal.xyz, rayDir);
+    if (cosLight > 0.0) {
+      float weight = 1.0;   // camera rays, and every ray without next-event estimation
+      if (bounce > 0u && path.nextEvent == kNextEventOn) {
+        weight = 0.0;   // the light samples of the vertex before counted it
+      } else if (bounce > 0u && path.nextEvent == kNextEventMis) {
+        // Power heuristic against the light samples: pdfs in solid angle at the vertex before.
+        float lightPdf = bestT * bestT / (q.corner.w * cosLight);
+        float ratio = lightPdf / lastPdf;
+        weight = 1.0 / (1.0 + ratio * ratio);
+      }
+      radiance += throughput * weight * q.radiance.rgb;
+    }
+    finishSample();
+    return;
+  }
+  radiance += throughput * m.emission.rgb;   // found by hitting only (not sampled)
+  bool analytic = path.integrator == kIntegratorAnalyticDirect;
+  // Whether this vertex samples lights and scatters: SPEC-PATHTRACING section 4's depth rule
+  // (vertex `bounce` may when bounce < maxdepth, kMaxBounces with no limit), one vertex for
+  // direct lighting.
+  bool scatters = path.integrator == kIntegratorPathTracer
+                      ? bounce < min(path.maxDepth, kMaxBounces)
+                      : bounce == 0u;
+  // f = 0 unless w_o is on the side of the normal (the closed form does not look at w_o).
+  if (!scatters || (!analytic && !(dot(hitNormal, rayDir) < 0.0))) {
+    finishSample();
+    return;
+  }
+  bool quadSamples = path.integrator != kIntegratorPathTracer || path.nextEvent != kNextEventOff;
+  lightIndex = quadSamples ? 0u : quadLightSamples();
+  phase = kPhaseLight;
+}
+
+// Starts the shadow ray of a light sample that adds `contribution` when nothing blocks it.
+void startShadowRay(vec3 dir, float tMax, float cosine, vec3 contribution) {
+  ++shadowRays;
+  shadowDir = dir;
+  shadowTMax = tMax;
+  shadowCos = cosine;
+  pending = contribution;
+  sp = params.primCount > 0u ? 1u : 0u;
+  stack[0] = params.rootEntry;
+  stackT[0] = 0.0;
+  phase = kPhaseShadow;
+}
+
+// Sample k of quad light j by next-event estimation.
+void quadLightSample(uint j, uint k, GpuMaterial m) {
+  GpuQuadLight q = loadQuadLight(j);
+  uint slot = kRngSlotLightBase + 2u * (j * path.lightSamples + k);
+  float s = randomAt(slot), t = randomAt(slot + 1u);
+  if (path.lightStrata > 0u) {   // one sample in each cell of an m x m grid
+    float cells = float(path.lightStrata);
+    s = (float(k % path.lightStrata) + s) / cells;
+    t = (float(k / path.lightStrata) + t) / cells;
+  }
+  vec3 onLight = q.corner.xyz + s * q.edgeAB.xyz + t * q.edgeAC.xyz;
+  vec3 d = onLight - hitPoint;
+  float distance2 = dot(d, d);
+  float distance = sqrt(distance2);
+  vec3 wi = d / distance;
+  float cosSurface = dot(hitNormal, wi), cosLight = -dot(q.normal.xyz, wi);
+  if (!(cosSurface > 0.0 && cosLight > 0.0)) return;
+  vec3 f = brdf(m, hitNormal, wi, -rayDir);
+  // (A / N) L f G, G = cos cos' / |x - x'|^2.
+  vec3 c = throughput * f * q.radiance.rgb *
+           (cosSurface * cosLight / distance2 * q.corner.w / float(path.lightSamples));
+  if (path.integrator == kIntegratorPathTracer && path.nextEvent == kNextEventMis) {
+    float lightPdf = distance2 / (q.corner.w * cosLight);
+    float ratio = scatterPdf(m, hitNormal, wi, -rayDir) / lightPdf;
+    c *= 1.0 / (1.0 + ratio * ratio);
+  }
+  if (any(notEqual(c, vec3(0.0)))) startShadowRay(wi, distance * kQuadShadowSpan, cosSurface, c);
+}
+
+// Point or directional light i: always sampled (it cannot be hit). analyticdirect takes it
+// like its quad lights: diffuse only, no shadow.
+void pointLightSample(uint i, GpuMaterial m, bool analytic) {
+  GpuLight light = loadLight(i);
+  vec3 wi;
+  float tMax = kInfinity, divisor = 1.0;
+  if (kHasPointLights && (!kHasDirectionalLights || light.positionOrDirection.w == kPointLight)) {
+    vec3 v = light.positionOrDirection.xyz - hitPoint;
+    float distance = length(v);
+    wi = v / distance;
+    tMax = distance;
+    if (kHasAttenuation)
+      divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
+  } else {
+    wi = normalize(light.positionOrDirection.xyz);
+  }
+  float cosSurface = dot(hitNormal, wi);
+  if (!(cosSurface > 0.0)) return;
+  vec3 f = analytic ? m.diffuse.rgb * kInvPi : brdf(m, hitNormal, wi, -rayDir);
+  vec3 c = throughput * f * (light.color.rgb / divisor) * cosSurface;
+  if (analytic)
+    radiance += c;
+  else if (any(notEqual(c, vec3(0.0))))
+    startShadowRay(wi, tMax, cosSurface, c);
+}
+
+// Leaves the vertex along a sampled direction, or ends the path.
+void scatter(GpuMaterial m) {
+  vec3 wo = -rayDir;
+  vec3 wi = normalize(sampleDirection(m, hitNormal, wo));
+  float cosine = dot(hitNormal, wi);
+  float pdf = scatterPdf(m, hitNormal, wi, wo);
+  if (!(cosine > 0.0 && pdf > 0.0)) {
+    finishSample();
+    return;
+  }
+  throughput *= brdf(m, hitNormal, wi, wo) * (cosine / pdf);
+  // Possibly terminate the path with Russian roulette (on the throughput).
+  if (path.russianRoulette != 0u) {
+    float p = min(max(throughput.r, max(throughput.g, throughput.b)), 1.0);
+    if (!(randomAt(kRngSlotRoulette) < p)) {
+      finishSample();
+      return;
+    }
+    throughput /= p;
+  }
+  if (all(equal(throughput, vec3(0.0)))) {   // nothing more can be added
+    finishSample();
+    return;
+  }
+  lastPdf = pdf;
+  ++bounce;
+  ++scatterRays;
+  startRay(hitPoint, wi, secondaryTMin(cosine));
+}
+
+// One light sample of the vertex (no loop: each is a step), then the scatter.
+void lightStep() {
+  GpuMaterial m = loadMaterial(hitMaterial);
+  uint quad = quadLightSamples();
+  if (kHasQuadLights && lightIndex < quad) {
+    uint i = lightIndex++;
+    if (path.integrator == kIntegratorAnalyticDirect) {
+      GpuQuadLight q = loadQuadLight(i);
+      radiance += throughput * m.diffuse.rgb * kInvPi * q.radiance.rgb * dot(polygonIrradianceVector(q, hitPoint), hitNormal);
+    } else {
+      quadLightSample(i / path.lightSamples, i % path.lightSamples, m);
+    }
+    return;
+  }
+  if ((kHasPointLights || kHasDirectionalLights) && lightIndex < quad + path.lightCount) {
+    pointLightSample(lightIndex++ - quad, m, path.integrator == kIntegratorAnalyticDirect);
+    return;
+  }
+  if (path.integrator == kIntegratorPathTracer)
+    scatter(m);
+  else
+    finishSample();
+}
+
+// One leaf of a traversal (after the interior nodes above it), as in raytrace.comp: the
+// nearest-hit traversal of the current ray (kPhaseTrace) or the any-hit one of a shadow ray
+// (kPhaseShadow). Each node is a step of the budget.
+void traversalStep(inout uint step) {
+  bool shadow = phase == kPhaseShadow;
+  vec3 origin = shadow ? hitPoint : rayOrigin;
+  vec3 dir = shadow ? shadowDir : rayDir;
+  float tMin = shadow ? secondaryTMin(shadowCos) : rayTMin;
+  float tMax = shadow ? shadowTMax : bestT;
+  if (nextIsInterior()) {
+    vec3 invDir = safeInverse(dir);
+    while (nextIsInterior() && step < params.stepBudget) {
+      --sp;
+      ++step;
+      if (stackT[sp] < tMax) pushChildren(stack[sp], origin, invDir, tMin, tMax);
+    }
+    if (nextIsInterior()) return;   // out of steps
+  }
+  if (sp == 0u) {   // traversal over
+    if (shadow) {   // nothing in the way
+      radiance += pending;
+      phase = kPhaseLight;
+    } else if (hitPrim != kNoHit) {
+      beginShading();
+    } else {
+      finishSample();   // a miss is black
+    }
+    return;
+  }
+  --sp;
+  if (stackT[sp] >= tMax) return;   // entered beyond the nearest hit so far
+  uint entry = stack[sp];
+  uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
+  Shear sh;
+  if (kHasTriangles) sh = shearFor(dir);
+  for (uint i = 0u; i < count; ++i) {
+    uint ref = loadPrimRef(first + i);
+    vec2 b;
+    float t = hitPrimitive(ref, origin, dir, sh, tMin, tMax, b);
+    if (t > 0.0) {
+      if (shadow) {   // blocked
+        sp = 0u;
+        phase = kPhaseLight;
+        return;
+      }
+      tMax = t;
+      bestT = t;
+      hitPrim = ref;
+      bestB1 = b.x;
+      bestB2 = b.y;
+    }
+  }
+}
+
+// ---- suspension ----------------------------------------------------------------------------------
+
+void saveState(uint slot) {
+  states[slot].origin = vec4(rayOrigin, rayTMin);
+  states[slot].direction = vec4(rayDir, bestT);
+  states[slot].throughput = vec4(throughput, bestB1);
+  states[slot].radiance = vec4(radiance, bestB2);
+  states[slot].pixelSum = vec4(pixelSum, lastPdf);
+  states[slot].hitPoint = vec4(hitPoint, hitTMin);
+  states[slot].hitNormal = vec4(hitNormal, hitGrazing);
+  states[slot].shadowDir = vec4(shadowDir, shadowTMax);
+  states[slot].pending = vec4(pending, shadowCos);
+  states[slot].phase = phase;
+  states[slot].bounce = bounce;
+  states[slot].lightIndex = lightIndex;
+  states[slot].stackSize = sp;
+  states[slot].hitPrim = hitPrim;
+  states[slot].hitMaterial = hitMaterial;
+  states[slot].sampleIndex = sampleIndex;
+  for (uint i = 0u; i < sp; ++i) {
+    states[slot].stack[i] = stack[i];
+    states[slot].stackT[i] = stackT[i];
+  }
+}
+
+void loadState(uint slot) {
+  rayOrigin = states[slot].origin.xyz;
+  rayTMin = states[slot].origin.w;
+  rayDir = states[slot].direction.xyz;
+  bestT = states[slot].direction.w;
+  throughput = states[slot].throughput.rgb;
+  bestB1 = states[slot].throughput.w;
+  radiance = states[slot].radiance.rgb;
+  bestB2 = states[slot].radiance.w;
+  pixelSum = states[slot].pixelSum.rgb;
+  lastPdf = states[slot].pixelSum.w;
+  hitPoint = states[slot].hitPoint.xyz;
+  hitTMin = states[slot].hitPoint.w;
+  hitNormal = states[slot].hitNormal.xyz;
+  hitGrazing = states[slot].hitNormal.w;
+  shadowDir = states[slot].shadowDir.xyz;
+  shadowTMax = states[slot].shadowDir.w;
+  pending = states[slot].pending.rgb;
+  shadowCos = states[slot].pending.w;
+  phase = states[slot].phase;
+  bounce = states[slot].bounce;
+  lightIndex = states[slot].lightIndex;
+  sp = states[slot].stackSize;
+  hitPrim = states[slot].hitPrim;
+  hitMaterial = states[slot].hitMaterial;
+  sampleIndex = states[slot].sampleIndex;
+  keySample();
+  for (uint i = 0u; i < sp; ++i) {
+    stack[i] = states[slot].stack[i];
+    stackT[i] = states[slot].stackT[i];
+  }
+}
+
+void main() {
+  // Workgroups visit the band's tiles in a scattered order (as in raytrace.comp).
+  uint tilesInBand = params.tilesX * ((params.bandHeight + kWorkgroupSize - 1u) / kWorkgroupSize);
+  uint tile = (gl_WorkGroupID.x * params.tileOrderStride) % tilesInBand;
+  uint x = (tile % params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
+  uint yInBand = (tile / params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
+  uint y = pc.bandY0 + yInBand;
+  if (x >= params.width || yInBand >= params.bandHeight || y >= params.height) return;
+  uint slot = yInBand * params.width + x;
+  // The full image's pixel: a crop draws the full render's random numbers and camera rays.
+  pixelX = x + params.originX;
+  pixelY = y + params.originY;
+  pixelIndex = pixelY * params.fullWidth + pixelX;
+
+  if (pc.resume != 0u) {
+    if (accumulation[slot].w != 0.0) return;   // finished in an earlier round
+    loadState(slot);
+  } else {
+    pixelSum = vec3(0.0);
+    sampleIndex = 0u;
+    if (path.sampleCount > 0u)
+      startCamera();
+    else
+      phase = kPhaseDone;
+  }
+
+  for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
+    if (phase == kPhaseLight)
+      lightStep();
+    else
+      traversalStep(step);
+  }
+
+  if (shadowRays + scatterRays + nonFinite > 0u) {
+    atomicAdd(counters.shadowRays, shadowRays);
+    atomicAdd(counters.reflectionRays, scatterRays);
+    atomicAdd(counters.nonFinite, nonFinite);
+  }
+  if (phase != kPhaseDone) {
+    saveState(slot);
+    accumulation[slot] = vec4(0.0);
+    atomicAdd(counters.suspended, 1u);
+    return;
+  }
+  accumulation[slot] = vec4(pixelSum, 1.0);
+}

@@ -1,0 +1,580 @@
+// The path integrators on the GPU (pathtrace.comp): closed forms (analyticdirect under a
+// square light, a white furnace), the invariants of a counter-based render (same seed, crops,
+// suspension), and statistical agreement of the sampling strategies (SPEC-PATHTRACING
+// section 4). The scenes are built in code. The validation layer stays silent throughout.
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "gpu/vulkan_path_renderer.h"
+#include "image/png.h"
+#include "scene/flatten.h"
+#include "scene/parse.h"
+#include "test_support.h"
+
+using namespace vkrt;
+using namespace vkrt::test;
+
+namespace {
+
+// ---- scenes --------------------------------------------------------------------------------
+
+std::uint32_t addMaterial(SceneDesc& s, Material m) {
+  s.materials.push_back(m);
+  return static_cast<std::uint32_t>(s.materials.size() - 1);
+}
+
+void addTriangle(SceneDesc& s, dvec3 a, dvec3 b, dvec3 c, std::uint32_t material) {
+  Triangle t;
+  t.p[0] = a;
+  t.p[1] = b;
+  t.p[2] = c;
+  t.material = material;
+  s.triangles.push_back(t);
+}
+
+// The quad a + u ab + v ac as two triangles whose face normal is normalize(cross(ab, ac)).
+void addQuad(SceneDesc& s, dvec3 a, dvec3 ab, dvec3 ac, std::uint32_t material) {
+  addTriangle(s, a, a + ab, a + ab + ac, material);
+  addTriangle(s, a, a + ab + ac, a + ac, material);
+}
+
+// `quadLight a ab ac L` as the parser makes it (scene_desc.h): the light and its two
+// triangles, facing cross(ac, ab), with a material that names it.
+void addQuadLight(SceneDesc& s, dvec3 a, dvec3 ab, dvec3 ac, dvec3 radiance) {
+  QuadLight q;
+  q.a = a;
+  q.ab = ab;
+  q.ac = ac;
+  q.radiance = radiance;
+  s.quadLights.push_back(q);
+  Material m;
+  m.ambient = dvec3(0.0);
+  m.emission = radiance;
+  m.quadLight = static_cast<int>(s.quadLights.size() - 1);
+  addQuad(s, a, ac, ab, addMaterial(s, m));
+}
+
+SceneDesc baseScene(int w, int h, Integrator integrator) {
+  SceneDesc s;
+  s.width = w;
+  s.height = h;
+  s.path.integrator = integrator;
+  s.path.spp = 64;   // samples uniform in the pixel (a render of spp 1 would sample the centres)
+  return s;
+}
+
+// A small Cornell-like box, open toward the camera: coloured diffuse walls, a Phong box and a
+// GGX sphere, one quad light under the ceiling.
+SceneDesc boxScene(int size) {
+  SceneDesc s = baseScene(size, size, Integrator::PathTracer);
+  s.camera.from = dvec3(0, 1, 3.2);
+  s.camera.at = dvec3(0, 1, 0);
+  s.camera.fovyDegrees = 45;
+  Material wall;
+  wall.ambient = dvec3(0.0);
+  wall.diffuse = dvec3(0.7, 0.7, 0.7);
+  std::uint32_t white = addMaterial(s, wall);
+  wall.diffuse = dvec3(0.7, 0.1, 0.1);
+  std::uint32_t red = addMaterial(s, wall);
+  wall.diffuse = dvec3(0.1, 0.7, 0.1);
+  std::uint32_t green = addMaterial(s, wall);
+  Material phong = wall;
+  phong.diffuse = dvec3(0.4, 0.4, 0.5);
+  phong.specular = dvec3(0.3, 0.3, 0.3);
+  phong.shininess = 20;
+  std::uint32_t glossy = addMaterial(s, phong);
+  Material ggx = wall;
+  ggx.diffuse = dvec3(0.2, 0.3, 0.2);
+  ggx.specular = dvec3(0.5, 0.4, 0.3);
+  ggx.brdf = BrdfModel::Ggx;
+  ggx.roughness = 0.3;
+  std::uint32_t metal = addMaterial(s, ggx);
+  // Walls facing inward: floor, ceiling, back, left, right.
+  addQuad(s, dvec3(-1, 0, 1), dvec3(2, 0, 0), dvec3(0, 0, -2), white);
+  addQuad(s, dvec3(-1, 2, -1), dvec3(2, 0, 0), dvec3(0, 0, 2), white);
+  addQuad(s, dvec3(-1, 0, -1), dvec3(2, 0, 0), dvec3(0, 2, 0), white);
+  addQuad(s, dvec3(-1, 0, 1), dvec3(0, 0, -2), dvec3(0, 2, 0), red);
+  addQuad(s, dvec3(1, 0, -1), dvec3(0, 0, 2), dvec3(0, 2, 0), green);
+  // A box (its top and two sides that face the camera).
+  addQuad(s, dvec3(-0.6, 0.6, 0.0), dvec3(0.5, 0, 0), dvec3(0, 0, -0.5), glossy);
+  addQuad(s, dvec3(-0.6, 0.0, 0.0), dvec3(0.5, 0, 0), dvec3(0, 0.6, 0), glossy);
+  addQuad(s, dvec3(-0.1, 0.0, 0.0), dvec3(0, 0, -0.5), dvec3(0, 0.6, 0), glossy);
+  Sphere ball;
+  ball.center = dvec3(0.45, 0.35, 0.2);
+  ball.radius = 0.35;
+  ball.worldFromObject = dmat4(1.0);
+  ball.objectFromWorld = dmat4(1.0);
+  ball.material = metal;
+  s.spheres.push_back(ball);
+  addQuadLight(s, dvec3(-0.3, 1.99, -0.3), dvec3(0, 0, 0.6), dvec3(0.6, 0, 0), dvec3(8, 7, 6));
+  return s;
+}
+
+// ---- rendering -------------------------------------------------------------------------------
+
+RadianceImage renderPath(const SceneDesc& scene, VulkanPathOptions options = {}, RayCounts* rays = nullptr,
+                         VulkanTimings* timings = nullptr) {
+  Context* context = gpuContextOrSkip();
+  if (!context) return {};
+  int before = context->validationMessages();
+  RayCounts counts;
+  RadianceImage image = renderVulkanPath(*context, flatten(scene), options, &counts, timings);
+  EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";
+  EXPECT_EQ(counts.nonFinite, 0u) << "the shader produced NaN or infinite samples";
+  if (rays) *rays = counts;
+  return image;
+}
+
+bool sameBits(const RadianceImage& a, const RadianceImage& b) {
+  return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
+         std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
+}
+
+// For a look at a failure: the image as a PNG (clamped, gamma 1) in the test-output folder.
+void save(const RadianceImage& r, const std::string& name) {
+  Image img(r.width, r.height);
+  for (std::size_t i = 0; i < r.rgb.size(); ++i) {
+    float v = r.rgb[i];
+    img.rgb[i] = static_cast<std::uint8_t>(v > 0.0f ? std::floor(std::min(v, 1.0f) * 255.0f) : 0.0f);
+  }
+  writePngAtomic(img, freshDir("gpu-path/" + name) + "/image.png");
+}
+
+// ---- statistics --------------------------------------------------------------------------------
+
+// The two-sided tail probability P(|T| > t) of Student's t with nu degrees of freedom, by
+// Simpson's rule on the density (t <= 60 is plenty here).
+double studentTwoSidedTail(double t, double nu) {
+  const double c = std::exp(std::lgamma((nu + 1) / 2) - std::lgamma(nu / 2)) / std::sqrt(nu * std::numbers::pi);
+  auto density = [&](double x) { return c * std::pow(1 + x * x / nu, -(nu + 1) / 2); };
+  const int n = 20000;
+  const double h = t / n;
+  double s = density(0) + density(t);
+  for (int i = 1; i < n; ++i) s += density(i * h) * (i % 2 ? 4 : 2);
+  return std::max(0.0, 1.0 - 2.0 * s * h / 3.0);
+}
+
+// The |t| beyond which a two-sided test of nu degrees of freedom rejects at level alpha.
+double studentCritical(double alpha, double nu) {
+  double lo = 0, hi = 60;
+  for (int i = 0; i < 60; ++i) {
+    double mid = (lo + hi) / 2;
+    (studentTwoSidedTail(mid, nu) > alpha ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+// Per-block t-tests that two images have the same expected value: in each b x b block and
+// channel, the pixel differences d = A - B are independent (the generator keys each pixel
+// apart) with mean 0 when both estimators are unbiased, so mean(d) / (sd(d) / sqrt(n)) follows
+// Student's t with n - 1 degrees of freedom. Each test runs at the Sidak-corrected level
+// 1 - (1 - familyAlpha)^(1 / tests), so that the whole family raises a false alarm with
+// probability familyAlpha. Returns the failing blocks' descriptions (empty: pass).
+std::vector<std::string> blockTTests(const RadianceImage& a, const RadianceImage& b, int block, double familyAlpha,
+                                     int familyTests) {
+  const int n = block * block;
+  const double alpha = 1.0 - std::pow(1.0 - familyAlpha, 1.0 / familyTests);
+  const double critical = studentCritical(alpha, n - 1);
+  std::vector<std::string> failures;
+  for (int by = 0; by + block <= a.height; by += block)
+    for (int bx = 0; bx + block <= a.width; bx += block)
+      for (int c = 0; c < 3; ++c) {
+        double sum = 0, sum2 = 0;
+        for (int y = by; y < by + block; ++y)
+          for (int x = bx; x < bx + block; ++x) {
+            double d = double(a.pixel(x, y)[c]) - double(b.pixel(x, y)[c]);
+            sum += d;
+            sum2 += d * d;
+          }
+        double mean = sum / n, var = (sum2 - n * mean * mean) / (n - 1);
+        double t = var > 0 ? mean / std::sqrt(var / n) : (mean == 0 ? 0 : INFINITY);
+        if (!(std::abs(t) <= critical))
+          failures.push_back("block (" + std::to_string(bx) + "," + std::to_string(by) + ") channel " +
+                             std::to_string(c) + ": t = " + std::to_string(t) + " beyond " + std::to_string(critical));
+      }
+  return failures;
+}
+
+// ---- closed forms -------------------------------------------------------------------------------
+
+// The form factor from a point to a parallel X x Y rectangle at height h with a corner right
+// above the point (the classic closed form; e.g. Howell's catalogue, configuration B-4):
+// F = 1/(2 pi) [x/sqrt(1+x^2) atan(y/sqrt(1+x^2)) + y/sqrt(1+y^2) atan(x/sqrt(1+y^2))], x = X/h, y = Y/h.
+double cornerFormFactor(double width, double depth, double h) {
+  double x = width / h, y = depth / h;
+  double sx = std::sqrt(1 + x * x), sy = std::sqrt(1 + y * y);
+  return (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2 * std::numbers::pi);
+}
+
+// A diffuse floor (y = 0) under a square light of side 2 at height h, facing down, whose corner
+// or centre is above the origin; the camera looks straight down at the origin through the
+// centre pixel of a 9x9 image (spp 1: the pixel centre).
+SceneDesc floorUnderSquareLight(double h, bool cornerAbove, dvec3 kd, dvec3 radiance) {
+  SceneDesc s = baseScene(9, 9, Integrator::AnalyticDirect);
+  s.camera.from = dvec3(0, h / 2, 0);
+  s.camera.at = dvec3(0, 0, 0);
+  s.camera.up = dvec3(0, 0, -1);
+  s.camera.fovyDegrees = 30;
+  s.path.spp = 1;   // the centre pixel's ray: straight down at the origin
+  Material floor;
+  floor.ambient = dvec3(0.0);
+  floor.diffuse = kd;
+  addQuad(s, dvec3(-10, 0, 10), dvec3(20, 0, 0), dvec3(0, 0, -20), addMaterial(s, floor));
+  dvec3 a = cornerAbove ? dvec3(0, h, 0) : dvec3(-1, h, -1);
+  addQuadLight(s, a, dvec3(0, 0, 2), dvec3(2, 0, 0), radiance);   // cross(ac, ab) = -y: facing down
+  return s;
+}
+
+// An inward-facing closed box whose every wall emits Le and reflects with albedo a (diffuse):
+// the radiance everywhere inside is Le (1 + a + ... + a^D) for maxdepth D, Le / (1 - a) without
+// a limit.
+SceneDesc furnaceScene(double albedo, double emission) {
+  SceneDesc s = baseScene(24, 24, Integrator::PathTracer);
+  s.camera.from = dvec3(0.1, 0.2, 0.3);
+  s.camera.at = dvec3(0.4, -0.3, -1);
+  s.camera.fovyDegrees = 100;
+  Material m;
+  m.ambient = dvec3(0.0);
+  m.diffuse = dvec3(albedo);
+  m.emission = dvec3(emission);
+  std::uint32_t wall = addMaterial(s, m);
+  const dvec3 x(2, 0, 0), y(0, 2, 0), z(0, 0, 2), o(-1, -1, -1);
+  addQuad(s, o, x, y, wall);           // back (z = -1), facing +z
+  addQuad(s, o + z, y, x, wall);       // front, facing -z
+  addQuad(s, o, z, x, wall);           // floor, facing +y
+  addQuad(s, o + y, x, z, wall);       // ceiling, facing -y
+  addQuad(s, o, y, z, wall);           // left, facing +x
+  addQuad(s, o + x, z, y, wall);       // right, facing -x
+  return s;
+}
+
+}  // namespace
+
+// analyticdirect at the pixel that sees the origin: (kd / pi) L (Phi . n) against the form
+// factor's closed form, kd L F, to float32 rounding.
+TEST(GpuPath, AnalyticDirectMatchesTheClosedFormUnderASquareLight) {
+  VKRT_REQUIRE_GPU(context);
+  const double h = 1.5;
+  const dvec3 kd(0.8, 0.5, 0.25), radiance(3.0, 2.0, 1.0);
+  for (bool corner : {false, true}) {
+    RadianceImage img = renderPath(floorUnderSquareLight(h, corner, kd, radiance));
+    ASSERT_EQ(img.width, 9);
+    double f = corner ? cornerFormFactor(2, 2, h) : 4 * cornerFormFactor(1, 1, h);
+    for (int c = 0; c < 3; ++c) {
+      double expected = kd[c] * radiance[c] * f;
+      EXPECT_NEAR(img.pixel(4, 4)[c], expected, 2e-6 * expected + 1e-7) << (corner ? "corner" : "centre") << " c " << c;
+    }
+  }
+}
+
+// `direct` at the same pixel: light sampling of the square (unstratified and stratified)
+// estimates the same integral. Sixteen renders of disjoint sample ranges are independent
+// estimates of the pixel; a t-test (15 degrees of freedom) at a false-alarm rate of 1e-4 per
+// channel and setting.
+TEST(GpuPath, DirectConvergesToTheClosedForm) {
+  VKRT_REQUIRE_GPU(context);
+  const double h = 1.5;
+  const dvec3 kd(0.8, 0.5, 0.25), radiance(3.0, 2.0, 1.0);
+  SceneDesc s = floorUnderSquareLight(h, false, kd, radiance);
+  s.path.integrator = Integrator::Direct;
+  const double f = 4 * cornerFormFactor(1, 1, h);
+  const int batches = 16;
+  const double critical = studentCritical(1e-4, batches - 1);
+  for (bool stratify : {false, true}) {
+    s.path.lightSamples = 4;
+    s.path.lightStratify = stratify;
+    double sum[3] = {}, sum2[3] = {};
+    for (int k = 0; k < batches; ++k) {
+      VulkanPathOptions o;
+      o.renderSpp = 1;   // every sample through the pixel centre
+      o.firstSample = static_cast<std::uint32_t>(4 * k);
+      o.sampleCount = 4;
+      RadianceImage img = renderPath(s, o);
+      ASSERT_EQ(img.width, 9);
+      for (int c = 0; c < 3; ++c) {
+        sum[c] += img.pixel(4, 4)[c];
+        sum2[c] += double(img.pixel(4, 4)[c]) * img.pixel(4, 4)[c];
+      }
+    }
+    for (int c = 0; c < 3; ++c) {
+      double mean = sum[c] / batches, sd = std::sqrt((sum2[c] - batches * mean * mean) / (batches - 1));
+      double expected = kd[c] * radiance[c] * f;
+      EXPECT_GT(sd, 0.0);
+      EXPECT_LE(std::abs(mean - expected) / (sd / std::sqrt(batches)), critical)
+          << (stratify ? "stratified" : "uniform") << " channel " << c << ": " << mean << " vs " << expected;
+    }
+  }
+}
+
+// GGX of roughness 0 (`brdf ggx` without `roughness`) gives no NaN (renderPath checks).
+TEST(GpuPath, GgxOfRoughnessZeroIsFinite) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(12);
+  for (Material& m : s.materials)
+    if (m.brdf == BrdfModel::Ggx) m.roughness = 0.0;
+  for (Sampling sampling : {Sampling::Brdf, Sampling::Cosine}) {
+    s.path.sampling = sampling;
+    s.path.nextEvent = NextEvent::Mis;
+    VulkanPathOptions o;
+    o.sampleCount = 4;
+    renderPath(s, o);
+  }
+}
+
+// Every wall emits Le and reflects a: with maxdepth D every sample is exactly the geometric
+// sum (cosine sampling makes each bounce's weight exactly a); without a limit, Russian
+// roulette ends the paths and the mean converges to Le / (1 - a). The test: a t-test of the
+// pixel means (independent, of one expected value) at a false-alarm rate of 1e-4 per channel.
+TEST(GpuPath, WhiteFurnaceConvergesToLeOverOneMinusAlbedo) {
+  VKRT_REQUIRE_GPU(context);
+  const double a = 0.5, le = 0.25;
+  SceneDesc s = furnaceScene(a, le);
+  s.path.sampling = Sampling::Cosine;
+  s.maxDepth = 3;
+  VulkanPathOptions o;
+  o.sampleCount = 2;
+  RadianceImage depth3 = renderPath(s, o);
+  // Every sample is the series, but for the few paths that leave the box: from within the ray
+  // offset (1e-3) of an edge, a ray toward the adjacent wall ignores it (SPEC section 7).
+  const double series = le * (1 + a + a * a + a * a * a);
+  std::size_t exact = 0;
+  for (float v : depth3.rgb) {
+    EXPECT_LE(v, series + 1e-6);
+    exact += std::abs(v - series) < 1e-6;
+  }
+  EXPECT_GE(exact, depth3.rgb.size() * 99 / 100);
+  s.maxDepth = -1;
+  s.path.russianRoulette = true;
+  s.path.sampling = Sampling::Hemisphere;
+  o.sampleCount = 16;
+  o.seed = 7;
+  RadianceImage unlimited = renderPath(s, o);
+  save(unlimited, "furnace");
+  const double expected = le / (1 - a);
+  const int n = unlimited.width * unlimited.height;
+  const double critical = studentCritical(1e-4, n - 1);
+  for (int c = 0; c < 3; ++c) {
+    double sum = 0, sum2 = 0;
+    for (int i = 0; i < n; ++i) {
+      double v = unlimited.rgb[3 * i + c];
+      sum += v;
+      sum2 += v * v;
+    }
+    double mean = sum / n, sd = std::sqrt((sum2 - n * mean * mean) / (n - 1));
+    double t = (mean - expected) / (sd / std::sqrt(n));
+    EXPECT_LE(std::abs(t), critical) << "channel " << c << ": mean " << mean << ", expected " << expected;
+    EXPECT_GT(sd, 0.0);
+  }
+}
+
+TEST(GpuPath, SameSeedSameBitsOtherSeedOtherImage) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(16);
+  s.path.nextEvent = NextEvent::Mis;
+  s.path.sampling = Sampling::Brdf;
+  VulkanPathOptions o;
+  o.sampleCount = 4;
+  o.seed = 3;
+  RadianceImage a = renderPath(s, o), b = renderPath(s, o);
+  EXPECT_TRUE(sameBits(a, b));
+  o.seed = 4;
+  EXPECT_FALSE(sameBits(a, renderPath(s, o)));
+  // Storage and texel reads differ only in their loads.
+  o.seed = 3;
+  o.reads = SceneReads::Storage;
+  EXPECT_TRUE(sameBits(a, renderPath(s, o)));
+  o.reads = SceneReads::Texel;
+  EXPECT_TRUE(sameBits(a, renderPath(s, o)));
+  // Specialization compiles out only what the scene lacks.
+  o.specialize = false;
+  EXPECT_TRUE(sameBits(a, renderPath(s, o)));
+}
+
+// A crop draws the numbers and camera rays of the full image: its pixels are the full
+// render's, bit for bit.
+TEST(GpuPath, CropIsTheFullRendersRegionBitForBit) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(20);
+  s.path.nextEvent = NextEvent::On;
+  s.path.lightSamples = 4;
+  s.path.lightStratify = true;
+  VulkanPathOptions o;
+  o.sampleCount = 3;
+  o.seed = 11;
+  RadianceImage full = renderPath(s, o);
+  o.crop = PixelRect{3, 5, 17, 12};
+  RadianceImage crop = renderPath(s, o);
+  ASSERT_EQ(crop.width, 14);
+  ASSERT_EQ(crop.height, 7);
+  for (int y = 0; y < crop.height; ++y)
+    for (int x = 0; x < crop.width; ++x)
+      ASSERT_EQ(std::memcmp(crop.pixel(x, y), full.pixel(x + 3, y + 5), 3 * sizeof(float)), 0) << x << "," << y;
+}
+
+// A pixel that runs out of steps saves its state and resumes in the next dispatch: the image
+// must be the same, bit for bit, as with a budget that never runs out (unlimited depth with
+// Russian roulette, MIS, point lights, every kind of step).
+TEST(GpuPath, SuspendingAfterEveryFewStepsChangesNoBit) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(16);
+  s.maxDepth = -1;
+  s.path.russianRoulette = true;
+  s.path.nextEvent = NextEvent::Mis;
+  s.path.sampling = Sampling::Brdf;
+  s.path.lightSamples = 2;
+  Light point;
+  point.type = LightType::Point;
+  point.vec = dvec3(0.5, 1.5, 0.5);
+  point.color = dvec3(0.3, 0.3, 0.3);
+  s.lights.push_back(point);
+  VulkanPathOptions o;
+  o.sampleCount = 3;
+  o.stepBudget = 13000;   // within llvmpipe's limit (13000 x (1 + kMaxLeafPrims) < 65,535)
+  VulkanTimings whole, pieces;
+  RadianceImage a = renderPath(s, o, nullptr, &whole);
+  EXPECT_EQ(whole.suspensions, 0u) << "make the scene easier: the reference render must not suspend";
+  for (std::uint32_t budget : {2u, 5u, 37u}) {
+    o.stepBudget = budget;
+    RadianceImage b = renderPath(s, o, nullptr, &pieces);
+    EXPECT_GT(pieces.suspensions, 1000u);
+    EXPECT_TRUE(sameBits(a, b)) << "budget " << budget;
+  }
+}
+
+// Batches [0, 4) and [4, 8) average to the render of [0, 8) (up to the order of float sums).
+TEST(GpuPath, SampleBatchesAverageToOneRender) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(12);
+  s.path.nextEvent = NextEvent::On;
+  VulkanPathOptions o;
+  o.seed = 5;
+  o.sampleCount = 8;
+  RadianceImage all = renderPath(s, o);
+  EXPECT_EQ(all.samples, 8u);
+  o.sampleCount = 4;
+  o.renderSpp = 8;
+  RadianceImage first = renderPath(s, o);
+  o.firstSample = 4;
+  RadianceImage second = renderPath(s, o);
+  for (std::size_t i = 0; i < all.rgb.size(); ++i)
+    ASSERT_NEAR(all.rgb[i], 0.5f * (first.rgb[i] + second.rgb[i]), 1e-5f * std::max(1.0f, all.rgb[i])) << i;
+}
+
+// A render of spp 1 samples the pixel centres (gpu_types.h, the camera rule).
+TEST(GpuPath, SppOneSamplesPixelCentres) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(12);
+  s.path.integrator = Integrator::AnalyticDirect;   // no noise: the image depends only on the rays
+  VulkanPathOptions o;
+  o.sampleCount = 1;
+  o.renderSpp = 1;
+  RadianceImage centre = renderPath(s, o);
+  o.seed = 9;
+  EXPECT_TRUE(sameBits(centre, renderPath(s, o)));
+  o.renderSpp = 2;
+  EXPECT_FALSE(sameBits(centre, renderPath(s, o)));
+}
+
+// The depth rule (SPEC-PATHTRACING section 4): maxdepth 0 shows only what the camera sees
+// emitting, and maxdepth 1 is direct lighting: the `direct` integrator's expected image.
+TEST(GpuPath, MaxDepthZeroShowsEmittersOnly) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(16);
+  s.maxDepth = 0;
+  s.path.nextEvent = NextEvent::On;
+  VulkanPathOptions o;
+  o.sampleCount = 2;
+  RadianceImage img = renderPath(s, o);
+  int lit = 0;
+  for (int i = 0; i < img.width * img.height; ++i) {
+    // Of the two samples none, one or both saw the light (8, 7, 6): exact in float.
+    const float* p = img.rgb.data() + 3 * i;
+    float k = p[0] / 8.0f;
+    EXPECT_TRUE((k == 0.0f || k == 0.5f || k == 1.0f) && p[1] == 7.0f * k && p[2] == 6.0f * k) << i;
+    lit += k == 1.0f;
+  }
+  EXPECT_GT(lit, 0);
+}
+
+// SPEC-PATHTRACING section 4's invariant: NEE off, on and MIS (and with them Russian
+// roulette, the three samplings, light samples and strata) change the noise, not the
+// expected image. Per-block t-tests (8x8 blocks of a 32x32 image) against NEE on, family
+// false-alarm rate 1e-3 over all the tests of this test.
+TEST(GpuPathSlow, StrategiesConvergeToTheSameImage) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc base = boxScene(32);
+  base.maxDepth = 3;
+  VulkanPathOptions o;
+  o.sampleCount = 64;
+  struct Variant {
+    const char* name;
+    NextEvent nee;
+    Sampling sampling;
+    bool rr;
+    int lightSamples;
+    bool stratify;
+  };
+  const Variant variants[] = {
+      {"nee-off-cosine", NextEvent::Off, Sampling::Cosine, false, 1, false},
+      {"nee-mis-brdf", NextEvent::Mis, Sampling::Brdf, false, 1, false},
+      {"nee-mis-hemisphere-rr", NextEvent::Mis, Sampling::Hemisphere, true, 4, true},
+      {"nee-on-brdf-rr-4", NextEvent::On, Sampling::Brdf, true, 4, false},
+  };
+  SceneDesc refScene = base;
+  refScene.path.nextEvent = NextEvent::On;
+  refScene.path.sampling = Sampling::Cosine;
+  o.seed = 1000;
+  RadianceImage reference = renderPath(refScene, o);
+  save(reference, "strategies-reference");
+  const int blocks = 16, tests = blocks * 3 * static_cast<int>(std::size(variants));
+  std::uint32_t seed = 1;
+  for (const Variant& v : variants) {
+    SceneDesc s = base;
+    s.path.nextEvent = v.nee;
+    s.path.sampling = v.sampling;
+    s.path.russianRoulette = v.rr;
+    s.path.lightSamples = v.lightSamples;
+    s.path.lightStratify = v.stratify;
+    o.seed = seed++;
+    RadianceImage img = renderPath(s, o);
+    auto failures = blockTTests(img, reference, 8, 1e-3, tests);
+    if (!failures.empty()) save(img, std::string("strategies-") + v.name);
+    EXPECT_TRUE(failures.empty()) << v.name << ": " << failures.size() << " blocks differ, first " << failures[0];
+  }
+  // The test's power: one bounce more (maxdepth 4) is a different image, and must be told apart.
+  SceneDesc deeper = refScene;
+  deeper.maxDepth = 4;
+  o.seed = seed++;
+  EXPECT_FALSE(blockTTests(renderPath(deeper, o), reference, 8, 1e-3, tests).empty());
+}
+
+// Every course scene of hw2-hw4 renders on the GPU: a 24x24 crop below the image's centre, one
+// sample per pixel (the dragons' 100,000 triangles included), no NaN, the validation layer
+// silent, something lit.
+class GpuPathCourseScene : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(GpuPathCourseScene, RendersACropWithoutNaN) {
+  auto dir = cse168Dir();
+  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc scene = parseSceneFile(*dir + "/scenes/" + GetParam() + ".test");
+  VulkanPathOptions o;
+  o.sampleCount = 1;
+  const int x0 = scene.width / 2 - 12, y0 = scene.height * 3 / 4 - 12;
+  o.crop = PixelRect{x0, y0, x0 + 24, y0 + 24};
+  RadianceImage img = renderPath(scene, o);
+  ASSERT_EQ(img.width, 24);
+  float brightest = 0;
+  for (float v : img.rgb) brightest = std::max(brightest, v);
+  EXPECT_GT(brightest, 0.0f);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cse168, GpuPathCourseScene,
+                         ::testing::Values("hw2/analytic", "hw2/cornell", "hw2/direct3x3", "hw2/direct9", "hw2/dragon",
+                                           "hw2/sphere", "hw3/cornellNEE", "hw3/cornellRR", "hw3/cornellSimple",
+                                           "hw3/dragon", "hw4/cornellBRDF", "hw4/cornellCosine", "hw4/cornellMIS",
+                                           "hw4/dragon", "hw4/ggx", "hw4/mis"),
+                         [](const auto& p) { return testName(std::string(p.param).replace(3, 1, "_")); });

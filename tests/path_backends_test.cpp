@@ -1,0 +1,78 @@
+// The two backends follow the same paths: the CPU reference (double precision) and the shader
+// (float32) draw the same random numbers by the rules of gpu_types.h, so one seed gives nearly
+// the same image on both, pixel by pixel, on every CSE 168 course scene. Where a float32 ray
+// and its double twin part at an edge, the two paths go separate ways: a few pixels may differ.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "cpu/path_reference.h"
+#include "gpu/vulkan_path_renderer.h"
+#include "image/image.h"
+#include "scene/bvh.h"
+#include "scene/flatten.h"
+#include "scene/parse.h"
+#include "test_support.h"
+
+using namespace vkrt;
+using namespace vkrt::test;
+
+namespace {
+
+// The image as the output encodes it (SPEC-PATHTRACING section 1, `gamma`).
+Image encoded(const RadianceImage& r, double gamma) {
+  Image img(r.width, r.height);
+  for (std::size_t i = 0; i < r.rgb.size(); ++i) img.rgb[i] = radianceToByte(std::pow(std::max(0.0, double(r.rgb[i])), 1.0 / gamma));
+  return img;
+}
+
+double mean(const RadianceImage& r) {
+  double s = 0;
+  for (float v : r.rgb) s += v;
+  return s / static_cast<double>(r.rgb.size());
+}
+
+class PathBackends : public ::testing::TestWithParam<const char*> {};
+
+// A 32x32 crop below the image's centre, samples [0, 4) of the scene's render, seed 17.
+// Tolerance: at most 3% of the pixels (30 of 1024) more than 2/255 apart in some channel, and
+// the crop's mean radiance within 1% (float32 against double; paths that part at an edge).
+TEST_P(PathBackends, SameSeedNearlyTheSameImage) {
+  auto dir = cse168Dir();
+  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+  Context* context = gpuContextOrSkip();
+  if (!context) return;
+  SceneDesc scene = parseSceneFile(*dir + "/scenes/" + GetParam() + ".test");
+  const int x0 = scene.width / 2 - 16, y0 = scene.height * 3 / 4 - 16;
+  const PixelRect crop{x0, y0, x0 + 32, y0 + 32};
+
+  PathOptions cpu;
+  cpu.seed = 17;
+  cpu.sampleCount = 4;
+  cpu.crop = crop;
+  RadianceImage onCpu = renderPathReference(scene, buildBvh(scene), cpu, nullptr);
+
+  VulkanPathOptions gpu;
+  gpu.seed = 17;
+  gpu.sampleCount = 4;
+  gpu.crop = crop;
+  int before = context->validationMessages();
+  RadianceImage onGpu = renderVulkanPath(*context, flatten(scene), gpu, nullptr, nullptr);
+  EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";
+
+  ASSERT_EQ(onCpu.width, 32);
+  ASSERT_EQ(onGpu.width, 32);
+  std::string name = std::string("path-backends-") + testName(std::string(GetParam()).replace(3, 1, "_"));
+  EXPECT_TRUE(imagesClose(name, encoded(onGpu, scene.path.gamma), encoded(onCpu, scene.path.gamma), 2, 30));
+  EXPECT_NEAR(mean(onGpu), mean(onCpu), 0.01 * mean(onCpu) + 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cse168, PathBackends,
+                         ::testing::Values("hw2/analytic", "hw2/cornell", "hw2/direct3x3", "hw2/direct9", "hw2/dragon",
+                                           "hw2/sphere", "hw3/cornellNEE", "hw3/cornellRR", "hw3/cornellSimple",
+                                           "hw3/dragon", "hw4/cornellBRDF", "hw4/cornellCosine", "hw4/cornellMIS",
+                                           "hw4/dragon", "hw4/ggx", "hw4/mis"),
+                         [](const auto& p) { return testName(std::string(p.param).replace(3, 1, "_")); });
+
+}  // namespace
