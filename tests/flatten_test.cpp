@@ -2,6 +2,7 @@
 // and every box containing its contents.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <gtest/gtest.h>
 
@@ -71,6 +72,36 @@ TEST(Flatten, CarriesValuesIntoGpuLayouts) {
   EXPECT_EQ(m.ambient.x, 0.2f);
 }
 
+// Many triangles are converted in two halves on two threads: each triangle keeps its index
+// and its own vertex normals, numbered in triangle order.
+TEST(Flatten, ManyTrianglesKeepTheirOrderAndTheirNormals) {
+  SceneDesc s = parseScene("size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\n", "many");
+  for (int i = 0; i < 120000; ++i) {
+    Triangle t;
+    const double x = 0.001 * i;
+    t.p[0] = dvec3(x, 0.0, 0.0);
+    t.p[1] = dvec3(x + 1.0, 0.0, 0.0);
+    t.p[2] = dvec3(x, 1.0, 0.0);
+    t.smooth = i % 3 == 0;
+    for (dvec3& n : t.n) n = glm::normalize(dvec3(1.0, static_cast<double>(i), 0.0));
+    s.triangles.push_back(t);
+  }
+  GpuScene g = flatten(s);
+  ASSERT_EQ(g.triangles.size(), s.triangles.size());
+  ASSERT_EQ(g.triangleNormals.size(), 40000u);
+  std::uint32_t next = 0;
+  for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+    const gpu::GpuTriangle& t = g.triangles[i];
+    ASSERT_EQ(t.p1.x, static_cast<float>(s.triangles[i].p[1].x - g.origin.x)) << "triangle " << i;
+    if (!s.triangles[i].smooth) {
+      ASSERT_EQ(t.normalsIndex, gpu::kNoNormals) << "triangle " << i;
+      continue;
+    }
+    ASSERT_EQ(t.normalsIndex, next++) << "triangle " << i;
+    ASSERT_EQ(g.triangleNormals[t.normalsIndex].n2.y, static_cast<float>(s.triangles[i].n[2].y)) << "triangle " << i;
+  }
+}
+
 // Walks the tree with the chain of ancestors: every primitive (not dropped as degenerate) is
 // in exactly one leaf of at most 4, inside every enclosing box. Returns the depth reached.
 int checkTree(const SceneDesc& s, const Bvh& bvh) {
@@ -124,6 +155,37 @@ TEST(Bvh, EveryPrimitiveInExactlyOneLeafInsideEveryEnclosingBox) {
   int maxDepth = checkTree(s, bvh);
   EXPECT_LT(maxDepth, 40);   // a balanced-ish tree for 3200 scattered primitives
   EXPECT_EQ(bvh.depth, maxDepth);
+}
+
+// The surface-area cost of the tree (one per interior node, a leaf's count, each weighted by
+// its box's area relative to the root's): what a traversal expects to test per ray. Pins the
+// tree's quality: a faster build must not make a worse tree.
+TEST(Bvh, SurfaceAreaCostOfARandomSceneStaysAtTheBinnedSahTree) {
+  SceneDesc s = randomScene(3000, 200, 7);
+  Bvh bvh = buildBvh(s);
+  auto area = [](const gpu::GpuBvhNode& n) {
+    double x = n.maxX - n.minX, y = n.maxY - n.minY, z = n.maxZ - n.minZ;
+    return 2.0 * (x * y + y * z + z * x);
+  };
+  double cost = 0.0;
+  for (const gpu::GpuBvhNode& n : bvh.nodes) cost += area(n) / area(bvh.nodes[0]) * (n.primCount > 0 ? n.primCount : 1);
+  EXPECT_LE(cost, 20.67);   // 20.667 with 16 bins, both for the sweep over all bins and the sparse one
+  EXPECT_GT(cost, 15.0);    // (a much lower figure would mean that the cost is measured wrongly)
+}
+
+// Subtrees built on other threads are appended in the order one thread writes them.
+TEST(Bvh, SameTreeForEveryThreadCount) {
+  SceneDesc s = randomScene(30000, 50, 11);
+  const Bvh one = buildBvh(s, dvec3(0.0), 1);
+  checkTree(s, one);
+  for (int threads : {2, 3, 8}) {
+    const Bvh many = buildBvh(s, dvec3(0.0), threads);
+    ASSERT_EQ(many.nodes.size(), one.nodes.size()) << threads << " threads";
+    EXPECT_EQ(std::memcmp(many.nodes.data(), one.nodes.data(), one.nodes.size() * sizeof(gpu::GpuBvhNode)), 0)
+        << threads << " threads";
+    EXPECT_EQ(many.primRefs, one.primRefs) << threads << " threads";
+    EXPECT_EQ(many.depth, one.depth) << threads << " threads";
+  }
 }
 
 // Centroids that span the whole float range: a sum or difference of two of them overflows.

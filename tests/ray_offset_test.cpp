@@ -74,6 +74,20 @@ TEST(RayOffset, TrianglesConnectedThroughSharedVerticesAreOneObject) {
   EXPECT_EQ(primitiveOffsets(parseScene(soup, "soup.test")).objects, 1);
 }
 
+// More vertex positions than the table of positions first holds (it grows on the way): 2,000
+// separate triangles, then one that shares vertex positions with the first and the last of
+// them, are 1,999 objects.
+TEST(RayOffset, PositionsSeenBeforeTheTableGrewStillJoin) {
+  std::string s = header();
+  for (int i = 0; i < 2000; ++i) {
+    const std::string x0 = std::to_string(3 * i), x1 = std::to_string(3 * i + 1);
+    s += "vertex " + x0 + " 0 0\nvertex " + x1 + " 0 0\nvertex " + x0 + " 1 0\n";
+    s += "tri " + std::to_string(3 * i) + " " + std::to_string(3 * i + 1) + " " + std::to_string(3 * i + 2) + "\n";
+  }
+  s += "tri 0 1 5997\n";
+  EXPECT_EQ(primitiveOffsets(parseScene(s, "separate.test")).objects, 1999);
+}
+
 // One vast object must not change the offset of the small ones on it: a ground plane 20,000
 // units wide under spheres of radius 0.1 to 0.5 and a small box.
 TEST(RayOffset, AVastFloorTakesTheOffsetOfTheSmallObjectsOnIt) {

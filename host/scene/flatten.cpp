@@ -17,6 +17,9 @@
 namespace vkrt {
 namespace {
 
+// Triangles are converted on two threads from this many on.
+constexpr std::size_t kParallelMinTriangles = 50000;
+
 gpu::vec4 f4(const dvec3& v, float w = 0.0f) {
   return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), w};
 }
@@ -113,25 +116,12 @@ gpu::GpuPathParams pathParams(const SceneDesc& scene, const dvec3& origin) {
   return p;
 }
 
-}  // namespace
-
-GpuScene flatten(const SceneDesc& scene) {
-  GpuScene g;
-  g.width = static_cast<std::uint32_t>(scene.width);
-  g.height = static_cast<std::uint32_t>(scene.height);
-  g.maxDepth = static_cast<std::uint32_t>(scene.maxDepth);
-  const dvec3 origin = floatFrameOrigin(scene);
-  g.origin = origin;
-  g.push = cameraConstants(scene, origin);
-  cutoffConstants(scene, g.push);
-  // The ray offsets and the BVH do not depend on each other: the offsets on another thread.
-  std::future<PrimitiveOffsets> offsetsLater =
-      std::async(std::launch::async, [&scene] { return primitiveOffsets(scene); });
-  g.bvh = buildBvh(scene, origin);
-  const PrimitiveOffsets offsets = offsetsLater.get();
-  const dmat4 fromOrigin = glm::translate(dmat4(1.0), origin);
-  g.triangles.reserve(scene.triangles.size());
-  for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+// Triangles [begin, end) into their GPU layout at the same indices; the normals of smooth
+// ones are appended to `normals`, their normalsIndex counted from its size.
+void convertTriangles(const SceneDesc& scene, const dvec3& origin, const PrimitiveOffsets& offsets,
+                      std::size_t begin, std::size_t end, std::vector<gpu::GpuTriangle>& out,
+                      std::vector<gpu::GpuTriangleNormals>& normals) {
+  for (std::size_t i = begin; i < end; ++i) {
     const Triangle& t = scene.triangles[i];
     gpu::GpuTriangle gt{};
     gt.rayOffset = static_cast<float>(offsets.triangles[i]);
@@ -149,10 +139,45 @@ GpuScene flatten(const SceneDesc& scene) {
     gt.materialIndex = t.material;
     gt.normalsIndex = gpu::kNoNormals;
     if (t.smooth) {
-      gt.normalsIndex = static_cast<gpu::uint>(g.triangleNormals.size());
-      g.triangleNormals.push_back({f4(t.n[0]), f4(t.n[1]), f4(t.n[2])});
+      gt.normalsIndex = static_cast<gpu::uint>(normals.size());
+      normals.push_back({f4(t.n[0]), f4(t.n[1]), f4(t.n[2])});
     }
-    g.triangles.push_back(gt);
+    out[i] = gt;
+  }
+}
+
+}  // namespace
+
+GpuScene flatten(const SceneDesc& scene) {
+  GpuScene g;
+  g.width = static_cast<std::uint32_t>(scene.width);
+  g.height = static_cast<std::uint32_t>(scene.height);
+  g.maxDepth = static_cast<std::uint32_t>(scene.maxDepth);
+  const dvec3 origin = floatFrameOrigin(scene);
+  g.origin = origin;
+  g.push = cameraConstants(scene, origin);
+  cutoffConstants(scene, g.push);
+  // The ray offsets and the BVH do not depend on each other: the offsets on another thread.
+  std::future<PrimitiveOffsets> offsetsLater =
+      std::async(std::launch::async, [&scene] { return primitiveOffsets(scene); });
+  g.bvh = buildBvh(scene, origin);
+  const PrimitiveOffsets offsets = offsetsLater.get();
+  const dmat4 fromOrigin = glm::translate(dmat4(1.0), origin);
+  // The triangles in two halves, the second on another thread when there are many; each half
+  // numbers its smooth triangles' normals from 0, and the second's are moved after the first's.
+  const std::size_t nt = scene.triangles.size();
+  g.triangles.resize(nt);
+  std::vector<gpu::GpuTriangleNormals> secondNormals;
+  const std::size_t half = nt >= kParallelMinTriangles ? nt / 2 : nt;
+  auto secondHalf = std::async(nt >= kParallelMinTriangles ? std::launch::async : std::launch::deferred,
+                               [&] { convertTriangles(scene, origin, offsets, half, nt, g.triangles, secondNormals); });
+  convertTriangles(scene, origin, offsets, 0, half, g.triangles, g.triangleNormals);
+  secondHalf.get();
+  if (!secondNormals.empty()) {
+    const auto shift = static_cast<gpu::uint>(g.triangleNormals.size());
+    for (std::size_t i = half; i < nt; ++i)
+      if (g.triangles[i].normalsIndex != gpu::kNoNormals) g.triangles[i].normalsIndex += shift;
+    g.triangleNormals.insert(g.triangleNormals.end(), secondNormals.begin(), secondNormals.end());
   }
   g.spheres.reserve(scene.spheres.size());
   for (std::size_t i = 0; i < scene.spheres.size(); ++i) {

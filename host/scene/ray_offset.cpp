@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <future>
 #include <limits>
 #include <numeric>
 
@@ -14,6 +15,9 @@
 
 namespace vkrt {
 namespace {
+
+// Scene bounds are measured on two threads from this many triangles on.
+constexpr std::size_t kParallelMinTriangles = 50000;
 
 struct Box {
   dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
@@ -61,15 +65,16 @@ struct DisjointSets {
 
 // Joins triangles that share a vertex position (exactly equal doubles), through an
 // open-addressing table of corners (3 * triangle + k), the first corner seen at a position.
+// The table starts at twice the triangle count (a closed mesh has about half as many
+// positions as triangles) and doubles when half full (a soup of separate triangles has three
+// times as many): a table sized for every corner (64 MB for a million triangles) spent most
+// of its time in cache misses and in the kernel clearing its pages.
 void joinSharedVertices(const std::vector<Triangle>& triangles, DisjointSets& sets) {
   constexpr std::uint32_t kEmpty = 0xFFFFFFFFu;
-  std::size_t capacity = 16;
-  while (capacity < 2 * 3 * triangles.size()) capacity *= 2;
   struct Slot {
     std::uint32_t hash;            // the position's hash, checked before the position itself
     std::uint32_t corner = kEmpty;
   };
-  std::vector<Slot> table(capacity);
   auto corner = [&triangles](std::uint32_t c) -> const dvec3& { return triangles[c / 3].p[c % 3]; };
   auto hash = [](const dvec3& p) {
     std::uint64_t h = 0;
@@ -85,13 +90,41 @@ void joinSharedVertices(const std::vector<Triangle>& triangles, DisjointSets& se
     h *= 0x94D049BB133111EBull;
     return h ^ (h >> 31);
   };
-  for (std::uint32_t c = 0; c < 3 * triangles.size(); ++c) {
+  std::size_t capacity = 16;
+  while (capacity < 2 * triangles.size()) capacity *= 2;
+  std::vector<Slot> table(capacity);
+  std::size_t used = 0;
+  // Puts a corner whose position is not in the table into the first free slot of its probe.
+  auto place = [&](std::uint64_t h, std::uint32_t c) {
+    std::size_t s = h & (capacity - 1);
+    while (table[s].corner != kEmpty) s = (s + 1) & (capacity - 1);
+    table[s] = {static_cast<std::uint32_t>(h >> 32), c};
+  };
+  // The hashes of the next kAhead corners are computed early and their slots prefetched: the
+  // probes are cache misses, and this way several are under way at once.
+  constexpr std::uint32_t kAhead = 16;
+  std::uint64_t ahead[kAhead];
+  const std::uint32_t corners = static_cast<std::uint32_t>(3 * triangles.size());
+  auto prefetch = [&](std::uint32_t c) {
+    ahead[c % kAhead] = hash(corner(c));
+    __builtin_prefetch(&table[ahead[c % kAhead] & (capacity - 1)]);
+  };
+  for (std::uint32_t c = 0; c < std::min(kAhead, corners); ++c) prefetch(c);
+  for (std::uint32_t c = 0; c < corners; ++c) {
     const dvec3& p = corner(c);
-    const std::uint64_t h = hash(p);
+    const std::uint64_t h = ahead[c % kAhead];
+    if (c + kAhead < corners) prefetch(c + kAhead);
     const std::uint32_t tag = static_cast<std::uint32_t>(h >> 32);
     for (std::size_t s = h & (capacity - 1);; s = (s + 1) & (capacity - 1)) {
       if (table[s].corner == kEmpty) {
         table[s] = {tag, c};
+        if (++used * 2 > capacity) {   // half full: twice the slots, every position placed again
+          std::vector<Slot> old(capacity * 2);
+          old.swap(table);
+          capacity *= 2;
+          for (const Slot& slot : old)
+            if (slot.corner != kEmpty) place(hash(corner(slot.corner)), slot.corner);
+        }
         break;
       }
       if (table[s].hash == tag && corner(table[s].corner) == p) {
@@ -163,8 +196,17 @@ class BoxTree {
 }  // namespace
 
 bool sceneBounds(const SceneDesc& scene, dvec3& boxLo, dvec3& boxHi) {
-  Box box;
-  for (const Triangle& t : scene.triangles) box.add(triangleBox(t));
+  auto trianglesBox = [&scene](std::size_t begin, std::size_t end) {
+    Box b;
+    for (std::size_t i = begin; i < end; ++i) b.add(triangleBox(scene.triangles[i]));
+    return b;
+  };
+  // Many triangles: the second half on another thread.
+  const std::size_t nt = scene.triangles.size(), half = nt >= kParallelMinTriangles ? nt / 2 : nt;
+  std::future<Box> second;
+  if (half < nt) second = std::async(std::launch::async, trianglesBox, half, nt);
+  Box box = trianglesBox(0, half);
+  if (second.valid()) box.add(second.get());
   for (const Sphere& s : scene.spheres) box.add(sphereBox(s));
   if (!(box.lo.x <= box.hi.x)) return false;
   boxLo = box.lo;
