@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cpu/path_brdf.h"
+#include "cpu/pixel_tiles.h"
 #include "cpu/scene_query.h"
 #include "gpu_types.h"
 
@@ -20,7 +21,6 @@ namespace vkrt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kTile = 16;
 // maxdepth -1 without Russian roulette has no end in a closed scene of albedo 1: paths stop
 // after this many bounces (where the generator's dimensions, bounce * kRngBounceStride, would
 // wrap around 2^32).
@@ -457,56 +457,22 @@ RadianceImage renderPathReference(const SceneDesc& scene, const Bvh& bvh, const 
   RadianceImage image(region.width(), region.height());
   image.samples = count;
   PathIntegrator integrator(scene, bvh);
-  const int tilesX = (region.width() + kTile - 1) / kTile, tilesY = (region.height() + kTile - 1) / kTile;
-  const int tileCount = tilesX * tilesY;
-  const std::uint64_t total = static_cast<std::uint64_t>(region.width()) * region.height() * count;
-  std::atomic<int> nextTile{0};
-  std::mutex mutex;   // guards done, the progress callback and the totals
-  std::uint64_t done = 0;
-  RayCounts totals;
-
-  auto worker = [&] {
-    RayCounts local;
-    for (int tile; (tile = nextTile.fetch_add(1)) < tileCount;) {
-      if (options.stop && options.stop()) break;
-      // (x, y): the full image's pixel; its place in `image` is relative to the region.
-      int x0 = region.x0 + (tile % tilesX) * kTile, y0 = region.y0 + (tile / tilesX) * kTile;
-      int x1 = std::min(x0 + kTile, region.x1), y1 = std::min(y0 + kTile, region.y1);
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-          const std::uint32_t pixel = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(scene.width) +
-                                      static_cast<std::uint32_t>(x);
-          dvec3 sum(0.0);
-          for (std::uint32_t s = first; s < first + count; ++s) {
-            const SampleNumbers rng{options.seed, pixel, s};
-            // spp 1 samples the pixel's centre; otherwise a uniform point in the pixel.
-            const double u = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelX);
-            const double v = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelY);
-            sum += integrator.sampleRadiance(x + u, y + v, rng, local);
-          }
-          const dvec3 mean = count > 0 ? sum / static_cast<double>(count) : dvec3(0.0);
-          float* px = image.pixel(x - region.x0, y - region.y0);
-          for (int k = 0; k < 3; ++k) px[k] = static_cast<float>(mean[k]);
-          if (!std::isfinite(mean.x + mean.y + mean.z)) ++local.nonFinite;
+  shadeTiles(
+      region, options.threads, count,
+      [&](int x, int y, RayCounts& local) {
+        const std::uint32_t pixel = static_cast<std::uint32_t>(y) * static_cast<std::uint32_t>(scene.width) +
+                                    static_cast<std::uint32_t>(x);
+        dvec3 sum(0.0);
+        for (std::uint32_t s = first; s < first + count; ++s) {
+          const SampleNumbers rng{options.seed, pixel, s};
+          // spp 1 samples the pixel's centre; otherwise a uniform point in the pixel.
+          const double u = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelX);
+          const double v = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelY);
+          sum += integrator.sampleRadiance(x + u, y + v, rng, local);
         }
-      std::lock_guard lock(mutex);
-      done += static_cast<std::uint64_t>(x1 - x0) * (y1 - y0) * count;
-      if (options.progress) options.progress(done, total);
-    }
-    std::lock_guard lock(mutex);
-    totals.primary += local.primary;
-    totals.shadow += local.shadow;
-    totals.reflection += local.reflection;
-    totals.nonFinite += local.nonFinite;
-  };
-
-  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::clamp(threads, 1, std::max(1, tileCount));
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (counts) *counts = totals;
+        return count > 0 ? sum / static_cast<double>(count) : dvec3(0.0);
+      },
+      image, options.progress, options.stop, counts);
   return image;
 }
 

@@ -9,21 +9,13 @@
 #include <thread>
 #include <vector>
 
+#include "cpu/pixel_tiles.h"
 #include "cpu/scene_query.h"
 
 namespace vkrt {
 namespace {
 
 constexpr double kInf = kInfinity;
-constexpr int kTile = 16;
-
-// The nearest float; beyond float's range, +-infinity (a plain cast would be undefined there).
-float toFloat(double c) {
-  constexpr double kMax = std::numeric_limits<float>::max();
-  if (c > kMax) return std::numeric_limits<float>::infinity();
-  if (c < -kMax) return -std::numeric_limits<float>::infinity();
-  return static_cast<float>(c);
-}
 
 class Tracer {
  public:
@@ -114,47 +106,13 @@ RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuO
   RadianceImage image(region.width(), region.height());
   image.samples = options.sampleCount;   // the mean of identical samples is the one traced
   Tracer tracer(scene, bvh);
-  const int tilesX = (region.width() + kTile - 1) / kTile, tilesY = (region.height() + kTile - 1) / kTile;
-  const int tileCount = tilesX * tilesY;
-  const std::uint64_t totalPixels = static_cast<std::uint64_t>(region.width()) * region.height();
-  std::atomic<int> nextTile{0};
-  std::mutex mutex;   // guards doneCount, the progress callback and the totals
-  std::uint64_t donePixels = 0;
-  RayCounts totals;
-
-  auto worker = [&] {
-    RayCounts local;
-    for (int tile; (tile = nextTile.fetch_add(1)) < tileCount;) {
-      if (options.stop && options.stop()) break;
-      // (x, y): the full image's pixel; its place in `image` is relative to the region.
-      int x0 = region.x0 + (tile % tilesX) * kTile, y0 = region.y0 + (tile / tilesX) * kTile;
-      int x1 = std::min(x0 + kTile, region.x1), y1 = std::min(y0 + kTile, region.y1);
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-          ++local.primary;
-          dvec3 c = tracer.trace(tracer.cameraRay(x, y), local);
-          float* px = image.pixel(x - region.x0, y - region.y0);
-          for (int k = 0; k < 3; ++k) px[k] = toFloat(c[k]);
-          if (!std::isfinite(c.x + c.y + c.z)) ++local.nonFinite;
-        }
-      std::lock_guard lock(mutex);
-      donePixels += static_cast<std::uint64_t>(x1 - x0) * (y1 - y0);
-      if (options.progress) options.progress(donePixels, totalPixels);
-    }
-    std::lock_guard lock(mutex);
-    totals.primary += local.primary;
-    totals.shadow += local.shadow;
-    totals.reflection += local.reflection;
-    totals.nonFinite += local.nonFinite;
-  };
-
-  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::clamp(threads, 1, std::max(1, tileCount));
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (counts) *counts = totals;
+  shadeTiles(
+      region, options.threads, 1,
+      [&](int x, int y, RayCounts& local) {
+        ++local.primary;
+        return tracer.trace(tracer.cameraRay(x, y), local);
+      },
+      image, options.progress, options.stop, counts);
   return image;
 }
 
