@@ -486,6 +486,7 @@ void traversalStep(inout uint step) {
     }
   }
   if (sp > 0u) return;   // out of steps: the next dispatch goes on from here
+  ++step;                // what follows the traversal is a step of its own
   if (shadow) {
     if (!blocked) radiance += pending;   // nothing in the way
     phase = kPhaseLight;
