@@ -25,6 +25,12 @@ layout(constant_id = kSpecHasDirectionalLights) const bool kHasDirectionalLights
 layout(constant_id = kSpecHasAttenuation) const bool kHasAttenuation = true;
 layout(constant_id = kPathSpecHasQuadLights) const bool kHasQuadLights = true;
 layout(constant_id = kPathSpecHasGgx) const bool kHasGgx = true;
+layout(constant_id = kPathSpecIntegrator) const uint kSpecIntegrator = kPathSpecFromParams;
+layout(constant_id = kPathSpecNextEvent) const uint kSpecNextEvent = kPathSpecFromParams;
+layout(constant_id = kPathSpecSampling) const uint kSpecSampling = kPathSpecFromParams;
+layout(constant_id = kPathSpecRussianRoulette) const uint kSpecRussianRoulette = kPathSpecFromParams;
+layout(constant_id = kPathSpecStratified) const uint kSpecStratified = kPathSpecFromParams;
+layout(constant_id = kPathSpecJitter) const uint kSpecJitter = kPathSpecFromParams;
 
 #include "scene_reads.glsl"
 #include "intersect.glsl"
@@ -54,6 +60,16 @@ layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counter
 layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
 layout(std140, binding = kBindingPathParams) uniform PathParams { GpuPathParams path; };
 layout(push_constant) uniform Push { GpuPathPush pc; };
+
+// The integrator settings: specialised, or read from GpuPathParams (kPathSpecFromParams).
+uint integrator() { return kSpecIntegrator != kPathSpecFromParams ? kSpecIntegrator : path.integrator; }
+uint nextEvent() { return kSpecNextEvent != kPathSpecFromParams ? kSpecNextEvent : path.nextEvent; }
+uint sampling() { return kSpecSampling != kPathSpecFromParams ? kSpecSampling : path.sampling; }
+bool russianRoulette() {
+  return kSpecRussianRoulette != kPathSpecFromParams ? kSpecRussianRoulette != 0u : path.russianRoulette != 0u;
+}
+bool stratified() { return kSpecStratified != kPathSpecFromParams ? kSpecStratified != 0u : path.lightStrata > 0u; }
+bool jitter() { return kSpecJitter != kPathSpecFromParams ? kSpecJitter != 0u : path.jitter != 0u; }
 
 const float kPi = 3.14159265358979;
 const float kInvPi = 0.318309886183791;
@@ -145,8 +161,8 @@ float specularLobeChance(GpuMaterial m) {
 float scatterPdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
   float nDotI = dot(n, wi);
   if (!(nDotI > 0.0)) return 0.0;
-  if (path.sampling == kSamplingHemisphere) return 0.5 * kInvPi;
-  if (path.sampling == kSamplingCosine) return nDotI * kInvPi;
+  if (sampling() == kSamplingHemisphere) return 0.5 * kInvPi;
+  if (sampling() == kSamplingCosine) return nDotI * kInvPi;
   float t = specularLobeChance(m);
   float specular;
   if (isGgx(m)) {
@@ -165,8 +181,8 @@ float scatterPdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
 vec3 sampleDirection(GpuMaterial m, vec3 n, vec3 wo) {
   float u = randomAt(kRngSlotDirectionU), v = randomAt(kRngSlotDirectionV);
   float phi = 2.0 * kPi * v;
-  if (path.sampling == kSamplingHemisphere) return aroundAxis(n, sqrt(max(1.0 - u * u, 0.0)), u, phi);
-  if (path.sampling == kSamplingBrdf && randomAt(kRngSlotLobe) < specularLobeChance(m)) {
+  if (sampling() == kSamplingHemisphere) return aroundAxis(n, sqrt(max(1.0 - u * u, 0.0)), u, phi);
+  if (sampling() == kSamplingBrdf && randomAt(kRngSlotLobe) < specularLobeChance(m)) {
     if (isGgx(m)) {
       float alpha = m.diffuse.w;
       float tanTheta = alpha * sqrt(u) / sqrt(1.0 - u);
@@ -218,7 +234,7 @@ void startRay(vec3 origin, vec3 dir, float tMin) {
 void startCamera() {
   keySample();
   float u = 0.5, v = 0.5;
-  if (path.jitter != 0u) {
+  if (jitter()) {
     u = random(kRngPixelX);
     v = random(kRngPixelY);
   }
@@ -232,9 +248,13 @@ void startCamera() {
   startRay(path.cameraOrigin.xyz, dir, 0.0);
 }
 
-// The sample is over: add it to the pixel (a NaN or infinite one is counted and left out),
-// then start the next.
-void finishSample() {
+// The sample is over. The steps that end it only say so, and the main loop calls endSample
+// once per iteration: lavapipe would run an inlined copy at each call site.
+void finishSample() { phase = kPhaseSampleEnd; }
+
+// Adds the sample to the pixel (a NaN or infinite one is counted and left out), then starts
+// the next.
+void endSample() {
   if (any(isnan(radiance)) || any(isinf(radiance)))
     ++nonFinite;
   else
@@ -248,7 +268,7 @@ void finishSample() {
 
 // Quad-light samples at a vertex: one per light for analyticdirect, N per light otherwise.
 uint quadLightSamples() {
-  return path.quadLightCount * (path.integrator == kIntegratorAnalyticDirect ? 1u : path.lightSamples);
+  return path.quadLightCount * (integrator() == kIntegratorAnalyticDirect ? 1u : path.lightSamples);
 }
 
 // The nearest hit is known: its emission, then the lights (kPhaseLight), or the end of the path.
@@ -263,9 +283,9 @@ void beginShading() {
     float cosLight = -dot(q.normal.xyz, rayDir);
     if (cosLight > 0.0) {
       float weight = 1.0;   // camera rays, and every ray without next-event estimation
-      if (bounce > 0u && path.nextEvent == kNextEventOn) {
+      if (bounce > 0u && nextEvent() == kNextEventOn) {
         weight = 0.0;   // the light samples of the vertex before counted it
-      } else if (bounce > 0u && path.nextEvent == kNextEventMis) {
+      } else if (bounce > 0u && nextEvent() == kNextEventMis) {
         // Power heuristic against the light samples: pdfs in solid angle at the vertex before.
         float lightPdf = bestT * bestT / (q.corner.w * cosLight);
         float ratio = lightPdf / lastPdf;
@@ -277,11 +297,11 @@ void beginShading() {
     return;
   }
   radiance += throughput * m.emission.rgb;   // found by hitting only (not sampled)
-  bool analytic = path.integrator == kIntegratorAnalyticDirect;
+  bool analytic = integrator() == kIntegratorAnalyticDirect;
   // Whether this vertex samples lights and scatters: SPEC-PATHTRACING section 4's depth rule
   // (vertex `bounce` may when bounce < maxdepth, kMaxBounces with no limit), one vertex for
   // direct lighting.
-  bool scatters = path.integrator == kIntegratorPathTracer
+  bool scatters = integrator() == kIntegratorPathTracer
                       ? bounce < min(path.maxDepth, kMaxBounces)
                       : bounce == 0u;
   // f = 0 unless w_o is on the side of the normal (the closed form does not look at w_o).
@@ -289,7 +309,7 @@ void beginShading() {
     finishSample();
     return;
   }
-  bool quadSamples = path.integrator != kIntegratorPathTracer || path.nextEvent != kNextEventOff;
+  bool quadSamples = integrator() != kIntegratorPathTracer || nextEvent() != kNextEventOff;
   lightIndex = quadSamples ? 0u : quadLightSamples();
   phase = kPhaseLight;
 }
@@ -312,7 +332,7 @@ void quadLightSample(uint j, uint k, GpuMaterial m) {
   GpuQuadLight q = loadQuadLight(j);
   uint slot = kRngSlotLightBase + 2u * (j * path.lightSamples + k);
   float s = randomAt(slot), t = randomAt(slot + 1u);
-  if (path.lightStrata > 0u) {   // one sample in each cell of an m x m grid
+  if (stratified()) {   // one sample in each cell of an m x m grid
     float cells = float(path.lightStrata);
     s = (float(k % path.lightStrata) + s) / cells;
     t = (float(k / path.lightStrata) + t) / cells;
@@ -328,7 +348,7 @@ void quadLightSample(uint j, uint k, GpuMaterial m) {
   // (A / N) L f G, G = cos cos' / |x - x'|^2.
   vec3 c = throughput * f * q.radiance.rgb *
            (cosSurface * cosLight / distance2 * q.corner.w / float(path.lightSamples));
-  if (path.integrator == kIntegratorPathTracer && path.nextEvent == kNextEventMis) {
+  if (integrator() == kIntegratorPathTracer && nextEvent() == kNextEventMis) {
     float lightPdf = distance2 / (q.corner.w * cosLight);
     float ratio = scatterPdf(m, hitNormal, wi, -rayDir) / lightPdf;
     c *= 1.0 / (1.0 + ratio * ratio);
@@ -374,7 +394,7 @@ void scatter(GpuMaterial m) {
   }
   throughput *= brdf(m, hitNormal, wi, wo) * (cosine / pdf);
   // Possibly terminate the path with Russian roulette (on the throughput).
-  if (path.russianRoulette != 0u) {
+  if (russianRoulette()) {
     float p = min(max(throughput.r, max(throughput.g, throughput.b)), 1.0);
     if (!(randomAt(kRngSlotRoulette) < p)) {
       finishSample();
@@ -398,7 +418,7 @@ void lightStep() {
   uint quad = quadLightSamples();
   if (kHasQuadLights && lightIndex < quad) {
     uint i = lightIndex++;
-    if (path.integrator == kIntegratorAnalyticDirect) {
+    if (integrator() == kIntegratorAnalyticDirect) {
       GpuQuadLight q = loadQuadLight(i);
       radiance += throughput * m.diffuse.rgb * kInvPi * q.radiance.rgb * dot(polygonIrradianceVector(q, hitPoint), hitNormal);
     } else {
@@ -407,66 +427,73 @@ void lightStep() {
     return;
   }
   if ((kHasPointLights || kHasDirectionalLights) && lightIndex < quad + path.lightCount) {
-    pointLightSample(lightIndex++ - quad, m, path.integrator == kIntegratorAnalyticDirect);
+    pointLightSample(lightIndex++ - quad, m, integrator() == kIntegratorAnalyticDirect);
     return;
   }
-  if (path.integrator == kIntegratorPathTracer)
+  if (integrator() == kIntegratorPathTracer)
     scatter(m);
   else
     finishSample();
 }
 
-// One leaf of a traversal (after the interior nodes above it), as in raytrace.comp: the
-// nearest-hit traversal of the current ray (kPhaseTrace) or the any-hit one of a shadow ray
-// (kPhaseShadow). Each node is a step of the budget.
+// The traversal of the current ray (kPhaseTrace: nearest hit) or shadow ray (kPhaseShadow:
+// any hit), as far as the step budget goes: interior nodes down to a leaf, then that leaf's
+// primitives, until the stack is empty (Aila and Laine's while-while loop). Each node is a
+// step of the budget. lavapipe runs the lanes of a SIMD vector through every branch of the
+// loop body that any of them takes, so a whole traversal stays inside this loop: the
+// shading code outside runs once per ray, not once per leaf.
 void traversalStep(inout uint step) {
   bool shadow = phase == kPhaseShadow;
   vec3 origin = shadow ? hitPoint : rayOrigin;
   vec3 dir = shadow ? shadowDir : rayDir;
   float tMin = shadow ? secondaryTMin(shadowCos) : rayTMin;
   float tMax = shadow ? shadowTMax : bestT;
-  if (nextIsInterior()) {
-    vec3 invDir = safeInverse(dir);
+  vec3 invDir = safeInverse(dir);
+  Shear sh;
+  if (kHasTriangles) sh = shearFor(dir);
+  bool blocked = false;
+  while (sp > 0u && step < params.stepBudget) {
     while (nextIsInterior() && step < params.stepBudget) {
       --sp;
       ++step;
       if (stackT[sp] < tMax) pushChildren(stack[sp], origin, invDir, tMin, tMax);
     }
-    if (nextIsInterior()) return;   // out of steps
-  }
-  if (sp == 0u) {   // traversal over
-    if (shadow) {   // nothing in the way
-      radiance += pending;
-      phase = kPhaseLight;
-    } else if (hitPrim != kNoHit) {
-      beginShading();
-    } else {
-      finishSample();   // a miss is black
-    }
-    return;
-  }
-  --sp;
-  if (stackT[sp] >= tMax) return;   // entered beyond the nearest hit so far
-  uint entry = stack[sp];
-  uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
-  Shear sh;
-  if (kHasTriangles) sh = shearFor(dir);
-  for (uint i = 0u; i < count; ++i) {
-    uint ref = loadPrimRef(first + i);
-    vec2 b;
-    float t = hitPrimitive(ref, origin, dir, sh, tMin, tMax, b);
-    if (t > 0.0) {
-      if (shadow) {   // blocked
-        sp = 0u;
-        phase = kPhaseLight;
-        return;
+    if (sp == 0u || step >= params.stepBudget) break;
+    --sp;
+    ++step;
+    if (stackT[sp] >= tMax) continue;   // entered beyond the nearest hit so far
+    uint entry = stack[sp];
+    uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
+    for (uint i = 0u; i < count; ++i) {
+      uint ref = loadPrimRef(first + i);
+      vec2 b;
+      float t = hitPrimitive(ref, origin, dir, sh, tMin, tMax, b);
+      if (t > 0.0) {
+        if (shadow) {
+          blocked = true;
+          break;
+        }
+        tMax = t;
+        bestT = t;
+        hitPrim = ref;
+        bestB1 = b.x;
+        bestB2 = b.y;
       }
-      tMax = t;
-      bestT = t;
-      hitPrim = ref;
-      bestB1 = b.x;
-      bestB2 = b.y;
     }
+    if (blocked) {
+      sp = 0u;
+      break;
+    }
+  }
+  if (sp > 0u) return;   // out of steps: the next dispatch goes on from here
+  ++step;                // what follows the traversal is a step of its own
+  if (shadow) {
+    if (!blocked) radiance += pending;   // nothing in the way
+    phase = kPhaseLight;
+  } else if (hitPrim != kNoHit) {
+    beginShading();
+  } else {
+    finishSample();   // a miss is black
   }
 }
 
@@ -554,11 +581,12 @@ void main() {
       phase = kPhaseDone;
   }
 
+  // A ray's traversal and the light step after it share an iteration (lavapipe runs both
+  // bodies for the vector whenever any lane needs either).
   for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
-    if (phase == kPhaseLight)
-      lightStep();
-    else
-      traversalStep(step);
+    if (phase == kPhaseTrace || phase == kPhaseShadow) traversalStep(step);
+    if (phase == kPhaseLight) lightStep();
+    if (phase == kPhaseSampleEnd) endSample();
   }
 
   if (shadowRays + scatterRays + nonFinite > 0u) {

@@ -22,9 +22,11 @@ constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
 static_assert(sizeof(gpu::GpuQuadLight) == 16 * gpu::kQuadLightTexels, "the texel view of a quad light");
 
 // The features pathtrace.comp is specialised to (all on when not specializing), and what was
-// left out, for --stats.
-std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, bool specialize, std::string& leftOut) {
+// left out, for --stats; and the integrator settings (kPathSpecFromParams when not specializing).
+std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, std::uint32_t jitter, bool specialize,
+                                        std::string& leftOut) {
   std::vector<std::uint32_t> spec(gpu::kPathSpecCount, 1u);   // bools as 0/1 (32-bit spec constants)
+  for (std::uint32_t i = gpu::kPathSpecIntegrator; i < gpu::kPathSpecCount; ++i) spec[i] = gpu::kPathSpecFromParams;
   if (!specialize) return spec;
   bool point = false, directional = false, attenuation = false, ggx = false;
   for (const gpu::GpuLight& l : scene.lights) {
@@ -41,9 +43,16 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, bool specialize, 
   spec[gpu::kSpecHasAttenuation] = attenuation;
   spec[gpu::kPathSpecHasQuadLights] = !scene.quadLights.empty();
   spec[gpu::kPathSpecHasGgx] = ggx;
-  const char* names[gpu::kPathSpecCount] = {"triangles",   "spheres",            "smooth normals", "point lights",
+  // The integrator settings (a shader per combination; each is compiled once and cached).
+  spec[gpu::kPathSpecIntegrator] = scene.path.integrator;
+  spec[gpu::kPathSpecNextEvent] = scene.path.nextEvent;
+  spec[gpu::kPathSpecSampling] = scene.path.sampling;
+  spec[gpu::kPathSpecRussianRoulette] = scene.path.russianRoulette;
+  spec[gpu::kPathSpecStratified] = scene.path.lightStrata > 0 ? 1u : 0u;
+  spec[gpu::kPathSpecJitter] = jitter;
+  const char* names[gpu::kPathSpecHasGgx + 1] = {"triangles",   "spheres",            "smooth normals", "point lights",
                                             "directional lights", "attenuation", "quad lights",    "ggx"};
-  for (std::uint32_t i = 0; i < gpu::kPathSpecCount; ++i)
+  for (std::uint32_t i = 0; i <= gpu::kPathSpecHasGgx; ++i)
     if (!spec[i]) leftOut += (leftOut.empty() ? "" : ", ") + std::string(names[i]);
   return spec;
 }
@@ -126,7 +135,7 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   Buffer pathBuffer(context, sizeof path);
   std::memcpy(pathBuffer.mapped(), &path, sizeof path);
 
-  const std::vector<std::uint32_t> spec = pathFeatures(scene, options.specialize, t.leftOut);
+  const std::vector<std::uint32_t> spec = pathFeatures(scene, path.jitter, options.specialize, t.leftOut);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const Buffer* sceneBuffers[] = {&triangles, &normals, &spheres, &lights, &materials, &nodes, &quadLights};
   bool texelsFit = primRefs.size() / 4 <= maxTexels;

@@ -274,6 +274,7 @@ GPU_CONST uint kPhaseTrace = 0u;     // nearest hit of the current ray (camera o
 GPU_CONST uint kPhaseLight = 1u;     // start the next light's shadow ray
 GPU_CONST uint kPhaseShadow = 2u;    // any hit of the shadow ray
 GPU_CONST uint kPhaseDone = 3u;
+GPU_CONST uint kPhaseSampleEnd = 4u;   // pathtrace.comp: the sample is over (within a step, never saved)
 
 struct GpuPushConstants {
   vec4 cameraOrigin;        // xyz = look-from, w unused
@@ -370,7 +371,18 @@ GPU_CONST uint kPathBindingCount = 13u;
 // Its specialization constants: ids 0-5 mean what kSpecHasTriangles .. kSpecHasAttenuation do.
 GPU_CONST uint kPathSpecHasQuadLights = 6u;
 GPU_CONST uint kPathSpecHasGgx = 7u;          // some material has `brdf ggx`
-GPU_CONST uint kPathSpecCount = 8u;
+// The render's integrator settings (the GpuPathParams members of the same names), so that the
+// driver compiles out the code of the others: lavapipe runs every branch that any lane of a
+// SIMD vector takes, and a uniform's value is unknown to it. kPathSpecFromParams (the default,
+// and the value when not specializing) reads the setting from GpuPathParams instead.
+GPU_CONST uint kPathSpecIntegrator = 8u;
+GPU_CONST uint kPathSpecNextEvent = 9u;
+GPU_CONST uint kPathSpecSampling = 10u;
+GPU_CONST uint kPathSpecRussianRoulette = 11u;
+GPU_CONST uint kPathSpecStratified = 12u;     // 1: lightStrata > 0
+GPU_CONST uint kPathSpecJitter = 13u;
+GPU_CONST uint kPathSpecCount = 14u;
+GPU_CONST uint kPathSpecFromParams = 0xFFFFFFFFu;
 
 // GpuPathParams.maxDepth of `maxdepth -1`: no limit, only Russian roulette ends a path...
 GPU_CONST uint kUnlimitedDepth = 0xFFFFFFFFu;
