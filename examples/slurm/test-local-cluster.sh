@@ -30,7 +30,7 @@ tmp=$(mktemp -d -t vkrt-slurm.XXXXXX)
 chmod 755 "$tmp"   # munged wants its socket's folders searchable by all
 pids=()
 dump_logs() {
-  for f in "$tmp"/log/* "$tmp"/work/tiles/*.log "$tmp"/work/samples/*.log "$tmp"/out/chunks/*.log; do
+  for f in "$tmp"/log/* "$tmp"/jobs/tiles/*.log "$tmp"/jobs/samples/*.log "$tmp"/out/chunks/*.log; do
     [ -f "$f" ] || continue
     echo "----- $f (last 40 lines)"; tail -n 40 "$f"
   done
@@ -66,7 +66,7 @@ wait_for() {
   done
 }
 
-mkdir -p "$tmp"/{munge,log,state,spool,work,out}
+mkdir -p "$tmp"/{munge,log,state,spool,jobs,out}
 chmod 755 "$tmp/munge"
 
 # munge: a private key and daemon, on a socket of its own.
@@ -124,18 +124,18 @@ node_idle() { [ "$(sinfo -h -n "$host" -o %T 2>/dev/null)" = idle ]; }
 wait_for "node $host to be idle in sinfo" node_idle
 say "cluster up: $(sinfo -h -o '%P %D %T %c CPUs %m MB' | head -n 1) ($(($(date +%s) - start)) s)"
 
-cd "$tmp/work"
+cd "$tmp/jobs"
 scene=$root/scenes/showcase.test
 args=(--backend cpu --size 123x77)   # odd sizes: tiles of unequal widths and heights
 
 # A scene as 3x2 tiles and a dependent merge, against a one-machine render.
-"$vkrt" "${args[@]}" -q -o "$tmp/work/single.png" "$scene"
-timeout "$timeout_s" "$root/examples/slurm/submit-tiles.sh" --tiles 3x2 --vkrt "$vkrt" --work "$tmp/work/tiles" \
-  --wait "$scene" "$tmp/work/merged.png" -- "${args[@]}" ||
+"$vkrt" "${args[@]}" -q -o "$tmp/jobs/single.png" "$scene"
+timeout "$timeout_s" "$root/examples/slurm/submit-tiles.sh" --tiles 3x2 --vkrt "$vkrt" --work "$tmp/jobs/tiles" \
+  --wait "$scene" "$tmp/jobs/merged.png" -- "${args[@]}" ||
   { say "the tile jobs or the merge failed or timed out" >&2; exit 1; }
-"$vkrt" diff "$tmp/work/merged.png" "$tmp/work/single.png" >/dev/null ||
+"$vkrt" diff "$tmp/jobs/merged.png" "$tmp/jobs/single.png" >/dev/null ||
   { say "the merged image differs from the one-machine render" >&2; exit 1; }
-cmp "$tmp/work/merged.png" "$tmp/work/single.png" ||
+cmp "$tmp/jobs/merged.png" "$tmp/jobs/single.png" ||
   { say "the merged PNG's bytes differ from the one-machine render's" >&2; exit 1; }
 say "3x2 tiles merged: equal to the one-machine render, bit for bit"
 
@@ -143,11 +143,11 @@ say "3x2 tiles merged: equal to the one-machine render, bit for bit"
 # one-machine render of 16 samples of another seed: two independent estimates of the same
 # expected image, so they agree statistically, not bit for bit.
 pt_scene=$root/examples/slurm/cornell.test   # 64x64, path-traced
-"$vkrt" --backend cpu -q --spp 16 --seed 100 -o "$tmp/work/single-16spp.pfm" "$pt_scene"
+"$vkrt" --backend cpu -q --spp 16 --seed 100 -o "$tmp/jobs/single-16spp.pfm" "$pt_scene"
 timeout "$timeout_s" "$root/examples/slurm/submit-samples.sh" --batches 4 --spp 4 --seed 1 --vkrt "$vkrt" \
-  --work "$tmp/work/samples" --wait "$pt_scene" "$tmp/work/merged-16spp.pfm" -- --backend cpu ||
+  --work "$tmp/jobs/samples" --wait "$pt_scene" "$tmp/jobs/merged-16spp.pfm" -- --backend cpu ||
   { say "the sample batch jobs or the merge failed or timed out" >&2; exit 1; }
-record=$(LC_ALL=C grep -a '^vkrt-samples ' "$tmp/work/merged-16spp.pfm" || true)
+record=$(LC_ALL=C grep -a '^vkrt-samples ' "$tmp/jobs/merged-16spp.pfm" || true)
 [[ $record == "vkrt-samples 16 gamma "*" seeds 1:0+4 2:0+4 3:0+4 4:0+4" ]] ||
   { say "the merged batches' record is not 16 samples of seeds 1-4: '$record'" >&2; exit 1; }
 
@@ -194,11 +194,11 @@ same_expectation() {
     exit($ok ? 0 : 1);
   ' "$1" "$2"
 }
-same_expectation "$tmp/work/merged-16spp.pfm" "$tmp/work/single-16spp.pfm" ||
+same_expectation "$tmp/jobs/merged-16spp.pfm" "$tmp/jobs/single-16spp.pfm" ||
   { say "the merged batches and the one-machine render differ beyond noise" >&2; exit 1; }
 # The check can fail: a render of a different expected image (fewer bounces) does.
-"$vkrt" --backend cpu -q --spp 16 --seed 200 --maxdepth 2 -o "$tmp/work/maxdepth2.pfm" "$pt_scene"
-if same_expectation "$tmp/work/merged-16spp.pfm" "$tmp/work/maxdepth2.pfm" >/dev/null; then
+"$vkrt" --backend cpu -q --spp 16 --seed 200 --maxdepth 2 -o "$tmp/jobs/maxdepth2.pfm" "$pt_scene"
+if same_expectation "$tmp/jobs/merged-16spp.pfm" "$tmp/jobs/maxdepth2.pfm" >/dev/null; then
   say "the statistical check does not tell maxdepth 2 from maxdepth 5" >&2; exit 1
 fi
 say "4 sample batches x 4 spp merged: 16 samples, equal to a one-machine 16-spp render within noise"
