@@ -8,6 +8,7 @@
 #include <string>
 
 #include "errors.h"
+#include "gpu/band_dispatch.h"
 #include "gpu/compute_pipeline.h"
 #include "gpu/device_error.h"
 #include "gpu/tile_order.h"
@@ -18,7 +19,6 @@
 namespace vkrt {
 namespace {
 
-constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
 static_assert(sizeof(gpu::GpuQuadLight) == 16 * gpu::kQuadLightTexels, "the texel view of a quad light");
 
 // The features pathtrace.comp is specialised to (all on when not specializing), and what was
@@ -183,40 +183,12 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   RadianceImage image(static_cast<int>(width), static_cast<int>(height));
   image.samples = samples;
   gpu::GpuPathPush push{};
-  auto* counter = static_cast<volatile gpu::GpuCounters*>(counters.mapped());
-  // The shader's counters are 32-bit: added up here after each dispatch (which traces fewer
-  // than 2^32 rays: at most a band's pixels times the step budget) and zeroed.
-  std::uint64_t shadowRays = 0, scatterRays = 0, nonFinite = 0;
+  RayCounts counted;
   const std::uint64_t total = std::uint64_t{width} * height * samples;
   for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
     push.bandY0 = y0;
-    push.resume = 0;
-    std::uint64_t rounds = 0;
-    do {
-      // Each round advances every unfinished pixel by the full step budget; a path ends with
-      // probability 1 (maxdepth, or Russian roulette): this is a bug guard.
-      if (++rounds > kMaxRoundsPerBand)
-        throw InternalError("pixels of rows " + std::to_string(y0) + "+ still unfinished after " +
-                            std::to_string(kMaxRoundsPerBand) + " dispatches");
-      if (options.stop && options.stop()) return image;
-      t0 = std::chrono::steady_clock::now();
-      pipeline.run(&push, tilesInBand, &counters);
-      double s = secondsSince(t0);
-      if (t.dispatches == 0)
-        t.firstDispatchSeconds = s;
-      else
-        t.dispatchSeconds += s;
-      ++t.dispatches;
-      t.suspensions += counter->suspended;
-      shadowRays += counter->shadowRays;
-      scatterRays += counter->reflectionRays;
-      nonFinite += counter->nonFinite;
-      counter->shadowRays = 0;
-      counter->reflectionRays = 0;
-      counter->nonFinite = 0;
-      push.resume = 1;
-    } while (counter->suspended > 0);
-    ++t.bands;
+    if (!dispatchBand(pipeline, &push, push.resume, y0, tilesInBand, counters, options.stop, t, counted))
+      return image;
 
     t0 = std::chrono::steady_clock::now();
     const std::uint32_t rows = std::min(bandHeight, height - y0);
@@ -235,10 +207,8 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
     if (options.progress) options.progress(std::uint64_t{y0 + rows} * width * samples, total);
   }
   if (rays) {
+    *rays = counted;
     rays->primary = std::uint64_t{width} * height * samples;
-    rays->shadow = shadowRays;
-    rays->reflection = scatterRays;
-    rays->nonFinite = nonFinite;
   }
   if (timings) *timings = t;
   return image;

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <numeric>
 
+#include "gpu/band_dispatch.h"
 #include "gpu/compute_pipeline.h"
 #include "errors.h"
 #include "gpu/device_error.h"
@@ -17,8 +18,6 @@
 
 namespace vkrt {
 namespace {
-
-constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
 
 // Which features the scene uses; the shader is specialised to them (all on when not
 // specializing). Also says, for --stats, what was left out.
@@ -198,28 +197,11 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   RadianceImage image(static_cast<int>(width), static_cast<int>(height));
   image.samples = options.sampleCount;   // the Whitted model: the mean of identical samples
   gpu::GpuPushConstants push = scene.push;
-  auto* counter = static_cast<volatile gpu::GpuCounters*>(counters.mapped());
+  RayCounts counted;
   for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
     push.bandY0 = y0;
-    push.resume = 0;
-    std::uint64_t rounds = 0;
-    do {
-      // Each round advances every unfinished pixel by the full step budget, and no pixel's
-      // work is unbounded (maxdepth, lights and the BVH are finite): this is a bug guard.
-      if (++rounds > kMaxRoundsPerBand)
-        throw InternalError("pixels of rows " + std::to_string(y0) + "+ still unfinished after " +
-                          std::to_string(kMaxRoundsPerBand) + " dispatches");
-      if (options.stop && options.stop()) return image;
-      t0 = std::chrono::steady_clock::now();
-      pipeline.run(&push, tilesInBand, &counters);
-      double s = secondsSince(t0);
-      if (t.dispatches == 0) t.firstDispatchSeconds = s;
-      else t.dispatchSeconds += s;
-      ++t.dispatches;
-      t.suspensions += counter->suspended;
-      push.resume = 1;
-    } while (counter->suspended > 0);
-    ++t.bands;
+    if (!dispatchBand(pipeline, &push, push.resume, y0, tilesInBand, counters, options.stop, t, counted))
+      return image;
 
     t0 = std::chrono::steady_clock::now();
     std::uint32_t rows = std::min(bandHeight, height - y0);
@@ -237,10 +219,8 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
     if (options.progress) options.progress(std::uint64_t{y0 + rows} * width, std::uint64_t{height} * width);
   }
   if (rays) {
+    *rays = counted;
     rays->primary = std::uint64_t{width} * height;
-    rays->shadow = counter->shadowRays;
-    rays->reflection = counter->reflectionRays;
-    rays->nonFinite = counter->nonFinite;
   }
   if (timings) *timings = t;
   return image;

@@ -28,10 +28,10 @@
 namespace vkrt {
 namespace {
 
-// What both backends are asked for: the render's samples, as batches (render/progressive.h).
 // The sample count a render without --spp limit (--time alone) is planned as.
 constexpr int kMaxSamplesPerPixel = 1 << 30;
 
+// What both backends are asked for: the render's samples, as batches (render/progressive.h).
 struct SamplePlan {
   ProgressiveOptions progressive;
   std::uint32_t seed = 0;

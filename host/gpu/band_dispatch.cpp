@@ -1,0 +1,51 @@
+#include "gpu/band_dispatch.h"
+
+#include <chrono>
+#include <string>
+
+#include "errors.h"
+#include "gpu_types.h"
+#include "timing.h"
+
+namespace vkrt {
+namespace {
+
+// Rounds of dispatches per band before giving up (each round advances every unfinished pixel
+// by the full step budget).
+constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
+
+}  // namespace
+
+bool dispatchBand(ComputePipeline& pipeline, const void* push, std::uint32_t& resume, std::uint32_t bandY0,
+                  std::uint32_t groups, Buffer& counters, const std::function<bool()>& stop, VulkanTimings& timings,
+                  RayCounts& rays) {
+  auto* counter = static_cast<volatile gpu::GpuCounters*>(counters.mapped());
+  resume = 0;
+  std::uint64_t rounds = 0;
+  do {
+    if (++rounds > kMaxRoundsPerBand)
+      throw InternalError("pixels of rows " + std::to_string(bandY0) + "+ still unfinished after " +
+                          std::to_string(kMaxRoundsPerBand) + " dispatches");
+    if (stop && stop()) return false;
+    const auto t0 = std::chrono::steady_clock::now();
+    pipeline.run(push, groups, &counters);
+    const double s = secondsSince(t0);
+    if (timings.dispatches == 0)
+      timings.firstDispatchSeconds = s;
+    else
+      timings.dispatchSeconds += s;
+    ++timings.dispatches;
+    timings.suspensions += counter->suspended;
+    rays.shadow += counter->shadowRays;
+    rays.reflection += counter->reflectionRays;
+    rays.nonFinite += counter->nonFinite;
+    counter->shadowRays = 0;
+    counter->reflectionRays = 0;
+    counter->nonFinite = 0;
+    resume = 1;
+  } while (counter->suspended > 0);
+  ++timings.bands;
+  return true;
+}
+
+}  // namespace vkrt
