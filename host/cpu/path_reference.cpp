@@ -7,9 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 #include "cpu/path_brdf.h"

@@ -5,9 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <mutex>
-#include <thread>
-#include <vector>
 
 #include "cpu/pixel_tiles.h"
 #include "cpu/scene_query.h"
