@@ -128,7 +128,7 @@ TEST(ParsePath, EveryKeywordValue) {
 // `maxdepth -1` is no limit, for every integrator but the Whitted one, whichever line comes
 // first; a later maxdepth replaces it.
 TEST(ParsePath, UnlimitedDepthForThePathIntegrators) {
-  EXPECT_EQ(parse("maxdepth -1\nintegrator pathtracer\n").maxDepth, -1);
+  EXPECT_EQ(parse("maxdepth -1\nintegrator pathtracer\nrussianroulette on\n").maxDepth, -1);
   EXPECT_EQ(parse("integrator direct\nmaxdepth -1\n").maxDepth, -1);
   EXPECT_EQ(parse("integrator analyticdirect\nmaxdepth -1\n").maxDepth, -1);
   EXPECT_EQ(parse("maxdepth 0\nintegrator pathtracer\n").maxDepth, 0);

@@ -139,6 +139,13 @@ std::vector<Accepted> acceptedInputs() {
       {"RepeatedIntegrator", kOk + "integrator direct\nintegrator pathtracer\n", 4,
        "'integrator' given again (before at line 3): the last one counts",
        [](const SceneDesc& s) { EXPECT_EQ(s.path.integrator, Integrator::PathTracer); }},
+      // Nothing but Russian roulette ends a path that stays in the scene under `maxdepth -1`.
+      {"UnlimitedDepthWithoutRoulette", kOk + "integrator pathtracer\nmaxdepth -1\n", 4,
+       "'maxdepth -1' (no limit) with 'russianroulette off': a path ends only when it leaves the scene",
+       [](const SceneDesc& s) { EXPECT_EQ(s.maxDepth, -1); }},
+      {"UnlimitedDepthRouletteTurnedOff", kOk + "maxdepth -1\nrussianroulette on\nintegrator pathtracer\nrussianroulette off\n", 3,
+       "'maxdepth -1' (no limit) with 'russianroulette off'",
+       [](const SceneDesc& s) { EXPECT_FALSE(s.path.russianRoulette); }},
       {"ExtraArgumentsToIntegrator", kOk + "integrator direct fast\n", 3,
        "'integrator' takes 1 argument (raytracer, analyticdirect, direct or pathtracer), got 2: the extra one is ignored",
        [](const SceneDesc& s) { EXPECT_EQ(s.path.integrator, Integrator::Direct); }},

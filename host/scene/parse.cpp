@@ -72,11 +72,11 @@ std::string quoted(std::string_view token) { return "'" + escapedBytes(token) + 
 
 // The kinds of warning (SPEC section 8); each kind is summarised after kMaxWarningsPerKind.
 enum class WarningKind {
-  UnknownCommand, KeywordCase, ExtraArguments, Repeated, BeforeSize, OutputName, NotForIntegrator, Count
+  UnknownCommand, KeywordCase, ExtraArguments, Repeated, BeforeSize, OutputName, NotForIntegrator, EndlessPaths, Count
 };
 constexpr const char* kWarningKindNames[] = {
     "unknown commands", "keywords in another case", "extra arguments", "repeated commands",
-    "commands before 'size'", "output names", "commands the integrator does not use"};
+    "commands before 'size'", "output names", "commands the integrator does not use", "paths without an end"};
 static_assert(std::size(kWarningKindNames) == static_cast<std::size_t>(WarningKind::Count));
 constexpr std::size_t kWarningKinds = static_cast<std::size_t>(WarningKind::Count);
 
@@ -780,6 +780,13 @@ class Parser {
     if (unlimitedDepthLine_ > 0 && integrator == Integrator::Raytracer)
       errorAt(unlimitedDepthLine_, "'maxdepth' argument 1: expected a non-negative integer, got '-1': -1 (no limit) "
                                    "is for the path integrators, and " + which + " is the Whitted model");
+    // -1 under the path tracer leaves Russian roulette as the only end of a path that stays in
+    // the scene: without it, each such sample runs to the renderers' bounce limit.
+    if (unlimitedDepthLine_ > 0 && integrator == Integrator::PathTracer && !scene_.path.russianRoulette)
+      warnAt(unlimitedDepthLine_, WarningKind::EndlessPaths,
+             "'maxdepth -1' (no limit) with 'russianroulette off': a path ends only when it leaves the scene, so in "
+             "a closed scene every sample runs to the renderers' limit of tens of thousands of bounces; add "
+             "'russianroulette on'");
 
     if (isIgnored(Command::QuadLight)) return;
     for (const QuadLight& q : pendingQuadLights_) addQuadLight(q);
