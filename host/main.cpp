@@ -1,6 +1,7 @@
 // vkrt command line: parse arguments, call renderSceneFile() (once per scene; several scenes
 // share one RenderSession), turn exceptions into exit statuses (through reportError:
 // host/cli/exit_status.h).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -17,6 +18,7 @@
 #include "image/encode.h"
 #include "image/image_file.h"
 #include "image/merge.h"
+#include "image/pfm.h"
 #include "image/png.h"
 #include "interrupt.h"
 #include "render/render.h"
@@ -268,11 +270,21 @@ int main(int argc, char** argv) {
                        mean.width, mean.height);
         return kExitOk;
       }
-      vkrt::Image image = vkrt::mergeCrops(options.mergeTiles, options.allowGaps, &merged);
-      vkrt::writeImageAtomic(image, options.mergeOutput);
+      const bool floatTiles = std::all_of(options.mergeTiles.begin(), options.mergeTiles.end(),
+                                          [](const std::string& path) { return vkrt::isPfmFile(path); });
+      int width = 0, height = 0;
+      if (floatTiles) {
+        vkrt::RadianceImage image = vkrt::mergeFloatCrops(options.mergeTiles, options.allowGaps, &merged);
+        vkrt::writeImageAtomic(image, options.mergeOutput, merged.samples.gamma);
+        width = image.width, height = image.height;
+      } else {
+        vkrt::Image image = vkrt::mergeCrops(options.mergeTiles, options.allowGaps, &merged);
+        vkrt::writeImageAtomic(image, options.mergeOutput);
+        width = image.width, height = image.height;
+      }
       if (!options.quiet)
         std::fprintf(stderr, "vkrt: merged %d tiles into %s (%dx%d)%s\n", merged.tiles, options.mergeOutput.c_str(),
-                     image.width, image.height,
+                     width, height,
                      merged.gapPixels ? (", " + std::to_string(merged.gapPixels) + " pixels left black").c_str() : "");
       return kExitOk;
     }

@@ -1,5 +1,5 @@
 // The command line of float output and sample batches: --spp, --seed and --time (validation,
-// and the warning for a Whitted scene), -o NAME.pfm, and `vkrt merge` of sample batches.
+// and the warning for a Whitted scene), -o NAME.pfm, `vkrt merge` of sample batches, and of PFM crops.
 #include <gtest/gtest.h>
 
 #include "cpu/reference.h"
@@ -159,4 +159,66 @@ TEST(CliFloat, PathSceneBatchesCarryTheirSamplesAndMerge) {
   RunResult t = runVkrt("--backend cpu --time 0.2 -o " + dir + "/t.png " + dir + "/p.test");
   ASSERT_EQ(t.exitCode, 0) << t.output;
   EXPECT_NE(t.output.find("samples per pixel when the time was up"), std::string::npos) << t.output;
+}
+
+// Crops written as PFM (linear float, as rendered) merge like 8-bit ones: a grid of crops of
+// a path-traced render with one seed is the full render bit for bit, carries its samples
+// record, and encodes to PNG with the recorded gamma. Whitted PFM crops (no samples record)
+// merge too. Tiles of two kinds, or of renders with other samples, are refused.
+TEST(CliFloat, MergeOfPfmCropsIsTheFullRender) {
+  std::string dir = freshDir("cli-float/pfm-crops");
+  writeFile(dir + "/p.test",
+            "size 13 9\nintegrator pathtracer\nspp 3\ngamma 2.2\nnexteventestimation on\nmaxdepth 3\n"
+            "camera 0 0 4 0 0 0 0 1 0 45\nquadLight -1 2 -1 2 0 0 0 0 2 4 4 4\n"
+            "diffuse 0.5 0.4 0.3\nsphere 0 0 0 1\nvertex -3 -1 -3\nvertex 3 -1 -3\nvertex 0 -1 3\ntri 0 2 1\n");
+  writeFile(dir + "/w.test", kScene);
+  const std::string common = "--backend cpu -q --seed 5 ";
+  for (const char* scene : {"p", "w"}) {
+    const std::string s = dir + "/" + scene;
+    RunResult full = runVkrt(common + "-o " + s + "-full.pfm " + s + ".test");
+    ASSERT_EQ(full.exitCode, 0) << full.output;
+    RadianceImage reference = readPfm(s + "-full.pfm");
+    const int w = reference.width, h = reference.height;
+    const int xs[] = {0, 5, w}, ys[] = {0, 4, h};
+    std::string tiles;
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        std::string tile = s + "-tile" + std::to_string(j * 2 + i) + ".pfm";
+        RunResult t = runVkrt(common + "--crop " + std::to_string(xs[i]) + "," + std::to_string(ys[j]) + "," +
+                              std::to_string(xs[i + 1]) + "," + std::to_string(ys[j + 1]) + " -o " + tile + " " + s +
+                              ".test");
+        ASSERT_EQ(t.exitCode, 0) << t.output;
+        tiles = " " + tile + tiles;
+      }
+    RunResult m = runVkrt("merge -o " + s + "-merged.pfm" + tiles);
+    ASSERT_EQ(m.exitCode, 0) << m.output;
+    EXPECT_NE(m.output.find("merged 4 tiles into " + s + "-merged.pfm (" + std::to_string(w) + "x" + std::to_string(h)),
+              std::string::npos)
+        << m.output;
+    RadianceImage merged = readPfm(s + "-merged.pfm");
+    ASSERT_EQ(merged.width, w);
+    EXPECT_TRUE(merged.rgb == reference.rgb) << scene << ": the merged crops differ from the full render";
+    EXPECT_EQ(merged.text, reference.text) << scene;   // the samples record (path), or none (Whitted)
+    RunResult png = runVkrt("merge -q -o " + s + "-merged.png" + tiles);
+    ASSERT_EQ(png.exitCode, 0) << png.output;
+    EXPECT_EQ(readImage(s + "-merged.png").rgb, encodeImage(reference, scene == std::string("p") ? 2.2 : 1.0).rgb)
+        << scene;
+  }
+  // Refusals, with nothing written.
+  RunResult other = runVkrt("--backend cpu -q --seed 6 --crop 5,0,13,4 -o " + dir + "/p-seed6.pfm " + dir + "/p.test");
+  ASSERT_EQ(other.exitCode, 0) << other.output;
+  RunResult png = runVkrt("--backend cpu -q --seed 5 --crop 5,0,13,4 -o " + dir + "/p-tile.png " + dir + "/p.test");
+  ASSERT_EQ(png.exitCode, 0) << png.output;
+  const std::pair<std::string, std::string> refused[] = {
+      {dir + "/p-tile0.pfm " + dir + "/p-seed6.pfm " + dir + "/p-tile2.pfm " + dir + "/p-tile3.pfm",
+       "tiles of different renders: '" + dir + "/p-tile0.pfm' holds the samples 3 gamma 2.2000000000000002 seeds 5:0+3, '" +
+           dir + "/p-seed6.pfm' the samples 3 gamma 2.2000000000000002 seeds 6:0+3"},
+      {dir + "/p-tile0.pfm " + dir + "/p-tile.png", "tile '" + dir + "/p-tile0.pfm' is a PFM file: merge tiles of one kind"},
+  };
+  for (const auto& [tiles, message] : refused) {
+    RunResult r = runVkrt("merge -o " + dir + "/never.pfm " + tiles);
+    EXPECT_EQ(r.exitCode, 1) << tiles << "\n" << r.output;
+    EXPECT_NE(r.output.find("vkrt: error: " + message), std::string::npos) << tiles << "\n" << r.output;
+    EXPECT_FALSE(fileExists(dir + "/never.pfm"));
+  }
 }

@@ -70,6 +70,8 @@ const char* usageText() {
          "merge: puts crops (--crop) back together into their full image, each where its record\n"
          "says; tiles of different full images, overlapping tiles, pixels no tile covers (unless\n"
          "--allow-gaps: they stay black) and a tile without a record are usage errors (1).\n"
+         "PFM crops merge into linear float (PFM, or PNG with the recorded gamma); the tiles\n"
+         "must be of one kind, and PFM tiles of one render (the same vkrt-samples record).\n"
          "With sample batches of one path-traced render (PFM images carrying a vkrt-samples\n"
          "record, rendered with different --seed), merge averages them weighted by their sample\n"
          "counts, into PFM or PNG (the recorded gamma); batches of different sizes, places or\n"

@@ -14,14 +14,20 @@
 namespace vkrt {
 namespace {
 
+// A tile of either kind: 8-bit (Image) or linear float from a PFM (RadianceImage).
+template <class Pixels>
 struct Tile {
   std::string path;
   CropRecord record;
-  Image image;
+  Pixels image;
 };
 
-Tile readTile(const std::string& path) {
-  Tile tile{path, {}, {}};
+Image readPixels(const std::string& path, const Image*) { return readImage(path); }
+RadianceImage readPixels(const std::string& path, const RadianceImage*) { return readPfm(path); }
+
+template <class Pixels>
+Tile<Pixels> readTile(const std::string& path) {
+  Tile<Pixels> tile{path, {}, {}};
   std::optional<std::string> value;
   for (const auto& [keyword, text] : readImageText(path))
     if (keyword == kCropKeyword) value = text;
@@ -31,23 +37,23 @@ Tile readTile(const std::string& path) {
   std::optional<CropRecord> record = parseCropRecord(*value);
   if (!record) throw UsageError("tile '" + path + "': malformed " + kCropKeyword + " record '" + *value + "'");
   tile.record = *record;
-  tile.image = readImage(path);
+  tile.image = readPixels(path, static_cast<const Pixels*>(nullptr));
   if (tile.image.width != record->rect.width() || tile.image.height != record->rect.height())
     throw UsageError("tile '" + path + "' is " + std::to_string(tile.image.width) + "x" +
                      std::to_string(tile.image.height) + ", but its record says " + *value);
   return tile;
 }
 
-}  // namespace
-
-Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
-  std::vector<Tile> tiles;
-  for (const std::string& path : tilePaths) tiles.push_back(readTile(path));
+// Reads the tiles, checks that they make one image, and copies each into place.
+template <class Pixels>
+Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, std::vector<Tile<Pixels>>& tiles,
+                  MergeReport* report) {
+  for (const std::string& path : tilePaths) tiles.push_back(readTile<Pixels>(path));
   if (tiles.empty()) throw UsageError("merge needs at least one tile");
   const int fullWidth = tiles[0].record.fullWidth, fullHeight = tiles[0].record.fullHeight;
   std::uint64_t covered = 0;
   for (std::size_t i = 0; i < tiles.size(); ++i) {
-    const Tile& t = tiles[i];
+    const Tile<Pixels>& t = tiles[i];
     if (t.record.fullWidth != fullWidth || t.record.fullHeight != fullHeight)
       throw UsageError("tiles of different images: '" + tiles[0].path + "' is a crop of a " +
                        std::to_string(fullWidth) + "x" + std::to_string(fullHeight) + " image, '" + t.path +
@@ -67,13 +73,23 @@ Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, Merg
     throw UsageError(std::to_string(gaps) + " pixels of the " + std::to_string(fullWidth) + "x" +
                      std::to_string(fullHeight) + " image are in no tile (a tile missing?); --allow-gaps leaves "
                      "them black");
-  Image merged(fullWidth, fullHeight);
-  for (const Tile& t : tiles)
+  Pixels merged(fullWidth, fullHeight);
+  for (const Tile<Pixels>& t : tiles)
     for (int y = 0; y < t.image.height; ++y)
       std::memcpy(merged.pixel(t.record.rect.x0, t.record.rect.y0 + y), t.image.pixel(0, y),
-                  static_cast<std::size_t>(t.image.width) * 3);
+                  static_cast<std::size_t>(t.image.width) * 3 * sizeof(*t.image.pixel(0, 0)));
   if (report) *report = {static_cast<int>(tiles.size()), gaps, {}};
   return merged;
+}
+
+}  // namespace
+
+Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
+  for (const std::string& path : tilePaths)
+    if (isPfmFile(path))
+      throw UsageError("tile '" + path + "' is a PFM file: merge tiles of one kind (all PFM, or all PNG or PPM)");
+  std::vector<Tile<Image>> tiles;
+  return placeTiles(tilePaths, allowGaps, tiles, report);
 }
 
 namespace {
@@ -163,6 +179,33 @@ RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeRep
     report->samples = merged;
   }
   return mean;
+}
+
+RadianceImage mergeFloatCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
+  for (const std::string& path : tilePaths)
+    if (!isPfmFile(path))
+      throw UsageError("tile '" + path + "' is not a PFM file, and '" + tilePaths.front() +
+                       "' is: merge tiles of one kind (all PFM, or all PNG or PPM)");
+  std::vector<Tile<RadianceImage>> tiles;
+  RadianceImage merged = placeTiles(tilePaths, allowGaps, tiles, report);
+  // The tiles of one path-traced render carry one samples record; it goes with the image.
+  std::optional<std::string> first = recordOf(tiles.front().image.text, kSamplesKeyword);
+  for (const Tile<RadianceImage>& t : tiles) {
+    std::optional<std::string> value = recordOf(t.image.text, kSamplesKeyword);
+    if (value != first)
+      throw UsageError("tiles of different renders: '" + tiles.front().path + "' holds " +
+                       (first ? "the samples " + *first : std::string("no samples record")) + ", '" + t.path + "' " +
+                       (value ? "the samples " + *value : std::string("no samples record")));
+  }
+  if (first) {
+    std::optional<SampleRecord> record = parseSampleRecord(*first);
+    if (!record)
+      throw UsageError("tile '" + tiles.front().path + "': malformed " + kSamplesKeyword + " record '" + *first + "'");
+    merged.samples = record->total();
+    merged.text.emplace_back(kSamplesKeyword, *first);
+    if (report) report->samples = *record;
+  }
+  return merged;
 }
 
 }  // namespace vkrt

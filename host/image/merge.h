@@ -34,6 +34,13 @@ namespace vkrt {
 // record, and they lie at one place (the same crop record, or none). Throws IoError.
 bool areSampleBatches(const std::vector<std::string>& paths);
 
+// mergeCrops for tiles that are PFM files (linear float, as rendered): the same checks, and
+// the tiles' samples record (path-traced tiles carry one), which must be the same in every
+// tile, goes with the merged image (report->samples holds it, gamma 1 when none). Throws
+// UsageError for a tile that is not a PFM (mergeCrops likewise refuses PFM tiles).
+RadianceImage mergeFloatCrops(const std::vector<std::string>& tilePaths, bool allowGaps,
+                              MergeReport* report = nullptr);
+
 // Reads every batch and averages them weighted by their sample counts (image/samples.h:
 // accumulateMean); the result carries the crop record (if any) and the union of the samples
 // records. Throws UsageError for batches that are not of one render: one that is not a PFM
