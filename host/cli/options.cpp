@@ -14,7 +14,7 @@ namespace vkrt {
 const char* usageText() {
   return "usage: vkrt [options] SCENE.test [SCENE.test ...]\n"
          "       vkrt diff [comparison options] A.png B.png\n"
-         "       vkrt merge [--allow-gaps] -o OUT.png TILE.png [TILE.png ...]\n"
+         "       vkrt merge [--allow-gaps] -o OUT.png|OUT.pfm TILE [TILE ...]   (all PNG/PPM or all PFM)\n"
          "       vkrt merge -o OUT.pfm|OUT.png BATCH.pfm [BATCH.pfm ...]\n"
          "\n"
          "Renders CSE167 (and CSE168) scene files to PNG, PPM or PFM images, or compares two images.\n"
