@@ -140,6 +140,25 @@ TEST(ExitStatus, NoSuchVulkanDeviceIs3) {
   EXPECT_FALSE(fileExists(dir + "/o.png"));
 }
 
+// The context is made while the scene is parsed; the scene's own errors still come first,
+// and in a batch each scene meets the device error in turn.
+TEST(ExitStatus, SceneErrorsComeBeforeTheDevicesOne) {
+  std::string dir = freshDir("exit-status/device-order");
+  writeFile(dir + "/s.test", kScene);
+  writeFile(dir + "/bad.test", std::string(kScene) + "tri 0 1 2\n");
+  RunResult bad = runVkrt("--backend vulkan --device no-such-gpu-xyz -o " + dir + "/o.png " + dir + "/bad.test");
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find(dir + "/bad.test:"), std::string::npos) << bad.output;
+  EXPECT_EQ(bad.output.find("no-such-gpu-xyz"), std::string::npos) << bad.output;
+  RunResult batch = runVkrt("--backend vulkan --device no-such-gpu-xyz -o " + dir + "/ " + dir + "/bad.test " + dir +
+                            "/s.test " + dir + "/s.test");
+  EXPECT_EQ(batch.exitCode, 3) << batch.output;
+  EXPECT_NE(batch.output.find("[1/3] exit 2"), std::string::npos) << batch.output;
+  EXPECT_NE(batch.output.find("[2/3] exit 3"), std::string::npos) << batch.output;
+  EXPECT_NE(batch.output.find("[3/3] exit 3"), std::string::npos) << batch.output;
+  EXPECT_FALSE(fileExists(dir + "/s.png"));
+}
+
 TEST(ExitStatus, UnreadableFilesAre4) {
   std::string dir = freshDir("exit-status/io");
   writeFile(dir + "/s.test", kScene);

@@ -274,9 +274,20 @@ std::string pathInOutputDir(const SceneDesc& scene, const std::string& dir) {
 RenderSession::RenderSession() = default;
 RenderSession::~RenderSession() = default;
 
+void RenderSession::prepare(const RenderRequest& request) {
+  if (context_ || pending_.valid()) return;
+  ContextOptions options{request.device, request.validation};
+  pending_ = std::async(std::launch::async, [options] { return std::make_unique<Context>(options); });
+}
+
 const Context& RenderSession::context(const RenderRequest& request, bool& made) {
   made = !context_;
-  if (!context_) context_ = std::make_unique<Context>(ContextOptions{request.device, request.validation});
+  if (context_) return *context_;
+  if (pending_.valid()) {
+    context_ = pending_.get();   // rethrows its DeviceError
+  } else {
+    context_ = std::make_unique<Context>(ContextOptions{request.device, request.validation});
+  }
   return *context_;
 }
 
@@ -308,6 +319,9 @@ std::string resolveOutput(const SceneDesc& scene, const RenderRequest& request) 
 
 RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
                                   bool checkOutput, RenderSession* session) {
+  RenderSession ownSession;   // for this render only, when not lent one
+  RenderSession& vulkan = session ? *session : ownSession;
+  if (request.backend == Backend::Vulkan) vulkan.prepare(request);
   auto t0 = std::chrono::steady_clock::now();
   ParsedScene parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict});
   SceneDesc& scene = parsed.scene;
@@ -346,10 +360,8 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
                          ? static_cast<int>(plan.progressive.spp)
                          : kMaxSamplesPerPixel;
 
-  RenderSession ownSession;   // for this render only, when not lent one
-  RadianceImage image = request.backend == Backend::Cpu
-                            ? renderWithCpu(request, scene, progress, report, plan)
-                            : renderWithVulkan(request, scene, progress, report, session ? *session : ownSession, plan);
+  RadianceImage image = request.backend == Backend::Cpu ? renderWithCpu(request, scene, progress, report, plan)
+                                                        : renderWithVulkan(request, scene, progress, report, vulkan, plan);
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
   checkFinite(request, scene, report);

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -97,12 +98,18 @@ class RenderSession {
   ~RenderSession();
   RenderSession(const RenderSession&) = delete;
   RenderSession& operator=(const RenderSession&) = delete;
-  // The context, made now on the first call (throws DeviceError); `made` says whether this
-  // call made it (its instance and device times are then this render's).
+  // Starts making the context on another thread (when there is none yet), so that loading
+  // the driver and creating the instance and device overlap parsing the scene and building
+  // its BVH. A failure is kept for context() to throw, so that a scene's own errors come first.
+  void prepare(const RenderRequest& request);
+  // The context: the one prepare() started (waited for), or made now on the first call
+  // (throws DeviceError); `made` says whether this render made it (its instance and device
+  // times are then this render's).
   const Context& context(const RenderRequest& request, bool& made);
 
  private:
   std::unique_ptr<Context> context_;
+  std::future<std::unique_ptr<Context>> pending_;   // prepare()'s, until context() takes it
 };
 
 // Throws SceneError (bad scene, including an unwritable `output`), IoError (files),
