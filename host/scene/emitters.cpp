@@ -20,16 +20,22 @@ double sphereEmitterArea(const Sphere& s) {
 EmitterTable collectEmitters(const SceneDesc& scene) {
   EmitterTable table;
   std::vector<double> weights;
-  auto add = [&](std::uint32_t prim, std::uint32_t material, double area) {
-    const double w = area * emitterRadianceWeight(scene.materials[material]);
-    if (w > 0.0 && std::isfinite(w)) table.prims.push_back(prim), weights.push_back(w);
+  // The material's weight first: most primitives emit nothing, and their areas are not needed.
+  auto radianceWeight = [&](std::uint32_t material) {
+    return material < scene.materials.size() ? emitterRadianceWeight(scene.materials[material]) : 0.0;
+  };
+  auto add = [&](std::uint32_t prim, double weight) {
+    if (weight > 0.0 && std::isfinite(weight)) table.prims.push_back(prim), weights.push_back(weight);
   };
   for (std::uint32_t i = 0; i < scene.triangles.size(); ++i) {
     const Triangle& t = scene.triangles[i];
-    add(i, t.material, 0.5 * glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])));
+    const double e = radianceWeight(t.material);
+    if (e > 0.0) add(i, 0.5 * glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])) * e);
   }
-  for (std::uint32_t i = 0; i < scene.spheres.size(); ++i)
-    add(i | gpu::kPrimSphereBit, scene.spheres[i].material, sphereEmitterArea(scene.spheres[i]));
+  for (std::uint32_t i = 0; i < scene.spheres.size(); ++i) {
+    const double e = radianceWeight(scene.spheres[i].material);
+    if (e > 0.0) add(i | gpu::kPrimSphereBit, sphereEmitterArea(scene.spheres[i]) * e);
+  }
   for (double w : weights) table.totalWeight += w;
   double running = 0.0;
   for (double w : weights) {
