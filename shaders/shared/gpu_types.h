@@ -473,7 +473,7 @@ struct GpuPathTracerState {
   vec4 pending;             // rgb what the shadow ray adds when nothing blocks it, w = cos at the hit
   uint phase;               // kPhaseTrace, kPhaseLight, kPhaseShadow or kPhaseDone
   uint bounce;              // path vertex: 0 at the camera ray's hit
-  uint lightIndex;          // the next light sample of the vertex (quad lights' samples, then lights)
+  uint lightIndex;          // the next light sample of the vertex (quad lights' samples, then lights, then emitters')
   uint stackSize;
   uint hitPrim;             // primRef of the nearest hit so far, or kNoHit
   uint hitMaterial;
