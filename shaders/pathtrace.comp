@@ -1,10 +1,11 @@
 // pathtrace.comp: the path integrators of SPEC-PATHTRACING (analyticdirect, direct, pathtracer).
 // One invocation per pixel of a band renders that pixel's samples [firstSample, firstSample +
 // sampleCount) one after another and adds them up in float. Each sample is a path: camera
-// ray, then at each vertex emission, light samples (quad lights, by next-event estimation;
-// point and directional lights always) with shadow rays, and a scattered ray, as
-// GpuPathParams says. Random numbers come from the counter-based generator of gpu_types.h,
-// drawn by the rules stated there, so that the CPU reference follows the same paths.
+// ray, then at each vertex emission, light samples (quad lights and emissive triangles and
+// spheres, by next-event estimation; point and directional lights always) with shadow rays,
+// and a scattered ray, as GpuPathParams says. Random numbers come from the counter-based
+// generator of gpu_types.h, drawn by the rules stated there, so that the CPU reference
+// follows the same paths.
 // Like raytrace.comp it is a state machine of bounded steps: a pixel that runs out of steps
 // saves its state (GpuPathTracerState) and the host dispatches again, so that no invocation
 // exceeds llvmpipe's loop budget whatever the path length (see kDefaultStepBudget).
@@ -31,6 +32,7 @@ layout(constant_id = kPathSpecSampling) const uint kSpecSampling = kPathSpecFrom
 layout(constant_id = kPathSpecRussianRoulette) const uint kSpecRussianRoulette = kPathSpecFromParams;
 layout(constant_id = kPathSpecStratified) const uint kSpecStratified = kPathSpecFromParams;
 layout(constant_id = kPathSpecJitter) const uint kSpecJitter = kPathSpecFromParams;
+layout(constant_id = kPathSpecHasEmitters) const bool kHasEmitters = true;
 
 #include "scene_reads.glsl"
 #include "intersect.glsl"
@@ -51,6 +53,9 @@ GpuQuadLight loadQuadLight(uint i) {
 layout(std430, binding = kBindingQuadLights) readonly buffer QuadLights { GpuQuadLight quadLights[]; };
 GpuQuadLight loadQuadLight(uint i) { return quadLights[i]; }
 #endif
+
+// The emissive triangles and spheres that next-event estimation samples (path.emitterCount).
+layout(std430, binding = kBindingEmitters) readonly buffer Emitters { GpuEmitter emitters[]; };
 
 // rgb: the sum of the pixel's finished samples; w: 1 once all are done, 0 while suspended.
 layout(std430, binding = kBindingPixels) buffer Accumulation { vec4 accumulation[]; };
@@ -216,6 +221,56 @@ vec3 polygonIrradianceVector(GpuQuadLight q, vec3 x) {
   return 0.5 * phi;
 }
 
+// ---- emissive triangles and spheres as lights (gpu_types.h, GpuEmitter) -----------------------
+
+// Whether next-event estimation samples the emitters (beyond the course: the path tracer's
+// `nexteventestimation on` and `mis`).
+bool samplesEmitters() {
+  return kHasEmitters && integrator() == kIntegratorPathTracer && nextEvent() != kNextEventOff &&
+         path.emitterCount > 0u;
+}
+
+// The density per world area with which a light sample draws a point of a triangle of
+// material m (pick x area pdf): sum(|emission|) / total weight; an ellipsoid's is this times
+// sphereDensityFactor.
+float emitterAreaDensity(GpuMaterial m) {
+  return (abs(m.emission.r) + abs(m.emission.g) + abs(m.emission.b)) * path.emitterWeightScale;
+}
+
+// At the point of ellipsoid s whose object-space unit normal is nObject: the unit world
+// normal, and 1 / (|det M|^(1/3) |M^-T n|), M = the inverse of objectFromWorld.
+float sphereDensityFactor(GpuSphere s, vec3 nObject, out vec3 normal) {
+  mat3 o = mat3(s.objectFromWorld);
+  vec3 m = transpose(o) * nObject;   // M^-T n
+  float len = length(m);
+  normal = m / len;
+  return pow(abs(determinant(o)), 1.0 / 3.0) / len;
+}
+
+// The solid-angle density with which a light sample finds the current hit (an emissive
+// triangle or sphere of material m, at distance bestT along rayDir) from the vertex before.
+float emitterHitPdf(GpuMaterial m) {
+  vec3 normal;
+  float factor = 1.0;
+  if (kHasSpheres && (!kHasTriangles || (hitPrim & kPrimSphereBit) != 0u)) {
+    GpuSphere s = loadSphere(hitPrim & ~kPrimSphereBit);
+    vec3 pObject = (s.objectFromWorld * vec4(hitPoint, 1.0)).xyz - s.centerRadius.xyz;
+    factor = sphereDensityFactor(s, normalize(pObject), normal);
+  } else {
+    GpuTriangle tri = loadTriangle(hitPrim);
+    normal = vec3(tri.p0.w, tri.p1.w, tri.p2.w);   // the face's (emission is two-sided)
+  }
+  return emitterAreaDensity(m) * factor * bestT * bestT / abs(dot(normal, rayDir));
+}
+
+// The least t of a ray leaving point p of a primitive whose offset is primitiveOffset at
+// |N.dir| = cosine (the policy of gpu_types.h, as setSecondaryOffsets and secondaryTMin).
+float offsetAt(float primitiveOffset, vec3 p, float cosine) {
+  vec3 a = max(abs(p), abs(p - path.cameraOrigin.xyz));
+  float magnitude = max(max(a.x, a.y), a.z);
+  return max(max(primitiveOffset, kOffsetPerMagnitude * magnitude), kGrazingPerMagnitude * magnitude / max(cosine, 1e-30));
+}
+
 // ---- the state machine's steps -----------------------------------------------------------------
 
 void startRay(vec3 origin, vec3 dir, float tMin) {
@@ -296,7 +351,18 @@ void beginShading() {
     finishSample();
     return;
   }
-  radiance += throughput * m.emission.rgb;   // found by hitting only (not sampled)
+  // Other emission: found by hitting only, unless the light samples of the vertex before
+  // counted it (NEE on) or weighted it against this ray (MIS).
+  vec3 emitted = m.emission.rgb;
+  if (kHasEmitters && bounce > 0u && samplesEmitters() && any(notEqual(emitted, vec3(0.0)))) {
+    if (nextEvent() == kNextEventOn) {
+      emitted = vec3(0.0);
+    } else {
+      float ratio = emitterHitPdf(m) / lastPdf;
+      emitted *= 1.0 / (1.0 + ratio * ratio);
+    }
+  }
+  radiance += throughput * emitted;
   bool analytic = integrator() == kIntegratorAnalyticDirect;
   // Whether this vertex samples lights and scatters: SPEC-PATHTRACING section 4's depth rule
   // (vertex `bounce` may when bounce < maxdepth, kMaxBounces with no limit), one vertex for
@@ -382,6 +448,67 @@ void pointLightSample(uint i, GpuMaterial m, bool analytic) {
     startShadowRay(wi, tMax, cosSurface, c);
 }
 
+// Light sample k of N of the emissive triangles and spheres (the rules of gpu_types.h): an
+// emitter picked from the cumulative table, a point on it, and its shadow ray, which stops
+// short of the point by the emitter's secondary-ray offset there. Each iteration of the
+// table's binary search is a step of the budget.
+void emitterSample(uint k, GpuMaterial m, inout uint step) {
+  uint n = path.lightSamples;
+  uint slot = rngEmitterPointSlot(path.quadLightCount, n, k);
+  float s = randomAt(slot), t = randomAt(slot + 1u);
+  if (stratified()) {
+    float cells = float(path.lightStrata);
+    s = (float(k % path.lightStrata) + s) / cells;
+    t = (float(k / path.lightStrata) + t) / cells;
+  }
+  float u = randomAt(rngEmitterPickSlot(path.quadLightCount, n, k));
+  uint lo = 0u, hi = path.emitterCount;   // the first entry whose cdf exceeds u
+  while (lo < hi) {
+    uint mid = (lo + hi) / 2u;
+    if (emitters[mid].cdf > u)
+      hi = mid;
+    else
+      lo = mid + 1u;
+    ++step;
+  }
+  uint prim = emitters[min(lo, path.emitterCount - 1u)].primRef;
+  vec3 x, normal;
+  float factor = 1.0, primitiveOffset;
+  uint material;
+  if (kHasSpheres && (!kHasTriangles || (prim & kPrimSphereBit) != 0u)) {
+    GpuSphere sp = loadSphere(prim & ~kPrimSphereBit);
+    float z = 1.0 - 2.0 * s, r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * t;
+    vec3 nObject = vec3(r * cos(phi), r * sin(phi), z);
+    vec3 pObject = sp.centerRadius.xyz + sp.centerRadius.w * nObject;
+    x = inverse(mat3(sp.objectFromWorld)) * (pObject - sp.objectFromWorld[3].xyz);
+    factor = sphereDensityFactor(sp, nObject, normal);
+    material = sp.materialIndex;
+    primitiveOffset = sp.rayOffset;
+  } else {
+    GpuTriangle tri = loadTriangle(prim);
+    float su = sqrt(s);
+    x = (1.0 - su) * tri.p0.xyz + su * (1.0 - t) * tri.p1.xyz + su * t * tri.p2.xyz;
+    normal = vec3(tri.p0.w, tri.p1.w, tri.p2.w);
+    material = tri.materialIndex;
+    primitiveOffset = tri.rayOffset;
+  }
+  GpuMaterial light = loadMaterial(material);
+  vec3 d = x - hitPoint;
+  float distance2 = dot(d, d);
+  float distance = sqrt(distance2);
+  vec3 wi = d / distance;
+  float cosSurface = dot(hitNormal, wi), cosLight = abs(dot(normal, wi));
+  if (!(distance > 0.0 && cosSurface > 0.0 && cosLight > 0.0)) return;
+  float lightPdf = emitterAreaDensity(light) * factor * distance2 / cosLight;
+  vec3 c = throughput * brdf(m, hitNormal, wi, -rayDir) * light.emission.rgb * (cosSurface / (lightPdf * float(n)));
+  if (nextEvent() == kNextEventMis) {
+    float ratio = scatterPdf(m, hitNormal, wi, -rayDir) / lightPdf;
+    c *= 1.0 / (1.0 + ratio * ratio);
+  }
+  if (any(notEqual(c, vec3(0.0))))
+    startShadowRay(wi, distance - offsetAt(primitiveOffset, x, cosLight), cosSurface, c);
+}
+
 // Leaves the vertex along a sampled direction, or ends the path.
 void scatter(GpuMaterial m) {
   vec3 wo = -rayDir;
@@ -412,8 +539,8 @@ void scatter(GpuMaterial m) {
   startRay(hitPoint, wi, secondaryTMin(cosine));
 }
 
-// One light sample of the vertex (no loop: each is a step), then the scatter.
-void lightStep() {
+// One light sample of the vertex (each is a step), then the scatter.
+void lightStep(inout uint step) {
   GpuMaterial m = loadMaterial(hitMaterial);
   uint quad = quadLightSamples();
   if (kHasQuadLights && lightIndex < quad) {
@@ -428,6 +555,10 @@ void lightStep() {
   }
   if ((kHasPointLights || kHasDirectionalLights) && lightIndex < quad + path.lightCount) {
     pointLightSample(lightIndex++ - quad, m, integrator() == kIntegratorAnalyticDirect);
+    return;
+  }
+  if (kHasEmitters && samplesEmitters() && lightIndex < quad + path.lightCount + path.lightSamples) {
+    emitterSample(lightIndex++ - quad - path.lightCount, m, step);
     return;
   }
   if (integrator() == kIntegratorPathTracer)
@@ -585,7 +716,7 @@ void main() {
   // bodies for the vector whenever any lane needs either).
   for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
     if (phase == kPhaseTrace || phase == kPhaseShadow) traversalStep(step);
-    if (phase == kPhaseLight) lightStep();
+    if (phase == kPhaseLight) lightStep(step);
     if (phase == kPhaseSampleEnd) endSample();
   }
 

@@ -301,3 +301,36 @@ TEST(Flatten, QuadLightsMaterialFieldsAndPathSettings) {
   EXPECT_EQ(g.spp, 16u);
   EXPECT_EQ(g.path.cameraOrigin.x, g.push.cameraOrigin.x);
 }
+
+// The emitter table: emissive triangles and spheres (not a quad light's triangles, not
+// non-emitters), triangles first, picked in proportion to area x sum(|emission|), with the
+// cumulative probabilities in float and 1 / the total weight.
+TEST(Flatten, EmitterTableWeighsAreaTimesEmission) {
+  SceneDesc s = parseScene("size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\nvertex 0 0 0\nvertex 2 0 0\nvertex 0 2 0\n"
+                           "tri 0 1 2\n"                       // material 0: no emission
+                           "emission 1 2 -1\ntri 0 1 2\n"      // area 2, weight 2 x 4
+                           "pushTransform\nscale 2 2 2\nsphere 0 0 0 0.5\npopTransform\n"   // area 4 pi, weight 4 pi x 4
+                           "emission 0 0 0\nsphere 3 0 0 1\n",
+                           "e.test");
+  Material light;
+  light.emission = dvec3(5, 4, 3);
+  light.quadLight = 0;
+  s.materials.push_back(light);
+  Triangle quadHalf = s.triangles[0];
+  quadHalf.material = static_cast<std::uint32_t>(s.materials.size() - 1);
+  s.triangles.push_back(quadHalf);
+  QuadLight q;
+  q.radiance = dvec3(5, 4, 3);
+  s.quadLights.push_back(q);
+  GpuScene g = flatten(s);
+  ASSERT_EQ(g.emitters.size(), 2u);
+  EXPECT_EQ(g.path.emitterCount, 2u);
+  EXPECT_EQ(g.emitters[0].primRef, 1u);
+  EXPECT_EQ(g.emitters[1].primRef, 0u | gpu::kPrimSphereBit);
+  const double pi = 3.14159265358979323846, total = 8.0 + 16.0 * pi;
+  EXPECT_FLOAT_EQ(g.emitters[0].cdf, static_cast<float>(8.0 / total));
+  EXPECT_EQ(g.emitters[1].cdf, 1.0f);
+  EXPECT_FLOAT_EQ(g.path.emitterWeightScale, static_cast<float>(1.0 / total));
+  // No emitters: an empty table.
+  EXPECT_TRUE(flatten(randomScene(10, 3, 7)).emitters.empty());
+}

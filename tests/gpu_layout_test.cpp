@@ -43,6 +43,7 @@ TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
   auto params = patterned<gpu::GpuRenderParams>(7);
   auto quadLights = patterned<gpu::GpuQuadLight>(8);
   auto pathParams = patterned<gpu::GpuPathParams>(9);
+  auto emitters = patterned<gpu::GpuEmitter>(10);
   std::vector<std::uint32_t> expected;
   appendSecond(expected, triangles);
   appendSecond(expected, normals);
@@ -55,19 +56,20 @@ TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
   appendSecond(expected, quadLights);
   const auto* pathWords = reinterpret_cast<const std::uint32_t*>(&pathParams[0]);
   expected.insert(expected.end(), pathWords, pathWords + sizeof(gpu::GpuPathParams) / 4);
+  appendSecond(expected, emitters);
 
   Buffer b0 = Buffer::withContents(*context, triangles), b1 = Buffer::withContents(*context, normals),
          b2 = Buffer::withContents(*context, spheres), b3 = Buffer::withContents(*context, lights),
          b4 = Buffer::withContents(*context, materials), b5 = Buffer::withContents(*context, nodes),
          b6 = Buffer::withContents(*context, params), b8 = Buffer::withContents(*context, quadLights),
-         b9 = Buffer::withContents(*context, pathParams);
+         b9 = Buffer::withContents(*context, pathParams), b10 = Buffer::withContents(*context, emitters);
   Buffer out(*context, expected.size() * 4, true);
-  std::vector<VkDescriptorType> types(10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  std::vector<VkDescriptorType> types(11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
   types[6] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   types[9] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   ComputePipeline probe(*context, kLayoutProbeSpirv, sizeof(kLayoutProbeSpirv), types, {}, 0);
-  const Buffer* all[] = {&b0, &b1, &b2, &b3, &b4, &b5, &b6, &out, &b8, &b9};
-  for (std::uint32_t i = 0; i < 10; ++i) {
+  const Buffer* all[] = {&b0, &b1, &b2, &b3, &b4, &b5, &b6, &out, &b8, &b9, &b10};
+  for (std::uint32_t i = 0; i < 11; ++i) {
     if (i == 6 || i == 9)
       probe.bindUniform(i, *all[i]);
     else

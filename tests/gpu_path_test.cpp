@@ -10,6 +10,7 @@
 
 #include "gpu/vulkan_path_renderer.h"
 #include "image/png.h"
+#include "path_scenes.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
 #include "test_support.h"
@@ -417,6 +418,26 @@ TEST(GpuPath, CropIsTheFullRendersRegionBitForBit) {
 // A pixel that runs out of steps saves its state and resumes in the next dispatch: the image
 // must be the same, bit for bit, as with a budget that never runs out (unlimited depth with
 // Russian roulette, MIS, point lights, every kind of step).
+namespace {
+
+// A render that suspends after every few steps is the one that never suspends, bit for bit.
+void expectSuspensionChangesNoBit(const SceneDesc& s) {
+  VulkanPathOptions o;
+  o.sampleCount = 3;
+  o.stepBudget = 13000;   // within llvmpipe's limit (13000 x (1 + kMaxLeafPrims) < 65,535)
+  VulkanTimings whole, pieces;
+  RadianceImage a = renderPath(s, o, nullptr, &whole);
+  EXPECT_EQ(whole.suspensions, 0u) << "make the scene easier: the reference render must not suspend";
+  for (std::uint32_t budget : {2u, 5u, 37u}) {
+    o.stepBudget = budget;
+    RadianceImage b = renderPath(s, o, nullptr, &pieces);
+    EXPECT_GT(pieces.suspensions, 1000u);
+    EXPECT_TRUE(sameBits(a, b)) << "budget " << budget;
+  }
+}
+
+}  // namespace
+
 TEST(GpuPath, SuspendingAfterEveryFewStepsChangesNoBit) {
   VKRT_REQUIRE_GPU(context);
   SceneDesc s = boxScene(16);
@@ -430,18 +451,19 @@ TEST(GpuPath, SuspendingAfterEveryFewStepsChangesNoBit) {
   point.vec = dvec3(0.5, 1.5, 0.5);
   point.color = dvec3(0.3, 0.3, 0.3);
   s.lights.push_back(point);
-  VulkanPathOptions o;
-  o.sampleCount = 3;
-  o.stepBudget = 13000;   // within llvmpipe's limit (13000 x (1 + kMaxLeafPrims) < 65,535)
-  VulkanTimings whole, pieces;
-  RadianceImage a = renderPath(s, o, nullptr, &whole);
-  EXPECT_EQ(whole.suspensions, 0u) << "make the scene easier: the reference render must not suspend";
-  for (std::uint32_t budget : {2u, 5u, 37u}) {
-    o.stepBudget = budget;
-    RadianceImage b = renderPath(s, o, nullptr, &pieces);
-    EXPECT_GT(pieces.suspensions, 1000u);
-    EXPECT_TRUE(sameBits(a, b)) << "budget " << budget;
-  }
+  expectSuspensionChangesNoBit(s);
+}
+
+// The same with emissive triangles and an ellipsoid sampled as lights (the emitter table's
+// search counts its steps).
+TEST(GpuPath, SuspendingWithEmittersChangesNoBit) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = test::emissiveSurfacesBox(16, -1);
+  s.path.russianRoulette = true;
+  s.path.nextEvent = NextEvent::Mis;
+  s.path.sampling = Sampling::Brdf;
+  s.path.lightSamples = 2;
+  expectSuspensionChangesNoBit(s);
 }
 
 // Batches [0, 4) and [4, 8) average to the render of [0, 8) (up to the order of float sums).
@@ -499,16 +521,19 @@ TEST(GpuPath, MaxDepthZeroShowsEmittersOnly) {
   EXPECT_GT(lit, 0);
 }
 
+namespace {
+
+constexpr int kStrategyBlocks = 16;   // 8x8 blocks of the 32x32 image
+
 // SPEC-PATHTRACING section 4's invariant: NEE off, on and MIS (and with them Russian
 // roulette, the three samplings, light samples and strata) change the noise, not the
 // expected image. Per-block t-tests (8x8 blocks of a 32x32 image) against NEE on, family
-// false-alarm rate 1e-3 over all the tests of this test.
-TEST(GpuPathSlow, StrategiesConvergeToTheSameImage) {
-  VKRT_REQUIRE_GPU(context);
-  SceneDesc base = boxScene(32);
-  base.maxDepth = 3;
+// false-alarm rate 1e-3 over all the tests of one call, each image of `samples` samples per
+// pixel. Returns the reference image.
+RadianceImage expectStrategiesAgree(const SceneDesc& base, const std::string& name, std::uint32_t firstSeed,
+                                    std::uint32_t samples) {
   VulkanPathOptions o;
-  o.sampleCount = 64;
+  o.sampleCount = samples;
   struct Variant {
     const char* name;
     NextEvent nee;
@@ -528,9 +553,9 @@ TEST(GpuPathSlow, StrategiesConvergeToTheSameImage) {
   refScene.path.sampling = Sampling::Cosine;
   o.seed = 1000;
   RadianceImage reference = renderPath(refScene, o);
-  save(reference, "strategies-reference");
-  const int blocks = 16, tests = blocks * 3 * static_cast<int>(std::size(variants));
-  std::uint32_t seed = 1;
+  save(reference, name + "-reference");
+  const int tests = kStrategyBlocks * 3 * static_cast<int>(std::size(variants));
+  std::uint32_t seed = firstSeed;
   for (const Variant& v : variants) {
     SceneDesc s = base;
     s.path.nextEvent = v.nee;
@@ -541,14 +566,36 @@ TEST(GpuPathSlow, StrategiesConvergeToTheSameImage) {
     o.seed = seed++;
     RadianceImage img = renderPath(s, o);
     auto failures = blockTTests(img, reference, 8, 1e-3, tests);
-    if (!failures.empty()) save(img, std::string("strategies-") + v.name);
-    EXPECT_TRUE(failures.empty()) << v.name << ": " << failures.size() << " blocks differ, first " << failures[0];
+    if (!failures.empty()) save(img, name + "-" + v.name);
+    EXPECT_TRUE(failures.empty()) << name << " " << v.name << ": " << failures.size() << " blocks differ, first "
+                                  << failures[0];
   }
+  return reference;
+}
+
+}  // namespace
+
+TEST(GpuPathSlow, StrategiesConvergeToTheSameImage) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc base = boxScene(32);
+  base.maxDepth = 3;
+  const RadianceImage reference = expectStrategiesAgree(base, "strategies", 1, 64);
   // The test's power: one bounce more (maxdepth 4) is a different image, and must be told apart.
-  SceneDesc deeper = refScene;
+  SceneDesc deeper = base;
   deeper.maxDepth = 4;
-  o.seed = seed++;
-  EXPECT_FALSE(blockTTests(renderPath(deeper, o), reference, 8, 1e-3, tests).empty());
+  deeper.path.nextEvent = NextEvent::On;
+  deeper.path.sampling = Sampling::Cosine;
+  VulkanPathOptions o;
+  o.sampleCount = 64;
+  o.seed = 5;
+  EXPECT_FALSE(blockTTests(renderPath(deeper, o), reference, 8, 1e-3, kStrategyBlocks * 3 * 4).empty());
+}
+
+// The same with emissive triangles and an ellipsoid (no quad light) sampled as lights (NEE
+// on, mis) or found by hitting only (off).
+TEST(GpuPathSlow, EmissiveSurfacesAsLights) {
+  VKRT_REQUIRE_GPU(context);
+  expectStrategiesAgree(test::emissiveSurfacesBox(32, 3), "emitters", 11, 1024);
 }
 
 // Every course scene of hw2-hw4 renders on the GPU: a 24x24 crop below the image's centre, one

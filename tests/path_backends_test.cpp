@@ -10,6 +10,7 @@
 #include "cpu/path_reference.h"
 #include "gpu/vulkan_path_renderer.h"
 #include "image/image.h"
+#include "path_scenes.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
@@ -76,6 +77,20 @@ TEST(PathBackendsProjectScene, GiBoxParsesCleanlyAndBothBackendsAgree) {
   ParsedScene parsed = parseSceneFileWithWarnings(sourcePath("scenes/gi/box.test"));
   EXPECT_TRUE(parsed.warnings.empty()) << parsed.warnings.front().message;
   expectBackendsAgree(parsed.scene, "path-backends-gi-box");
+}
+
+// Emissive triangles and an ellipsoid (a rotated, non-uniformly scaled sphere) sampled as
+// lights: both backends pick the same emitters and points with the same numbers, and weigh
+// them (mis) alike.
+TEST(PathBackendsEmitters, NextEventEstimationAndMisAgree) {
+  for (NextEvent nee : {NextEvent::On, NextEvent::Mis}) {
+    SceneDesc scene = emissiveSurfacesBox(64, 3);
+    scene.path.nextEvent = nee;
+    scene.path.sampling = Sampling::Brdf;
+    scene.path.lightSamples = 4;
+    scene.path.lightStratify = true;
+    expectBackendsAgree(scene, nee == NextEvent::On ? "path-backends-emitters-nee" : "path-backends-emitters-mis");
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Cse168, PathBackends,

@@ -14,6 +14,7 @@
 #include "cpu/pixel_tiles.h"
 #include "cpu/scene_query.h"
 #include "gpu_types.h"
+#include "scene/emitters.h"
 
 namespace vkrt {
 namespace {
@@ -34,11 +35,9 @@ struct AreaLight {
 };
 
 // Emissive triangles and spheres (`emission`, not quad lights) as one more light for
-// next-event estimation (beyond the course; issue item 6): each light sample picks one of
-// them with probability proportional to area x sum(|emission|), then a point uniform in area
-// on it. Its numbers follow the quad lights' (gpu_types.h leaves them to us): sample k of N
-// takes the point's (u, v) from the pair of light index Q (the quad lights' count), slots
-// kRngSlotLightBase + 2 (Q N + k) and + 1, and the pick from slot kRngSlotLightBase + 2 (Q + 1) N + k.
+// next-event estimation (beyond the course): each light sample picks one of them with
+// probability proportional to area x sum(|emission|) (scene/emitters.h), then a point on it,
+// by the rules and from the slots of gpu_types.h (rngEmitterPointSlot, rngEmitterPickSlot).
 struct EmitterPoint {
   dvec3 x;                 // the point
   dvec3 normal;            // unit geometric normal there (emission is two-sided)
@@ -90,39 +89,14 @@ class PathIntegrator {
   }
 
  private:
-  // The power weight of an emitting material over `area`, 0 for quad lights and non-emitters.
-  double emitterWeight(std::uint32_t material, double area) const {
-    const Material& m = scene_.materials[material];
-    if (m.quadLight >= 0) return 0.0;
-    return area * (std::abs(m.emission.x) + std::abs(m.emission.y) + std::abs(m.emission.z));
-  }
-
   // The emissive triangles and spheres, and the probability with which a light sample picks each.
   void collectEmitters() {
-    std::vector<double> weights;
-    for (std::uint32_t i = 0; i < scene_.triangles.size(); ++i) {
-      const Triangle& t = scene_.triangles[i];
-      const double w = emitterWeight(t.material, 0.5 * glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])));
-      if (w > 0.0) emitters_.push_back(i), weights.push_back(w);
-    }
-    for (std::uint32_t i = 0; i < scene_.spheres.size(); ++i) {
-      const Sphere& sp = scene_.spheres[i];
-      // Any positive weight is unbiased; this one is the area for a uniform scale.
-      const double scale = std::cbrt(std::abs(glm::determinant(glm::dmat3(sp.worldFromObject))));
-      const double w = emitterWeight(sp.material, 4.0 * kPi * sp.radius * sp.radius * scale * scale);
-      if (w > 0.0) emitters_.push_back(i | gpu::kPrimSphereBit), weights.push_back(w);
-    }
-    double total = 0.0;
-    for (double w : weights) total += w;
+    const EmitterTable table = vkrt::collectEmitters(scene_);
+    emitters_ = table.prims;
+    emitterCdf_ = table.cdf;
     trianglePick_.assign(scene_.triangles.size(), 0.0);
     spherePick_.assign(scene_.spheres.size(), 0.0);
-    double running = 0.0;
-    for (std::size_t e = 0; e < emitters_.size(); ++e) {
-      running += weights[e];
-      emitterCdf_.push_back(running / total);
-      pickProbability(emitters_[e]) = weights[e] / total;
-    }
-    if (!emitterCdf_.empty()) emitterCdf_.back() = 1.0;
+    for (std::size_t e = 0; e < emitters_.size(); ++e) pickProbability(emitters_[e]) = table.pick[e];
   }
 
   double& pickProbability(std::uint32_t prim) {
@@ -189,14 +163,14 @@ class PathIntegrator {
     const int m = scene_.path.lightStratify ? static_cast<int>(std::lround(std::sqrt(static_cast<double>(n)))) : 0;
     dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < n; ++k) {
-      const std::uint32_t slot = gpu::kRngSlotLightBase + 2u * (quads * n + k);
+      const std::uint32_t slot = gpu::rngEmitterPointSlot(quads, n, k);
       double s = rng.at(bounce, slot), t = rng.at(bounce, slot + 1u);
       if (m > 0) {
         s = (static_cast<int>(k) % m + s) / m;
         t = (static_cast<int>(k) / m + t) / m;
       }
       // Pick an emitter, then a point on it.
-      const double pick = rng.at(bounce, gpu::kRngSlotLightBase + 2u * (quads + 1u) * n + k);
+      const double pick = rng.at(bounce, gpu::rngEmitterPickSlot(quads, n, k));
       const std::size_t e = std::min<std::size_t>(
           static_cast<std::size_t>(std::upper_bound(emitterCdf_.begin(), emitterCdf_.end(), pick) - emitterCdf_.begin()),
           emitters_.size() - 1);

@@ -26,7 +26,7 @@ static_assert(sizeof(gpu::GpuQuadLight) == 16 * gpu::kQuadLightTexels, "the texe
 std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, std::uint32_t jitter, bool specialize,
                                         std::string& leftOut) {
   std::vector<std::uint32_t> spec(gpu::kPathSpecCount, 1u);   // bools as 0/1 (32-bit spec constants)
-  for (std::uint32_t i = gpu::kPathSpecIntegrator; i < gpu::kPathSpecCount; ++i) spec[i] = gpu::kPathSpecFromParams;
+  for (std::uint32_t i = gpu::kPathSpecIntegrator; i <= gpu::kPathSpecJitter; ++i) spec[i] = gpu::kPathSpecFromParams;
   if (!specialize) return spec;
   bool point = false, directional = false, attenuation = false, ggx = false;
   for (const gpu::GpuLight& l : scene.lights) {
@@ -43,6 +43,7 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, std::uint32_t jit
   spec[gpu::kSpecHasAttenuation] = attenuation;
   spec[gpu::kPathSpecHasQuadLights] = !scene.quadLights.empty();
   spec[gpu::kPathSpecHasGgx] = ggx;
+  spec[gpu::kPathSpecHasEmitters] = !scene.emitters.empty();
   // The integrator settings (a shader per combination; each is compiled once and cached).
   spec[gpu::kPathSpecIntegrator] = scene.path.integrator;
   spec[gpu::kPathSpecNextEvent] = scene.path.nextEvent;
@@ -54,6 +55,7 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, std::uint32_t jit
                                             "directional lights", "attenuation", "quad lights",    "ggx"};
   for (std::uint32_t i = 0; i <= gpu::kPathSpecHasGgx; ++i)
     if (!spec[i]) leftOut += (leftOut.empty() ? "" : ", ") + std::string(names[i]);
+  if (!spec[gpu::kPathSpecHasEmitters]) leftOut += (leftOut.empty() ? "" : ", ") + std::string("emissive surfaces");
   return spec;
 }
 
@@ -82,12 +84,15 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
     throw DeviceError("the scene has " + std::to_string(scene.bvh.primRefs.size()) +
                       " primitives; the Vulkan backend takes at most " + std::to_string(gpu::kStackFirstMask) +
                       " (--backend cpu has no such limit)");
-  // A vertex's random numbers must stay within its stride of dimensions (gpu_types.h).
-  const std::uint64_t lightSlots = std::uint64_t{scene.path.quadLightCount} * scene.path.lightSamples * 2;
+  // A vertex's random numbers must stay within its stride of dimensions (gpu_types.h): two
+  // per quad-light sample, and with emitters two more and a pick per light sample.
+  const std::uint64_t lightSlots = std::uint64_t{scene.path.quadLightCount} * scene.path.lightSamples * 2 +
+                                   (scene.emitters.empty() ? 0u : std::uint64_t{scene.path.lightSamples} * 3);
   if (gpu::kRngSlotLightBase + lightSlots > gpu::kRngBounceStride)
-    throw DeviceError("quad lights x lightsamples is " + std::to_string(lightSlots / 2) +
-                      "; the generator's dimensions allow at most " +
-                      std::to_string((gpu::kRngBounceStride - gpu::kRngSlotLightBase) / 2));
+    throw DeviceError("the light samples per vertex need " + std::to_string(lightSlots) +
+                      " random numbers; the generator's dimensions allow at most " +
+                      std::to_string(gpu::kRngBounceStride - gpu::kRngSlotLightBase) +
+                      " (fewer quad lights or lightsamples)");
   if (scene.bvh.depth + 1 > static_cast<int>(gpu::kTraversalStackSize))
     throw InternalError("BVH depth " + std::to_string(scene.bvh.depth) + " exceeds the traversal stack");
 
@@ -100,6 +105,7 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   Buffer nodes = Buffer::withContents(context, scene.bvh.nodes);
   Buffer primRefs = Buffer::withContents(context, scene.bvh.primRefs);
   Buffer quadLights = Buffer::withContents(context, scene.quadLights);
+  Buffer emitters = Buffer::withContents(context, scene.emitters);
   Buffer sums(context, std::size_t{width} * bandHeight * sizeof(gpu::vec4), true);
   Buffer states(context, std::size_t{width} * bandHeight * sizeof(gpu::GpuPathTracerState));
   Buffer counters(context, sizeof(gpu::GpuCounters), true);
@@ -168,6 +174,7 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   bound[gpu::kBindingParams] = &paramsBuffer;
   bound[gpu::kBindingQuadLights] = &quadLights;
   bound[gpu::kBindingPathParams] = &pathBuffer;
+  bound[gpu::kBindingEmitters] = &emitters;
   for (std::uint32_t b = 0; b < gpu::kPathBindingCount; ++b) {
     if (types[b] == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
       pipeline.bindUniform(b, *bound[b]);

@@ -12,6 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/emitters.h"
 #include "scene/ray_offset.h"
 
 namespace vkrt {
@@ -217,6 +218,11 @@ GpuScene flatten(const SceneDesc& scene) {
     g.quadLights.push_back(gq);
   }
   g.path = pathParams(scene, origin);
+  const EmitterTable table = collectEmitters(scene);
+  for (std::size_t e = 0; e < table.prims.size(); ++e)
+    g.emitters.push_back({table.prims[e], static_cast<float>(table.cdf[e])});
+  g.path.emitterCount = static_cast<gpu::uint>(g.emitters.size());
+  g.path.emitterWeightScale = g.emitters.empty() ? 0.0f : static_cast<float>(1.0 / table.totalWeight);
   g.spp = static_cast<std::uint32_t>(std::max(scene.path.spp, 1));
   return g;
 }

@@ -20,6 +20,9 @@ struct GpuScene {
   std::vector<gpu::GpuLight> lights;
   std::vector<gpu::GpuMaterial> materials;   // w fields: BRDF model, roughness, shininess, quad light
   std::vector<gpu::GpuQuadLight> quadLights;   // scene-centred, as every other position
+  // The emissive triangles and spheres that next-event estimation samples (scene/emitters.h);
+  // path.emitterCount and path.emitterWeightScale go with them.
+  std::vector<gpu::GpuEmitter> emitters;
   // The path integrators' settings and camera (gpu_types.h); the renderer adds the seed, the
   // sample range and the camera rule. Meaningless for Integrator::Raytracer.
   gpu::GpuPathParams path{};

@@ -178,8 +178,22 @@ GPU_CONST uint kRngSlotLightBase = 4u;        // + 2 * (light * lightsamples + k
 //    (SPEC-PATHTRACING section 4).
 //  - Light sample k of N of quad light j: (s, t) = (u, v) of its two slots; stratified:
 //    ((k % m + u) / m, (k / m + v) / m), m = sqrt(N); the point a + s ab + t ac.
+//  - Emissive triangles and spheres (`emission`, not quad lights) are one more light for
+//    next-event estimation, after the Q quad lights: light sample k of N picks an emitter by
+//    the rngEmitterPickSlot number u (the first e whose cumulative probability exceeds u;
+//    each emitter's probability is proportional to area x sum(|emission|)), then a point on
+//    it from (s, t) = the two numbers from rngEmitterPointSlot, stratified as a quad light's:
+//    on a triangle p0 p1 p2 the point (1 - sqrt s) p0 + sqrt s (1 - t) p1 + sqrt s t p2
+//    (uniform in area); on an ellipsoid (a sphere under M) the image under M of the point
+//    (sqrt(1 - z^2) cos phi, sqrt(1 - z^2) sin phi, z), z = 1 - 2 s, phi = 2 pi t, of its
+//    object-space sphere, whose density per world area is 1 / (4 pi r^2 |det M| |M^-T n|).
 //  - Russian roulette continues when the kRngSlotRoulette number is below p.
 //  - Bounce b is 0 at the camera ray's hit and grows by one at each scatter.
+
+// The slots of emitter light sample k of N at a vertex with `quads` quad lights: the point's
+// two numbers (slot, slot + 1) follow the quad lights' pairs, the picks follow those.
+GPU_FN uint rngEmitterPointSlot(uint quads, uint n, uint k) { return kRngSlotLightBase + 2u * (quads * n + k); }
+GPU_FN uint rngEmitterPickSlot(uint quads, uint n, uint k) { return kRngSlotLightBase + 2u * (quads + 1u) * n + k; }
 
 // "lowbias32" (C. Wellons, 2018): an integer hash with small bias, cheap on any ISA.
 GPU_FN uint rngHash(uint x) {
@@ -366,7 +380,8 @@ GPU_CONST uint kNoHit = 0xFFFFFFFFu;
 // vec4 (rgb = sum of the samples' radiance, w = 1 once the pixel's samples are all done).
 GPU_CONST uint kBindingQuadLights = 11u;   // GpuQuadLight[] (a texel buffer with the texel reads)
 GPU_CONST uint kBindingPathParams = 12u;   // GpuPathParams (a uniform buffer)
-GPU_CONST uint kPathBindingCount = 13u;
+GPU_CONST uint kBindingEmitters = 13u;     // GpuEmitter[] (a storage buffer in both read modes)
+GPU_CONST uint kPathBindingCount = 14u;
 
 // Its specialization constants: ids 0-5 mean what kSpecHasTriangles .. kSpecHasAttenuation do.
 GPU_CONST uint kPathSpecHasQuadLights = 6u;
@@ -381,7 +396,8 @@ GPU_CONST uint kPathSpecSampling = 10u;
 GPU_CONST uint kPathSpecRussianRoulette = 11u;
 GPU_CONST uint kPathSpecStratified = 12u;     // 1: lightStrata > 0
 GPU_CONST uint kPathSpecJitter = 13u;
-GPU_CONST uint kPathSpecCount = 14u;
+GPU_CONST uint kPathSpecHasEmitters = 14u;    // some triangle or sphere emits (GpuEmitter): a feature, 0 or 1
+GPU_CONST uint kPathSpecCount = 15u;
 GPU_CONST uint kPathSpecFromParams = 0xFFFFFFFFu;
 
 // GpuPathParams.maxDepth of `maxdepth -1`: no limit, only Russian roulette ends a path...
@@ -393,8 +409,21 @@ GPU_CONST uint kMaxBounces = 0xFFFFFFFFu / kRngBounceStride - 1u;
 // the light's own triangles (at t = |x' - x|, up to rounding) never block it.
 GPU_CONST float kQuadShadowSpan = 0.9990234375f;   // 1 - 2^-10
 
+// An emissive triangle or sphere that next-event estimation samples (gpu_types.h, "How each
+// backend turns these numbers into a path"; the table: host/scene/emitters.h). A sample picks
+// entry e with probability cdf[e] - cdf[e - 1]; that is weight / total, weight = area x
+// sum(|emission|), so the density per world area of the point it draws, pick x area pdf, is
+// sum(|emission|) / total on a triangle, and on an ellipsoid
+// sum(|emission|) / total / (|det M|^(1/3) |M^-T n|) (its area counted as 4 pi r^2 |det M|^(2/3)).
+struct GpuEmitter {
+  uint primRef;             // a triangle, or a sphere with kPrimSphereBit
+  float cdf;                // cumulative pick probability up to and with this entry (the last is 1)
+};
+GPU_ASSERT_SIZE(GpuEmitter, 8)
+GPU_ASSERT_OFFSET(GpuEmitter, cdf, 4)
+
 // One render's path settings, camera and sample range (a uniform buffer; std140 and std430
-// agree: vec4 and uint members only).
+// agree: vec4 and 4-byte scalar members only).
 struct GpuPathParams {
   vec4 cameraOrigin;        // as GpuPushConstants: look-from, scene-centred frame
   vec4 cameraRight;         // one pixel to the right
@@ -413,13 +442,16 @@ struct GpuPathParams {
   uint firstSample;         // this render's samples are [firstSample, firstSample + sampleCount)
   uint sampleCount;
   uint jitter;              // 0: every sample through the pixel centre (a render of spp 1); 1: uniform in the pixel
-  uint pad0, pad1, pad2;    // size 128
+  uint emitterCount;        // entries of the GpuEmitter table (0: emissive surfaces are found by hitting only)
+  float emitterWeightScale; // 1 / the emitters' total weight (GpuEmitter)
+  uint pad0;                // size 128
 };
 GPU_ASSERT_SIZE(GpuPathParams, 128)
 GPU_ASSERT_OFFSET(GpuPathParams, integrator, 64)
 GPU_ASSERT_OFFSET(GpuPathParams, maxDepth, 80)
 GPU_ASSERT_OFFSET(GpuPathParams, seed, 100)
 GPU_ASSERT_OFFSET(GpuPathParams, jitter, 112)
+GPU_ASSERT_OFFSET(GpuPathParams, emitterWeightScale, 120)
 
 struct GpuPathPush {
   uint bandY0;              // first image row of this band
@@ -441,7 +473,7 @@ struct GpuPathTracerState {
   vec4 pending;             // rgb what the shadow ray adds when nothing blocks it, w = cos at the hit
   uint phase;               // kPhaseTrace, kPhaseLight, kPhaseShadow or kPhaseDone
   uint bounce;              // path vertex: 0 at the camera ray's hit
-  uint lightIndex;          // the next light sample of the vertex (quad lights' samples, then lights)
+  uint lightIndex;          // the next light sample of the vertex (quad lights' samples, then lights, then emitters')
   uint stackSize;
   uint hitPrim;             // primRef of the nearest hit so far, or kNoHit
   uint hitMaterial;

@@ -17,6 +17,7 @@ layout(std140, binding = 6) uniform Params { GpuRenderParams params; };   // as 
 layout(std430, binding = 7) writeonly buffer Out { uint words[]; };
 layout(std430, binding = 8) readonly buffer QuadLights { GpuQuadLight quadLights[]; };
 layout(std140, binding = 9) uniform PathParams { GpuPathParams pathParams; };   // as pathtrace.comp reads it
+layout(std430, binding = 10) readonly buffer Emitters { GpuEmitter emitters[]; };
 
 uint n = 0u;
 void put(float f) { words[n++] = floatBitsToUint(f); }
@@ -50,5 +51,7 @@ void main() {
   put(pp.integrator); put(pp.nextEvent); put(pp.sampling); put(pp.russianRoulette);
   put(pp.maxDepth); put(pp.lightSamples); put(pp.lightStrata); put(pp.quadLightCount);
   put(pp.lightCount); put(pp.seed); put(pp.firstSample); put(pp.sampleCount);
-  put(pp.jitter); put(pp.pad0); put(pp.pad1); put(pp.pad2);
+  put(pp.jitter); put(pp.emitterCount); put(pp.emitterWeightScale); put(pp.pad0);
+  GpuEmitter e = emitters[1];
+  put(e.primRef); put(e.cdf);
 }
