@@ -99,39 +99,41 @@ void reflectOrFinish() {
   }
 }
 
-// Prepares light `lightIndex`: its shadow ray, or skips a light that cannot contribute.
-void lightStep() {
-  if (lightIndex >= params.lightCount) {
-    reflectOrFinish();
-    return;
+// Finds the next light that can contribute and starts its shadow ray (kPhaseShadow); lights
+// behind the surface are passed over in the same pass, each a step of the budget. After the
+// last light: the mirror ray, or the end of the path.
+void lightStep(inout uint step) {
+  while (phase == kPhaseLight && lightIndex < params.lightCount && step < params.stepBudget) {
+    GpuLight light = loadLight(lightIndex);
+    vec3 toLight;
+    float divisor = 1.0;
+    shadowTMax = kInfinity;
+    if (kHasPointLights && (!kHasDirectionalLights || light.positionOrDirection.w == kPointLight)) {
+      vec3 v = light.positionOrDirection.xyz - hitPoint;
+      float distance = length(v);
+      toLight = v / distance;
+      shadowTMax = distance;
+      if (kHasAttenuation)
+        divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
+    } else {
+      toLight = light.positionOrDirection.xyz;
+    }
+    nDotL = dot(hitNormal, toLight);
+    if (!(nDotL > 0.0)) {   // a light behind the surface adds nothing (SPEC section 7)
+      ++lightIndex;
+      ++step;
+      continue;
+    }
+    ++shadowRays;
+    shadowDir = toLight;
+    // Finite even for a tiny divisor, so that a zero material term times it stays 0, not NaN.
+    lightColor = clamp(light.color.rgb / divisor, -kInfinity, kInfinity);
+    sp = params.primCount > 0u ? 1u : 0u;
+    stack[0] = params.rootEntry;
+    stackT[0] = 0.0;
+    phase = kPhaseShadow;
   }
-  GpuLight light = loadLight(lightIndex);
-  vec3 toLight;
-  float divisor = 1.0;
-  shadowTMax = kInfinity;
-  if (kHasPointLights && (!kHasDirectionalLights || light.positionOrDirection.w == kPointLight)) {
-    vec3 v = light.positionOrDirection.xyz - hitPoint;
-    float distance = length(v);
-    toLight = v / distance;
-    shadowTMax = distance;
-    if (kHasAttenuation)
-      divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
-  } else {
-    toLight = light.positionOrDirection.xyz;
-  }
-  nDotL = dot(hitNormal, toLight);
-  if (!(nDotL > 0.0)) {   // a light behind the surface adds nothing (SPEC section 7)
-    ++lightIndex;
-    return;
-  }
-  ++shadowRays;
-  shadowDir = toLight;
-  // Finite even for a tiny divisor, so that a zero material term times it stays 0, not NaN.
-  lightColor = clamp(light.color.rgb / divisor, -kInfinity, kInfinity);
-  sp = params.primCount > 0u ? 1u : 0u;
-  stack[0] = params.rootEntry;
-  stackT[0] = 0.0;
-  phase = kPhaseShadow;
+  if (phase == kPhaseLight && lightIndex >= params.lightCount) reflectOrFinish();
 }
 
 void addLightContribution() {
@@ -292,7 +294,7 @@ void main() {
   // bodies for the vector whenever any lane needs either).
   for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
     if (phase == kPhaseTrace || phase == kPhaseShadow) traversalStep(step);
-    if (phase == kPhaseLight) lightStep();
+    if (phase == kPhaseLight) lightStep(step);
   }
 
   if (shadowRays + reflectionRays > 0u) {
