@@ -99,39 +99,41 @@ void reflectOrFinish() {
   }
 }
 
-// Prepares light `lightIndex`: its shadow ray, or skips a light that cannot contribute.
-void lightStep() {
-  if (lightIndex >= params.lightCount) {
-    reflectOrFinish();
-    return;
+// Finds the next light that can contribute and starts its shadow ray (kPhaseShadow); lights
+// behind the surface are passed over in the same pass, each a step of the budget. After the
+// last light: the mirror ray, or the end of the path.
+void lightStep(inout uint step) {
+  while (phase == kPhaseLight && lightIndex < params.lightCount && step < params.stepBudget) {
+    GpuLight light = loadLight(lightIndex);
+    vec3 toLight;
+    float divisor = 1.0;
+    shadowTMax = kInfinity;
+    if (kHasPointLights && (!kHasDirectionalLights || light.positionOrDirection.w == kPointLight)) {
+      vec3 v = light.positionOrDirection.xyz - hitPoint;
+      float distance = length(v);
+      toLight = v / distance;
+      shadowTMax = distance;
+      if (kHasAttenuation)
+        divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
+    } else {
+      toLight = light.positionOrDirection.xyz;
+    }
+    nDotL = dot(hitNormal, toLight);
+    if (!(nDotL > 0.0)) {   // a light behind the surface adds nothing (SPEC section 7)
+      ++lightIndex;
+      ++step;
+      continue;
+    }
+    ++shadowRays;
+    shadowDir = toLight;
+    // Finite even for a tiny divisor, so that a zero material term times it stays 0, not NaN.
+    lightColor = clamp(light.color.rgb / divisor, -kInfinity, kInfinity);
+    sp = params.primCount > 0u ? 1u : 0u;
+    stack[0] = params.rootEntry;
+    stackT[0] = 0.0;
+    phase = kPhaseShadow;
   }
-  GpuLight light = loadLight(lightIndex);
-  vec3 toLight;
-  float divisor = 1.0;
-  shadowTMax = kInfinity;
-  if (kHasPointLights && (!kHasDirectionalLights || light.positionOrDirection.w == kPointLight)) {
-    vec3 v = light.positionOrDirection.xyz - hitPoint;
-    float distance = length(v);
-    toLight = v / distance;
-    shadowTMax = distance;
-    if (kHasAttenuation)
-      divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
-  } else {
-    toLight = light.positionOrDirection.xyz;
-  }
-  nDotL = dot(hitNormal, toLight);
-  if (!(nDotL > 0.0)) {   // a light behind the surface adds nothing (SPEC section 7)
-    ++lightIndex;
-    return;
-  }
-  ++shadowRays;
-  shadowDir = toLight;
-  // Finite even for a tiny divisor, so that a zero material term times it stays 0, not NaN.
-  lightColor = clamp(light.color.rgb / divisor, -kInfinity, kInfinity);
-  sp = params.primCount > 0u ? 1u : 0u;
-  stack[0] = params.rootEntry;
-  stackT[0] = 0.0;
-  phase = kPhaseShadow;
+  if (phase == kPhaseLight && lightIndex >= params.lightCount) reflectOrFinish();
 }
 
 void addLightContribution() {
@@ -150,63 +152,66 @@ void addLightContribution() {
   radiance += throughput * lightColor * lit;
 }
 
-// One leaf of a traversal, after the interior nodes above it: the nearest-hit traversal of
-// the current ray (kPhaseTrace) or the any-hit one of a shadow ray (kPhaseShadow). One
-// function for both, so that lanes of a SIMD vector in different phases run the expensive
-// part once. Interior nodes are walked in an inner loop until this lane's next entry is a
-// leaf, so that the lanes of a vector test their leaves together instead of taking turns
-// with lanes still descending (the "while-while" order of Aila and Laine). Each node is a
-// step of the budget.
+// The traversal of the current ray (kPhaseTrace: nearest hit) or of a shadow ray
+// (kPhaseShadow: any hit), as far as the step budget goes: interior nodes down to a leaf, then
+// that leaf's primitives, until the stack is empty (Aila and Laine's while-while loop). One
+// function for both kinds, so that lanes of a SIMD vector in different phases run it once.
+// Each node is a step of the budget. lavapipe runs the lanes of a vector through every branch
+// of the loop body that any of them takes, so a whole traversal stays inside this loop: the
+// shading code outside runs once per ray, not once per leaf.
 void traversalStep(inout uint step) {
   bool shadow = phase == kPhaseShadow;
   vec3 origin = shadow ? hitPoint : rayOrigin;
   vec3 dir = shadow ? shadowDir : rayDir;
   float tMin = shadow ? secondaryTMin(nDotL) : rayTMin;
   float tMax = shadow ? shadowTMax : bestT;
-  if (nextIsInterior()) {
-    vec3 invDir = safeInverse(dir);
+  vec3 invDir = safeInverse(dir);
+  Shear sh;
+  if (kHasTriangles) sh = shearFor(dir);
+  bool blocked = false;
+  while (sp > 0u && step < params.stepBudget) {
     while (nextIsInterior() && step < params.stepBudget) {
       --sp;
       ++step;
       if (stackT[sp] < tMax) pushChildren(stack[sp], origin, invDir, tMin, tMax);
     }
-    if (nextIsInterior()) return;   // out of steps
-  }
-  if (sp == 0u) {   // traversal over
-    if (shadow) {   // nothing in the way
-      addLightContribution();
-      ++lightIndex;
-      phase = kPhaseLight;
-    } else if (hitPrim != kNoHit) {
-      beginShading();
-    } else {
-      phase = kPhaseDone;   // a miss is black
-    }
-    return;
-  }
-  --sp;
-  if (stackT[sp] >= tMax) return;   // entered beyond the nearest hit so far
-  uint entry = stack[sp];
-  uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
-  Shear sh;
-  if (kHasTriangles) sh = shearFor(dir);
-  for (uint i = 0u; i < count; ++i) {
-    uint ref = loadPrimRef(first + i);
-    vec2 b;
-    float t = hitPrimitive(ref, origin, dir, sh, tMin, tMax, b);
-    if (t > 0.0) {
-      if (shadow) {   // blocked
-        sp = 0u;
-        ++lightIndex;
-        phase = kPhaseLight;
-        return;
+    if (sp == 0u || step >= params.stepBudget) break;
+    --sp;
+    ++step;
+    if (stackT[sp] >= tMax) continue;   // entered beyond the nearest hit so far
+    uint entry = stack[sp];
+    uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
+    for (uint i = 0u; i < count; ++i) {
+      uint ref = loadPrimRef(first + i);
+      vec2 b;
+      float t = hitPrimitive(ref, origin, dir, sh, tMin, tMax, b);
+      if (t > 0.0) {
+        if (shadow) {
+          blocked = true;
+          break;
+        }
+        tMax = t;
+        bestT = t;
+        hitPrim = ref;
+        bestB1 = b.x;
+        bestB2 = b.y;
       }
-      tMax = t;
-      bestT = t;
-      hitPrim = ref;
-      bestB1 = b.x;
-      bestB2 = b.y;
     }
+    if (blocked) {
+      sp = 0u;
+      break;
+    }
+  }
+  if (sp > 0u) return;   // out of steps: the next dispatch goes on from here
+  ++step;                // what follows the traversal is a step of its own
+  if (shadow) {
+    if (!blocked) addLightContribution();   // nothing in the way
+    ++lightIndex;
+    phase = kPhaseLight;
+  } else if (hitPrim != kNoHit) {
+    beginShading();
+  } else {
+    phase = kPhaseDone;   // a miss is black
   }
 }
 
@@ -285,11 +290,11 @@ void main() {
     startRay(pc.cameraOrigin.xyz, dir, 0.0);
   }
 
+  // A ray's traversal and the light step after it share an iteration (lavapipe runs both
+  // bodies for the vector whenever any lane needs either).
   for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
-    if (phase == kPhaseLight)
-      lightStep();
-    else
-      traversalStep(step);
+    if (phase == kPhaseTrace || phase == kPhaseShadow) traversalStep(step);
+    if (phase == kPhaseLight) lightStep(step);
   }
 
   if (shadowRays + reflectionRays > 0u) {
