@@ -31,6 +31,7 @@ layout(constant_id = kPathSpecSampling) const uint kSpecSampling = kPathSpecFrom
 layout(constant_id = kPathSpecRussianRoulette) const uint kSpecRussianRoulette = kPathSpecFromParams;
 layout(constant_id = kPathSpecStratified) const uint kSpecStratified = kPathSpecFromParams;
 layout(constant_id = kPathSpecJitter) const uint kSpecJitter = kPathSpecFromParams;
+layout(constant_id = kPathSpecTestAll) const bool kTestAll = false;
 
 #include "scene_reads.glsl"
 #include "intersect.glsl"
@@ -436,6 +437,39 @@ void lightStep() {
     finishSample();
 }
 
+// The nearest hit within (tMin, tMax) among all primitives (bestT, hitPrim, bestB1, bestB2),
+// or with `shadow` whether any blocks the ray. The loop index is the same in every lane.
+bool testAll(vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, bool shadow) {
+  if (kHasTriangles) {
+    for (uint i = 0u; i < path.triangleCount; ++i) {
+      vec2 b;
+      float t = hitTriangle(i, origin, dir, sh, tMin, tMax, b);
+      if (t > 0.0) {
+        if (shadow) return true;
+        tMax = t;
+        bestT = t;
+        hitPrim = i;
+        bestB1 = b.x;
+        bestB2 = b.y;
+      }
+    }
+  }
+  if (kHasSpheres) {
+    for (uint i = 0u; i < path.sphereCount; ++i) {
+      float t = hitSphere(i, origin, dir, tMin, tMax);
+      if (t > 0.0) {
+        if (shadow) return true;
+        tMax = t;
+        bestT = t;
+        hitPrim = i | kPrimSphereBit;
+        bestB1 = 0.0;
+        bestB2 = 0.0;
+      }
+    }
+  }
+  return false;
+}
+
 // The traversal of the current ray (kPhaseTrace: nearest hit) or shadow ray (kPhaseShadow:
 // any hit), as far as the step budget goes: interior nodes down to a leaf, then that leaf's
 // primitives, until the stack is empty (Aila and Laine's while-while loop). Each node is a
@@ -452,7 +486,16 @@ void traversalStep(inout uint step) {
   Shear sh;
   if (kHasTriangles) sh = shearFor(dir);
   bool blocked = false;
-  while (sp > 0u && step < params.stepBudget) {
+  if (kTestAll) {
+    // Every primitive, as one step per kMaxLeafPrims of them; a ray is never left half-tested,
+    // so it waits for the next dispatch unless the steps left suffice or the dispatch just began.
+    uint cost = max(1u, (path.triangleCount + path.sphereCount + kMaxLeafPrims - 1u) / kMaxLeafPrims);
+    if (step > 0u && step + cost > params.stepBudget) return;
+    step += cost - 1u;
+    sp = 0u;
+    blocked = testAll(origin, dir, sh, tMin, tMax, shadow);
+  }
+  while (!kTestAll && sp > 0u && step < params.stepBudget) {
     while (nextIsInterior() && step < params.stepBudget) {
       --sp;
       ++step;
