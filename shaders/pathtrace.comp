@@ -440,33 +440,33 @@ void lightStep() {
 // The nearest hit within (tMin, tMax) among all primitives (bestT, hitPrim, bestB1, bestB2),
 // or with `shadow` whether any blocks the ray. The loop index is the same in every lane.
 bool testAll(vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, bool shadow) {
+  float nearest = tMax;
+  uint prim = kNoHit;
+  vec2 bary = vec2(0.0);
   if (kHasTriangles) {
     for (uint i = 0u; i < path.triangleCount; ++i) {
       vec2 b;
-      float t = hitTriangle(i, origin, dir, sh, tMin, tMax, b);
-      if (t > 0.0) {
-        if (shadow) return true;
-        tMax = t;
-        bestT = t;
-        hitPrim = i;
-        bestB1 = b.x;
-        bestB2 = b.y;
-      }
+      float t = hitTriangleWhole(i, origin, dir, sh, tMin, nearest, b);
+      bool hit = t > 0.0;
+      nearest = hit ? t : nearest;
+      prim = hit ? i : prim;
+      bary = hit ? b : bary;
     }
   }
   if (kHasSpheres) {
     for (uint i = 0u; i < path.sphereCount; ++i) {
-      float t = hitSphere(i, origin, dir, tMin, tMax);
-      if (t > 0.0) {
-        if (shadow) return true;
-        tMax = t;
-        bestT = t;
-        hitPrim = i | kPrimSphereBit;
-        bestB1 = 0.0;
-        bestB2 = 0.0;
-      }
+      float t = hitSphere(i, origin, dir, tMin, nearest);
+      bool hit = t > 0.0;
+      nearest = hit ? t : nearest;
+      prim = hit ? i | kPrimSphereBit : prim;
+      bary = hit ? vec2(0.0) : bary;
     }
   }
+  if (shadow || prim == kNoHit) return prim != kNoHit;
+  bestT = nearest;
+  hitPrim = prim;
+  bestB1 = bary.x;
+  bestB2 = bary.y;
   return false;
 }
 
