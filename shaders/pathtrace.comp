@@ -496,16 +496,34 @@ void traversalStep(inout uint step) {
     blocked = testAll(origin, dir, sh, tMin, tMax, shadow);
   }
   while (!kTestAll && sp > 0u && step < params.stepBudget) {
-    while (nextIsInterior() && step < params.stepBudget) {
-      --sp;
-      ++step;
-      if (stackT[sp] < tMax) pushChildren(stack[sp], origin, invDir, tMin, tMax);
-    }
-    if (sp == 0u || step >= params.stepBudget) break;
     --sp;
     ++step;
-    if (stackT[sp] >= tMax) continue;   // entered beyond the nearest hit so far
     uint entry = stack[sp];
+    float entryT = stackT[sp];
+    bool visit = entryT < tMax;   // false: entered beyond the nearest hit so far
+    // Down interior nodes: the nearer child the ray enters is the next node (in registers),
+    // the farther one is pushed; the order of visits is that of pushing both.
+    while (visit && (entry & kStackLeafBit) == 0u && step < params.stepBudget) {
+      ++step;
+      GpuBvhNode l = loadNode(entry), r = loadNode(entry + 1u);
+      float tl = boxEntry(l, origin, invDir, tMin, tMax);
+      float tr = boxEntry(r, origin, invDir, tMin, tMax);
+      bool leftFirst = tl <= tr;
+      float tNear = leftFirst ? tl : tr, tFar = leftFirst ? tr : tl;
+      if (tFar != kInfinity) {
+        stack[sp] = stackEntry(leftFirst ? r : l);
+        stackT[sp++] = tFar;
+      }
+      visit = tNear != kInfinity;
+      entry = stackEntry(leftFirst ? l : r);
+      entryT = tNear;
+    }
+    if (!visit) continue;
+    if ((entry & kStackLeafBit) == 0u) {   // out of steps: the node waits on the stack
+      stack[sp] = entry;
+      stackT[sp++] = entryT;
+      break;
+    }
     uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
     for (uint i = 0u; i < count; ++i) {
       uint ref = loadPrimRef(first + i);
