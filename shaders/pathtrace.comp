@@ -472,7 +472,8 @@ bool testAll(vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, bool shado
 
 // The traversal of the current ray (kPhaseTrace: nearest hit) or shadow ray (kPhaseShadow:
 // any hit), as far as the step budget goes: interior nodes down to a leaf, then that leaf's
-// primitives, until the stack is empty (Aila and Laine's while-while loop). Each node is a
+// primitives, until the stack is empty (Aila and Laine's while-while loop), or with kTestAll
+// every primitive of the scene (testAll), the whole ray in one go. Each node is a
 // step of the budget. lavapipe runs the lanes of a SIMD vector through every branch of the
 // loop body that any of them takes, so a whole traversal stays inside this loop: the
 // shading code outside runs once per ray, not once per leaf.
@@ -502,9 +503,9 @@ void traversalStep(inout uint step) {
     float entryT = stackT[sp];
     bool visit = entryT < tMax;   // false: entered beyond the nearest hit so far
     // Down interior nodes: the nearer child the ray enters is the next node (in registers),
-    // the farther one is pushed; the order of visits is that of pushing both.
+    // the farther one is pushed; the order of visits is that of pushing both. Each node
+    // entered is a step.
     while (visit && (entry & kStackLeafBit) == 0u && step < params.stepBudget) {
-      ++step;
       GpuBvhNode l = loadNode(entry), r = loadNode(entry + 1u);
       float tl = boxEntry(l, origin, invDir, tMin, tMax);
       float tr = boxEntry(r, origin, invDir, tMin, tMax);
@@ -517,6 +518,7 @@ void traversalStep(inout uint step) {
       visit = tNear != kInfinity;
       entry = stackEntry(leftFirst ? l : r);
       entryT = tNear;
+      if (visit) ++step;
     }
     if (!visit) continue;
     if ((entry & kStackLeafBit) == 0u) {   // out of steps: the node waits on the stack
