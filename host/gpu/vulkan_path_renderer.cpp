@@ -22,11 +22,12 @@ namespace {
 static_assert(sizeof(gpu::GpuQuadLight) == 16 * gpu::kQuadLightTexels, "the texel view of a quad light");
 
 // The features pathtrace.comp is specialised to (all on when not specializing), and what was
-// left out, for --stats; and the integrator settings (kPathSpecFromParams when not specializing).
+// left out, for --stats; the integrator settings (kPathSpecFromParams when not specializing);
+// and whether rays test every primitive instead of walking the BVH (either way).
 std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, std::uint32_t jitter, bool specialize, bool testAll,
                                         std::string& leftOut) {
   std::vector<std::uint32_t> spec(gpu::kPathSpecCount, 1u);   // bools as 0/1 (32-bit spec constants)
-  for (std::uint32_t i = gpu::kPathSpecIntegrator; i < gpu::kPathSpecJitter + 1; ++i) spec[i] = gpu::kPathSpecFromParams;
+  for (std::uint32_t i = gpu::kPathSpecIntegrator; i <= gpu::kPathSpecJitter; ++i) spec[i] = gpu::kPathSpecFromParams;
   spec[gpu::kPathSpecTestAll] = testAll;
   if (!specialize) return spec;
   bool point = false, directional = false, attenuation = false, ggx = false;
@@ -140,7 +141,8 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
 
   // Every primitive of a small scene tested by every ray, when the BVH holds each exactly once.
   const std::size_t primitives = scene.triangles.size() + scene.spheres.size();
-  const bool testAll = options.testAll && primitives <= gpu::kTestAllMaxPrims && scene.bvh.primRefs.size() == primitives;
+  const bool testAll =
+      options.testAll && primitives <= gpu::kTestAllMaxPrims && scene.bvh.primRefs.size() == primitives;
   t.testedAll = testAll;
   const std::vector<std::uint32_t> spec = pathFeatures(scene, path.jitter, options.specialize, testAll, t.leftOut);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
