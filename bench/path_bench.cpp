@@ -24,7 +24,7 @@ namespace {
 
 const char* kUsage =
     "usage: vkrt_path_bench SCENE [--spp N] [--seed N] [--crop X0 Y0 X1 Y1] [--budget N] [--runs N]\n"
-    "                       [--reads auto|storage|texel] [--raw FILE]\n"
+    "                       [--reads auto|storage|texel] [--test-all on|off] [--raw FILE]\n"
     "  --raw FILE   write the image's floats (rgb, row-major) to FILE\n";
 
 double cpuSeconds() {
@@ -73,6 +73,8 @@ int main(int argc, char** argv) {
     } else if (a == "--reads") {
       std::string r = next();
       options.reads = r == "storage" ? SceneReads::Storage : r == "texel" ? SceneReads::Texel : SceneReads::Auto;
+    } else if (a == "--test-all") {
+      options.testAll = std::string(next()) != "off";
     } else if (a == "--crop") {
       PixelRect c{};
       c.x0 = std::atoi(next());

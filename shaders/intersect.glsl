@@ -81,6 +81,26 @@ float hitTriangle(uint index, vec3 origin, vec3 dir, Shear sh, float tMin, float
   return (t > tMin && t < tMax) ? t : -1.0;
 }
 
+// hitTriangle's result, bit for bit, computed without an early return (b is then undefined on
+// a miss): for loops that llvmpipe runs for a whole vector, where each return costs masks.
+float hitTriangleWhole(uint index, vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, out vec2 b) {
+  GpuTriangle tri = loadTriangle(index);
+  vec3 pa = tri.p0.xyz - origin, pb = tri.p1.xyz - origin, pc = tri.p2.xyz - origin;
+  precise float ax = pa[sh.kx] - sh.s.x * pa[sh.kz], ay = pa[sh.ky] - sh.s.y * pa[sh.kz];
+  precise float bx = pb[sh.kx] - sh.s.x * pb[sh.kz], by = pb[sh.ky] - sh.s.y * pb[sh.kz];
+  precise float cx = pc[sh.kx] - sh.s.x * pc[sh.kz], cy = pc[sh.ky] - sh.s.y * pc[sh.kz];
+  precise float u = cx * by - cy * bx;
+  precise float v = ax * cy - ay * cx;
+  precise float w = bx * ay - by * ax;
+  bool outside = (u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0);
+  float det = u + v + w;
+  vec3 n = vec3(tri.p0.w, tri.p1.w, tri.p2.w);
+  float nDotD = dot(n, dir);
+  float t = (tri.planeOffset - dot(n, origin)) / nDotD;
+  b = vec2(v, w) / det;
+  return !outside && det != 0.0 && nDotD != 0.0 && t > tMin && t < tMax ? t : -1.0;
+}
+
 // The ray goes into object space unnormalised, so t is the world t. The discriminant is
 // formed as a * (r^2 - |l|^2) with l the offset of the closest point, not as b^2 - ac, which
 // loses the hit to cancellation when the ray starts far away.

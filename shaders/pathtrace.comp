@@ -33,6 +33,7 @@ layout(constant_id = kPathSpecRussianRoulette) const uint kSpecRussianRoulette =
 layout(constant_id = kPathSpecStratified) const uint kSpecStratified = kPathSpecFromParams;
 layout(constant_id = kPathSpecJitter) const uint kSpecJitter = kPathSpecFromParams;
 layout(constant_id = kPathSpecHasEmitters) const bool kHasEmitters = true;
+layout(constant_id = kPathSpecTestAll) const bool kTestAll = false;
 
 #include "scene_reads.glsl"
 #include "intersect.glsl"
@@ -567,9 +568,43 @@ void lightStep(inout uint step) {
     finishSample();
 }
 
+// The nearest hit within (tMin, tMax) among all primitives (bestT, hitPrim, bestB1, bestB2),
+// or with `shadow` whether any blocks the ray. The loop index is the same in every lane.
+bool testAll(vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, bool shadow) {
+  float nearest = tMax;
+  uint prim = kNoHit;
+  vec2 bary = vec2(0.0);
+  if (kHasTriangles) {
+    for (uint i = 0u; i < path.triangleCount; ++i) {
+      vec2 b;
+      float t = hitTriangleWhole(i, origin, dir, sh, tMin, nearest, b);
+      bool hit = t > 0.0;
+      nearest = hit ? t : nearest;
+      prim = hit ? i : prim;
+      bary = hit ? b : bary;
+    }
+  }
+  if (kHasSpheres) {
+    for (uint i = 0u; i < path.sphereCount; ++i) {
+      float t = hitSphere(i, origin, dir, tMin, nearest);
+      bool hit = t > 0.0;
+      nearest = hit ? t : nearest;
+      prim = hit ? i | kPrimSphereBit : prim;
+      bary = hit ? vec2(0.0) : bary;
+    }
+  }
+  if (shadow || prim == kNoHit) return prim != kNoHit;
+  bestT = nearest;
+  hitPrim = prim;
+  bestB1 = bary.x;
+  bestB2 = bary.y;
+  return false;
+}
+
 // The traversal of the current ray (kPhaseTrace: nearest hit) or shadow ray (kPhaseShadow:
 // any hit), as far as the step budget goes: interior nodes down to a leaf, then that leaf's
-// primitives, until the stack is empty (Aila and Laine's while-while loop). Each node is a
+// primitives, until the stack is empty (Aila and Laine's while-while loop), or with kTestAll
+// every primitive of the scene (testAll), the whole ray in one go. Each node is a
 // step of the budget. lavapipe runs the lanes of a SIMD vector through every branch of the
 // loop body that any of them takes, so a whole traversal stays inside this loop: the
 // shading code outside runs once per ray, not once per leaf.
@@ -583,17 +618,45 @@ void traversalStep(inout uint step) {
   Shear sh;
   if (kHasTriangles) sh = shearFor(dir);
   bool blocked = false;
-  while (sp > 0u && step < params.stepBudget) {
-    while (nextIsInterior() && step < params.stepBudget) {
-      --sp;
-      ++step;
-      if (stackT[sp] < tMax) pushChildren(stack[sp], origin, invDir, tMin, tMax);
-    }
-    if (sp == 0u || step >= params.stepBudget) break;
+  if (kTestAll) {
+    // Every primitive, as one step per kMaxLeafPrims of them; a ray is never left half-tested,
+    // so it waits for the next dispatch unless the steps left suffice or the dispatch just began.
+    uint cost = max(1u, (path.triangleCount + path.sphereCount + kMaxLeafPrims - 1u) / kMaxLeafPrims);
+    if (step > 0u && step + cost > params.stepBudget) return;
+    step += cost - 1u;
+    sp = 0u;
+    blocked = testAll(origin, dir, sh, tMin, tMax, shadow);
+  }
+  while (!kTestAll && sp > 0u && step < params.stepBudget) {
     --sp;
     ++step;
-    if (stackT[sp] >= tMax) continue;   // entered beyond the nearest hit so far
     uint entry = stack[sp];
+    float entryT = stackT[sp];
+    bool visit = entryT < tMax;   // false: entered beyond the nearest hit so far
+    // Down interior nodes: the nearer child the ray enters is the next node (in registers),
+    // the farther one is pushed; the order of visits is that of pushing both. Each node
+    // entered is a step.
+    while (visit && (entry & kStackLeafBit) == 0u && step < params.stepBudget) {
+      GpuBvhNode l = loadNode(entry), r = loadNode(entry + 1u);
+      float tl = boxEntry(l, origin, invDir, tMin, tMax);
+      float tr = boxEntry(r, origin, invDir, tMin, tMax);
+      bool leftFirst = tl <= tr;
+      float tNear = leftFirst ? tl : tr, tFar = leftFirst ? tr : tl;
+      if (tFar != kInfinity) {
+        stack[sp] = stackEntry(leftFirst ? r : l);
+        stackT[sp++] = tFar;
+      }
+      visit = tNear != kInfinity;
+      entry = stackEntry(leftFirst ? l : r);
+      entryT = tNear;
+      if (visit) ++step;
+    }
+    if (!visit) continue;
+    if ((entry & kStackLeafBit) == 0u) {   // out of steps: the node waits on the stack
+      stack[sp] = entry;
+      stackT[sp++] = entryT;
+      break;
+    }
     uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
     for (uint i = 0u; i < count; ++i) {
       uint ref = loadPrimRef(first + i);

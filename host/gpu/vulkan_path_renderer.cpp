@@ -22,11 +22,13 @@ namespace {
 static_assert(sizeof(gpu::GpuQuadLight) == 16 * gpu::kQuadLightTexels, "the texel view of a quad light");
 
 // The features pathtrace.comp is specialised to (all on when not specializing), and what was
-// left out, for --stats; and the integrator settings (kPathSpecFromParams when not specializing).
-std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, std::uint32_t jitter, bool specialize,
+// left out, for --stats; the integrator settings (kPathSpecFromParams when not specializing);
+// and whether rays test every primitive instead of walking the BVH (either way).
+std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, std::uint32_t jitter, bool specialize, bool testAll,
                                         std::string& leftOut) {
   std::vector<std::uint32_t> spec(gpu::kPathSpecCount, 1u);   // bools as 0/1 (32-bit spec constants)
   for (std::uint32_t i = gpu::kPathSpecIntegrator; i <= gpu::kPathSpecJitter; ++i) spec[i] = gpu::kPathSpecFromParams;
+  spec[gpu::kPathSpecTestAll] = testAll;
   if (!specialize) return spec;
   bool point = false, directional = false, attenuation = false, ggx = false;
   for (const gpu::GpuLight& l : scene.lights) {
@@ -138,10 +140,17 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   path.firstSample = options.firstSample;
   path.sampleCount = samples;
   path.jitter = renderSpp == 1 ? 0u : 1u;
+  path.triangleCount = static_cast<std::uint32_t>(scene.triangles.size());
+  path.sphereCount = static_cast<std::uint32_t>(scene.spheres.size());
   Buffer pathBuffer(context, sizeof path);
   std::memcpy(pathBuffer.mapped(), &path, sizeof path);
 
-  const std::vector<std::uint32_t> spec = pathFeatures(scene, path.jitter, options.specialize, t.leftOut);
+  // Every primitive of a small scene tested by every ray, when the BVH holds each exactly once.
+  const std::size_t primitives = scene.triangles.size() + scene.spheres.size();
+  const bool testAll =
+      options.testAll && primitives <= gpu::kTestAllMaxPrims && scene.bvh.primRefs.size() == primitives;
+  t.testedAll = testAll;
+  const std::vector<std::uint32_t> spec = pathFeatures(scene, path.jitter, options.specialize, testAll, t.leftOut);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const Buffer* sceneBuffers[] = {&triangles, &normals, &spheres, &lights, &materials, &nodes, &quadLights};
   bool texelsFit = primRefs.size() / 4 <= maxTexels;

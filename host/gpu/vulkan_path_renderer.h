@@ -30,6 +30,9 @@ struct VulkanPathOptions {
   std::uint32_t stepBudget = 0;           // steps per pixel per dispatch; 0: kDefaultStepBudget
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
   bool specialize = true;                 // compile out what the scene does not use
+  // Scenes of at most kTestAllMaxPrims primitives: every ray tests each of them instead of
+  // walking the BVH (kPathSpecTestAll); false: always the BVH. The same image either way.
+  bool testAll = true;
   std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixel samples done, total)
   std::function<bool()> stop;   // polled before each dispatch: true stops early (image incomplete)
   // Only these pixels of the scene's image, as an image of the crop's size: the full render's

@@ -50,6 +50,7 @@ struct VulkanTimings {
   std::uint32_t bands = 0, dispatches = 0;
   std::uint64_t suspensions = 0;   // pixel-dispatches that ran out of steps
   bool texelReads = false;         // which shader variant ran
+  bool testedAll = false;          // the path shader tested every primitive (no BVH walk)
   std::string leftOut;             // the features compiled out, e.g. "spheres, specular (maxdepth 0)"
 };
 

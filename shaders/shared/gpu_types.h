@@ -279,6 +279,9 @@ GPU_CONST uint kWorkgroupSize = 8u;       // 8x8 pixels per workgroup (lavapipe:
 // suspended (its GpuPathState saved) and resumed by the next dispatch.
 GPU_CONST uint kDefaultStepBudget = 8192u;
 GPU_CONST uint kMaxLeafPrims = 4u;
+// pathtrace.comp's test of every primitive (kPathSpecTestAll) is for scenes of at most this
+// many primitives; it counts as one step per kMaxLeafPrims of them.
+GPU_CONST uint kTestAllMaxPrims = 32u;
 // Entries of the shader's traversal stack and of a saved one: the BVH builder bounds the
 // depth so that depth + 1 entries never exceed this (kMaxBvhDepth, host/scene/bvh.h).
 GPU_CONST uint kTraversalStackSize = 96u;
@@ -397,7 +400,11 @@ GPU_CONST uint kPathSpecRussianRoulette = 11u;
 GPU_CONST uint kPathSpecStratified = 12u;     // 1: lightStrata > 0
 GPU_CONST uint kPathSpecJitter = 13u;
 GPU_CONST uint kPathSpecHasEmitters = 14u;    // some triangle or sphere emits (GpuEmitter): a feature, 0 or 1
-GPU_CONST uint kPathSpecCount = 15u;
+// 1: a ray is tested against every primitive, triangles then spheres (GpuPathParams
+// triangleCount and sphereCount), in a loop whose index is the same in every lane, instead of
+// a walk of the BVH; for scenes of at most kTestAllMaxPrims primitives, each of them in the BVH.
+GPU_CONST uint kPathSpecTestAll = 15u;
+GPU_CONST uint kPathSpecCount = 16u;
 GPU_CONST uint kPathSpecFromParams = 0xFFFFFFFFu;
 
 // GpuPathParams.maxDepth of `maxdepth -1`: no limit, only Russian roulette ends a path...
@@ -444,14 +451,17 @@ struct GpuPathParams {
   uint jitter;              // 0: every sample through the pixel centre (a render of spp 1); 1: uniform in the pixel
   uint emitterCount;        // entries of the GpuEmitter table (0: emissive surfaces are found by hitting only)
   float emitterWeightScale; // 1 / the emitters' total weight (GpuEmitter)
-  uint pad0;                // size 128
+  uint triangleCount;       // the scene's triangles and spheres (read with kPathSpecTestAll)
+  uint sphereCount;
+  uint pad0, pad1, pad2;    // size 144
 };
-GPU_ASSERT_SIZE(GpuPathParams, 128)
+GPU_ASSERT_SIZE(GpuPathParams, 144)
 GPU_ASSERT_OFFSET(GpuPathParams, integrator, 64)
 GPU_ASSERT_OFFSET(GpuPathParams, maxDepth, 80)
 GPU_ASSERT_OFFSET(GpuPathParams, seed, 100)
 GPU_ASSERT_OFFSET(GpuPathParams, jitter, 112)
 GPU_ASSERT_OFFSET(GpuPathParams, emitterWeightScale, 120)
+GPU_ASSERT_OFFSET(GpuPathParams, sphereCount, 128)
 
 struct GpuPathPush {
   uint bandY0;              // first image row of this band
