@@ -1,8 +1,12 @@
-// raytrace.comp: one invocation per pixel of a band. Camera ray, nearest hit through the BVH,
-// shading with shadow rays, and an iterative mirror loop carrying a throughput weight, bounded
-// by maxdepth. Written as a state machine of bounded steps so that no invocation exceeds
-// llvmpipe's loop budget: a pixel that runs out of steps saves its state and the host
-// dispatches again (see kDefaultStepBudget in gpu_types.h).
+// raytrace.comp: the pixels of a band, shared out over the invocations dispatched: invocation
+// i takes pixels i, i + N, i + 2N, ... (N invocations; a static stride, so that which lane
+// computes a pixel is fixed and needs no atomics), starting its next pixel in the same pass
+// of the main loop as it ends one, so that the lanes of a SIMD vector stay busy until the
+// band's pixels run out. Per pixel: camera ray, nearest hit through the BVH, shading with
+// shadow rays, and an iterative mirror loop carrying a throughput weight, bounded by
+// maxdepth. Written as a state machine of bounded steps so that no invocation exceeds
+// llvmpipe's loop budget: an invocation that runs out of steps saves its state (its pixel's,
+// and which pixel) and the host dispatches again (see kDefaultStepBudget in gpu_types.h).
 // Its math is float32 and written independently of the CPU reference (host/cpu/).
 #version 450
 #extension GL_GOOGLE_include_directive : require
@@ -24,21 +28,24 @@ layout(constant_id = 7) const bool kCutoff = true;
 #include "scene_reads.glsl"
 #include "intersect.glsl"
 
-layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance; w 0: suspended
-layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathState states[]; };
+layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance, w 1 (once the pixel is done)
+layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathState states[]; };   // one per invocation
 layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
 
 layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
 layout(push_constant) uniform Push { GpuPushConstants pc; };
 
-// ---- per-pixel state (registers; saved to states[] only on suspension) ----------------------
+// ---- per-invocation state (registers; saved to states[] only on suspension) -----------------
+uint pixel;   // the pixel being computed: an index into the band's pixels, row by row
+uint pixelX, pixelY;   // its column and its row in the band (not saved: pixel tells them)
+uint invocations, strideX, strideY;   // invocations dispatched, and that many pixels as columns and rows
 vec3 rayOrigin, rayDir;
 float rayTMin, bestT, bestB1, bestB2;
 vec3 throughput, radiance, hitPoint, hitNormal, shadowDir, lightColor;
 float shadowTMax, nDotL;
 uint phase, depth, lightIndex, hitPrim, hitMaterial;
 // (the traversal stack, sp, hitTMin and hitGrazing: intersect.glsl)
-uint shadowRays = 0u, reflectionRays = 0u;
+uint shadowRays = 0u, reflectionRays = 0u, nonFinite = 0u;
 
 // ---- the state machine's steps -----------------------------------------------------------------
 
@@ -232,6 +239,7 @@ void saveState(uint slot) {
   states[slot].stackSize = sp;
   states[slot].hitPrim = hitPrim;
   states[slot].hitMaterial = hitMaterial;
+  states[slot].pixel = pixel;
   for (uint i = 0u; i < sp; ++i) states[slot].stack[i] = stack[i];
 }
 
@@ -258,57 +266,86 @@ void loadState(uint slot) {
   sp = states[slot].stackSize;
   hitPrim = states[slot].hitPrim;
   hitMaterial = states[slot].hitMaterial;
+  pixel = states[slot].pixel;
   for (uint i = 0u; i < sp; ++i) {
     stack[i] = states[slot].stack[i];
     stackT[i] = 0.0;   // entry distances are not saved: a resumed pixel only culls less
   }
 }
 
+// ---- pixels ----------------------------------------------------------------------------------
+
+// The camera ray through the pixel's centre (SPEC section 3), in the full image's pixel
+// coordinates: a crop's pixels are those of the whole image.
+void startPixel() {
+  float a = (float(pixelX + params.originX) + 0.5) - 0.5 * float(params.fullWidth);
+  float b = 0.5 * float(params.fullHeight) - (float(pc.bandY0 + pixelY + params.originY) + 0.5);
+  vec3 dir = normalize(a * pc.cameraRight.xyz + b * pc.cameraUp.xyz - pc.cameraBack.xyz);
+  throughput = vec3(1.0);
+  radiance = vec3(0.0);
+  depth = 0u;
+  startRay(pc.cameraOrigin.xyz, dir, 0.0);
+}
+
+// The pixel is done: its radiance is written (a NaN or infinite one is counted, so that none
+// reaches the image unseen: the output encodes NaN as 0 and an infinity as 0 or 1), and the
+// invocation's next pixel starts, if the band has one.
+// (The next pixel's column and row are stepped, not divided out: a vector's integer division
+// is a division per lane on the CPU.)
+void endPixel(uint bandPixels) {
+  if (any(isnan(radiance)) || any(isinf(radiance))) ++nonFinite;
+  pixels[pixel] = vec4(radiance, 1.0);
+  pixel += invocations;
+  pixelX += strideX;
+  pixelY += strideY;
+  if (pixelX >= params.width) {
+    pixelX -= params.width;
+    ++pixelY;
+  }
+  if (pixel < bandPixels) startPixel();
+}
+
 void main() {
-  // Workgroups visit the band's tiles in a scattered order, so that each of lavapipe's threads
-  // (which take contiguous runs of workgroups) gets a share of every part of the image.
-  uint tilesInBand = params.tilesX * ((params.bandHeight + kWorkgroupSize - 1u) / kWorkgroupSize);
-  uint tile = (gl_WorkGroupID.x * params.tileOrderStride) % tilesInBand;
-  uint x = (tile % params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
-  uint yInBand = (tile / params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
-  uint y = pc.bandY0 + yInBand;
-  if (x >= params.width || yInBand >= params.bandHeight || y >= params.height) return;
-  uint slot = yInBand * params.width + x;
+  invocations = gl_NumWorkGroups.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y;
+  strideX = invocations % params.width;
+  strideY = invocations / params.width;
+  uint invocation = gl_WorkGroupID.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
+  uint bandPixels = min(params.bandHeight, params.height - pc.bandY0) * params.width;
 
   if (pc.resume != 0u) {
-    if (pixels[slot].w != 0.0) return;   // finished in an earlier round
-    loadState(slot);
+    if (states[invocation].phase == kPhaseDone) return;   // finished in an earlier round
+    loadState(invocation);
+    pixelX = pixel % params.width;
+    pixelY = pixel / params.width;
   } else {
-    // Camera ray through the pixel centre (SPEC section 3), in the full image's pixel
-    // coordinates: a crop's pixels are those of the whole image.
-    float a = (float(x + params.originX) + 0.5) - 0.5 * float(params.fullWidth);
-    float b = 0.5 * float(params.fullHeight) - (float(y + params.originY) + 0.5);
-    vec3 dir = normalize(a * pc.cameraRight.xyz + b * pc.cameraUp.xyz - pc.cameraBack.xyz);
-    throughput = vec3(1.0);
-    radiance = vec3(0.0);
-    depth = 0u;
-    startRay(pc.cameraOrigin.xyz, dir, 0.0);
+    pixel = invocation;
+    if (pixel >= bandPixels) {   // more invocations than pixels
+      states[invocation].phase = kPhaseDone;
+      return;
+    }
+    pixelX = pixel % params.width;
+    pixelY = pixel / params.width;
+    startPixel();
   }
 
   // A ray's traversal and the light step after it share an iteration (lavapipe runs both
-  // bodies for the vector whenever any lane needs either).
+  // bodies for the vector whenever any lane needs either), and so do the end of a pixel and
+  // the start of the next.
   for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
     if (phase == kPhaseTrace || phase == kPhaseShadow) traversalStep(step);
     if (phase == kPhaseLight) lightStep(step);
+    if (phase == kPhaseDone) endPixel(bandPixels);
   }
 
-  if (shadowRays + reflectionRays > 0u) {
+  if (shadowRays + reflectionRays + nonFinite > 0u) {
     atomicAdd(counters.shadowRays, shadowRays);
     atomicAdd(counters.reflectionRays, reflectionRays);
+    atomicAdd(counters.nonFinite, nonFinite);
   }
   if (phase != kPhaseDone) {
-    saveState(slot);
-    pixels[slot] = vec4(0.0);
+    saveState(invocation);
     atomicAdd(counters.suspended, 1u);
     return;
   }
-  // The guard: a NaN or infinite pixel is counted, so that none reaches the image unseen
-  // (the output encodes NaN as 0 and an infinity as 0 or 1).
-  if (any(isnan(radiance)) || any(isinf(radiance))) atomicAdd(counters.nonFinite, 1u);
-  pixels[slot] = vec4(radiance, 1.0);
+  states[invocation].phase = kPhaseDone;   // a later round of the band finds it done
 }

@@ -183,6 +183,46 @@ TEST(GpuLoopBudget, SuspendingInTheMiddleOfADescentChangesNoPixel) {
   }
 }
 
+// The Whitted shader's invocations share out a band's pixels, each taking its next pixel when
+// its pixel is done (raytrace.comp). However many pixels an invocation takes, however small
+// the step budget (so that an invocation suspends in the middle of a pixel, then resumes and
+// goes on to its next ones), and however many bands (the last one partial), every pixel is
+// the one-pixel-per-invocation render's.
+TEST(GpuLoopBudget, InvocationsTakingSeveralPixelsChangeNoPixel) {
+  Context* context = gpuContextOrSkip();
+  if (!context) return;
+  for (const SceneDesc& scene :
+       {parseSceneFile(sourcePath("scenes/deep_mirrors.test")), parseScene(loopBudgetScene(), "loop-budget.test")}) {
+    GpuScene flat = flatten(scene);
+    VulkanOptions single;
+    single.pixelsPerInvocation = 1;
+    RayCounts expectedRays;
+    const Image expected = encodeImage(renderVulkan(*context, flat, single, &expectedRays, nullptr), 1.0);
+    for (std::uint32_t perInvocation : {1u, 5u, 64u, 100000u}) {
+      for (std::uint32_t budget : {0u, 3u}) {
+        for (std::size_t stateBytes : {std::size_t{64} << 20, sizeof(gpu::GpuPathState) * 64}) {
+          VulkanOptions options;
+          options.pixelsPerInvocation = perInvocation;
+          options.stepBudget = budget;
+          options.maxStateBytes = stateBytes;   // the small one: bands of 8 rows
+          RayCounts rays;
+          VulkanTimings timings;
+          Image image = encodeImage(renderVulkan(*context, flat, options, &rays, &timings), 1.0);
+          const std::string name = "gpu-pixels-per-invocation/" + std::to_string(perInvocation) + "-" +
+                                   std::to_string(budget) + "-" + std::to_string(stateBytes);
+          EXPECT_TRUE(imagesClose(name, image, expected, 0, 0)) << name;
+          EXPECT_EQ(rays.shadow, expectedRays.shadow) << name;   // each pixel traced once
+          EXPECT_EQ(rays.reflection, expectedRays.reflection) << name;
+          EXPECT_EQ(rays.nonFinite, 0u) << name;
+          if (budget == 3u) EXPECT_GT(timings.suspensions, 0u) << name;
+          if (stateBytes < (std::size_t{1} << 20) && perInvocation <= 5u) EXPECT_GT(timings.bands, 1u) << name;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(context->validationMessages(), 0);
+}
+
 TEST(GpuCli, DefaultBackendIsVulkanAndStatsShowItsStages) {
   VKRT_REQUIRE_GPU(context);
   std::string dir = freshDir("gpu-cli/stats");
