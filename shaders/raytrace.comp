@@ -28,7 +28,7 @@ layout(constant_id = 7) const bool kCutoff = true;
 #include "scene_reads.glsl"
 #include "intersect.glsl"
 
-layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance, w 1 (once the pixel is done)
+layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance, w 1 once the pixel is done (see main)
 layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathState states[]; };   // one per invocation
 layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
 
@@ -312,21 +312,19 @@ void main() {
   uint invocation = gl_WorkGroupID.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
   uint bandPixels = min(params.bandHeight, params.height - pc.bandY0) * params.width;
 
+  if (invocation >= bandPixels) return;   // more invocations than pixels
+  // Its last pixel's w says whether the invocation is done: 1 once that pixel is written, 0
+  // from a suspension on (so that the state buffer is touched only by suspended invocations).
+  uint lastPixel = invocation + (bandPixels - 1u - invocation) / invocations * invocations;
   if (pc.resume != 0u) {
-    if (states[invocation].phase == kPhaseDone) return;   // finished in an earlier round
+    if (pixels[lastPixel].w != 0.0) return;   // finished in an earlier round
     loadState(invocation);
-    pixelX = pixel % params.width;
-    pixelY = pixel / params.width;
   } else {
     pixel = invocation;
-    if (pixel >= bandPixels) {   // more invocations than pixels
-      states[invocation].phase = kPhaseDone;
-      return;
-    }
-    pixelX = pixel % params.width;
-    pixelY = pixel / params.width;
-    startPixel();
   }
+  pixelX = pixel % params.width;
+  pixelY = pixel / params.width;
+  if (pc.resume == 0u) startPixel();
 
   // A ray's traversal and the light step after it share an iteration (lavapipe runs both
   // bodies for the vector whenever any lane needs either), and so do the end of a pixel and
@@ -344,8 +342,7 @@ void main() {
   }
   if (phase != kPhaseDone) {
     saveState(invocation);
+    pixels[lastPixel].w = 0.0;   // (stale from an earlier band, or 0 already)
     atomicAdd(counters.suspended, 1u);
-    return;
   }
-  states[invocation].phase = kPhaseDone;   // a later round of the band finds it done
 }
