@@ -1,12 +1,13 @@
-// raytrace.comp: the pixels of a band, shared out over the invocations dispatched: invocation
-// i takes pixels i, i + N, i + 2N, ... (N invocations; a static stride, so that which lane
-// computes a pixel is fixed and needs no atomics), starting its next pixel in the same pass
-// of the main loop as it ends one, so that the lanes of a SIMD vector stay busy until the
-// band's pixels run out. Per pixel: camera ray, nearest hit through the BVH, shading with
-// shadow rays, and an iterative mirror loop carrying a throughput weight, bounded by
-// maxdepth. Written as a state machine of bounded steps so that no invocation exceeds
-// llvmpipe's loop budget: an invocation that runs out of steps saves its state (its pixel's,
-// and which pixel) and the host dispatches again (see kDefaultStepBudget in gpu_types.h).
+// raytrace.comp: the pixels of a band, shared out over the invocations dispatched: each
+// workgroup takes a run of adjacent 8x8 tiles (about kDefaultPixelsPerInvocation), and each
+// lane the same pixel of each tile in turn, starting its next pixel in the same pass of the
+// main loop as it ends one, so that the lanes of a SIMD vector stay busy until their pixels
+// run out, and stay near each other. Which lane computes a pixel is fixed (no atomics). Per
+// pixel: camera ray, nearest hit through the BVH, shading with shadow rays, and an iterative
+// mirror loop carrying a throughput weight, bounded by maxdepth. Written as a state machine
+// of bounded steps so that no invocation exceeds llvmpipe's loop budget: an invocation that
+// runs out of steps saves its state (its pixel's, and which tile) and the host dispatches
+// again (see kDefaultStepBudget in gpu_types.h).
 // Its math is float32 and written independently of the CPU reference (host/cpu/).
 #version 450
 #extension GL_GOOGLE_include_directive : require
@@ -36,9 +37,9 @@ layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params
 layout(push_constant) uniform Push { GpuPushConstants pc; };
 
 // ---- per-invocation state (registers; saved to states[] only on suspension) -----------------
-uint pixel;   // the pixel being computed: an index into the band's pixels, row by row
-uint pixelX, pixelY;   // its column and its row in the band (not saved: pixel tells them)
-uint invocations, strideX, strideY;   // invocations dispatched, and that many pixels as columns and rows
+uint tile;    // the tile of the band (8x8 pixels, row by row) whose pixel the invocation computes
+uint pixelX, pixelY;   // that pixel's column and row in the band (not saved: tile tells them)
+uint runEnd, bandRows;   // the end of the invocation's run of tiles; the band's rows
 vec3 rayOrigin, rayDir;
 float rayTMin, bestT, bestB1, bestB2;
 vec3 throughput, radiance, hitPoint, hitNormal, shadowDir, lightColor;
@@ -239,7 +240,7 @@ void saveState(uint slot) {
   states[slot].stackSize = sp;
   states[slot].hitPrim = hitPrim;
   states[slot].hitMaterial = hitMaterial;
-  states[slot].pixel = pixel;
+  states[slot].pixel = tile;
   for (uint i = 0u; i < sp; ++i) states[slot].stack[i] = stack[i];
 }
 
@@ -266,7 +267,7 @@ void loadState(uint slot) {
   sp = states[slot].stackSize;
   hitPrim = states[slot].hitPrim;
   hitMaterial = states[slot].hitMaterial;
-  pixel = states[slot].pixel;
+  tile = states[slot].pixel;
   for (uint i = 0u; i < sp; ++i) {
     stack[i] = states[slot].stack[i];
     stackT[i] = 0.0;   // entry distances are not saved: a resumed pixel only culls less
@@ -287,44 +288,65 @@ void startPixel() {
   startRay(pc.cameraOrigin.xyz, dir, 0.0);
 }
 
+// The lane's pixel in `tile`: whether it lies inside the band (the last tiles of a row or of
+// the band may stick out).
+bool setPixel() {
+  pixelX = (tile % params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
+  pixelY = (tile / params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
+  return pixelX < params.width && pixelY < bandRows;
+}
+
 // The pixel is done: its radiance is written (a NaN or infinite one is counted, so that none
 // reaches the image unseen: the output encodes NaN as 0 and an infinity as 0 or 1), and the
-// invocation's next pixel starts, if the band has one.
-// (The next pixel's column and row are stepped, not divided out: a vector's integer division
-// is a division per lane on the CPU.)
-void endPixel(uint bandPixels) {
+// invocation's next pixel starts: the same place in the next tile of its run, if any.
+// (The column and row are stepped, not divided out: a vector's integer division is a
+// division per lane on the CPU.)
+void endPixel() {
   if (any(isnan(radiance)) || any(isinf(radiance))) ++nonFinite;
-  pixels[pixel] = vec4(radiance, 1.0);
-  pixel += invocations;
-  pixelX += strideX;
-  pixelY += strideY;
-  if (pixelX >= params.width) {
-    pixelX -= params.width;
-    ++pixelY;
-  }
-  if (pixel < bandPixels) startPixel();
+  pixels[pixelY * params.width + pixelX] = vec4(radiance, 1.0);
+  do {
+    ++tile;
+    pixelX += kWorkgroupSize;
+    if (pixelX >= params.tilesX * kWorkgroupSize) {
+      pixelX -= params.tilesX * kWorkgroupSize;
+      pixelY += kWorkgroupSize;
+    }
+  } while (tile < runEnd && (pixelX >= params.width || pixelY >= bandRows));
+  if (tile < runEnd) startPixel();
 }
 
 void main() {
-  invocations = gl_NumWorkGroups.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y;
-  strideX = invocations % params.width;
-  strideY = invocations / params.width;
+  // Each workgroup takes a run of adjacent tiles, the same pixel of each in turn per lane, so
+  // that the lanes of a vector stay near each other; the runs are visited in a scattered order,
+  // so that each of lavapipe's threads (which take contiguous runs of workgroups) gets a share
+  // of every part of the image.
+  uint runs = gl_NumWorkGroups.x;
+  uint tilesPerRun = (params.tilesX * (params.bandHeight / kWorkgroupSize) + runs - 1u) / runs;
+  bandRows = min(params.bandHeight, params.height - pc.bandY0);
+  uint bandTiles = params.tilesX * ((bandRows + kWorkgroupSize - 1u) / kWorkgroupSize);
+  uint runStart = (gl_WorkGroupID.x * params.tileOrderStride) % runs * tilesPerRun;
+  runEnd = min(runStart + tilesPerRun, bandTiles);
   uint invocation = gl_WorkGroupID.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
-  uint bandPixels = min(params.bandHeight, params.height - pc.bandY0) * params.width;
 
-  if (invocation >= bandPixels) return;   // more invocations than pixels
-  // Its last pixel's w says whether the invocation is done: 1 once that pixel is written, 0
-  // from a suspension on (so that the state buffer is touched only by suspended invocations).
-  uint lastPixel = invocation + (bandPixels - 1u - invocation) / invocations * invocations;
+  // The lane's last pixel's w says whether the invocation is done: 1 once that pixel is
+  // written, 0 from a suspension on (so that only suspended invocations touch the state buffer).
+  tile = runEnd;
+  bool found = false;
+  while (tile > runStart && !found) {
+    --tile;
+    found = setPixel();
+  }
+  if (!found) return;   // no pixel of the band in this lane's tiles
+  uint lastPixel = pixelY * params.width + pixelX;
   if (pc.resume != 0u) {
     if (pixels[lastPixel].w != 0.0) return;   // finished in an earlier round
     loadState(invocation);
+    setPixel();
   } else {
-    pixel = invocation;
+    tile = runStart;
+    while (!setPixel()) ++tile;
+    startPixel();
   }
-  pixelX = pixel % params.width;
-  pixelY = pixel / params.width;
-  if (pc.resume == 0u) startPixel();
 
   // A ray's traversal and the light step after it share an iteration (lavapipe runs both
   // bodies for the vector whenever any lane needs either), and so do the end of a pixel and
@@ -332,7 +354,7 @@ void main() {
   for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
     if (phase == kPhaseTrace || phase == kPhaseShadow) traversalStep(step);
     if (phase == kPhaseLight) lightStep(step);
-    if (phase == kPhaseDone) endPixel(bandPixels);
+    if (phase == kPhaseDone) endPixel();
   }
 
   if (shadowRays + reflectionRays + nonFinite > 0u) {

@@ -9,6 +9,7 @@
 
 #include "gpu/band_dispatch.h"
 #include "gpu/compute_pipeline.h"
+#include "gpu/tile_order.h"
 #include "errors.h"
 #include "gpu/device_error.h"
 #include "timing.h"
@@ -90,10 +91,11 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   std::size_t rowsByMemory = options.maxStateBytes * perInvocation / (sizeof(gpu::GpuPathState) * width);
   std::uint32_t bandHeight = static_cast<std::uint32_t>(std::max<std::size_t>(tile, rowsByMemory / tile * tile));
   bandHeight = std::min(bandHeight, (height + tile - 1) / tile * tile);
-  // The invocations of a band: about one per perInvocation pixels, in whole workgroups.
+  // The workgroups of a band: each takes a run of perInvocation adjacent 8x8 tiles.
   const std::size_t bandPixels = std::size_t{width} * bandHeight;
-  const auto groups = static_cast<std::uint32_t>((bandPixels + std::size_t{perInvocation} * groupSize - 1) /
-                                                 (std::size_t{perInvocation} * groupSize));
+  const std::uint32_t tilesX = (width + tile - 1) / tile;
+  const std::uint32_t tilesInBand = tilesX * (bandHeight / tile);
+  const std::uint32_t groups = (tilesInBand + perInvocation - 1) / perInvocation;
 
   // The shader packs a leaf's first primRef into 28 bits (kStackFirstMask).
   if (scene.bvh.primRefs.size() > gpu::kStackFirstMask)
@@ -125,7 +127,9 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   params.maxDepth = features.specular ? scene.maxDepth : 0;
   params.lightCount = static_cast<std::uint32_t>(scene.lights.size());
   params.stepBudget = options.stepBudget ? options.stepBudget : gpu::kDefaultStepBudget;
-  params.bandHeight = bandHeight;   // (tilesX and tileOrderStride: pathtrace.comp only)
+  params.bandHeight = bandHeight;
+  params.tilesX = tilesX;
+  params.tileOrderStride = scatterStride(groups);   // the order of the workgroups' runs of tiles
   params.primCount = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
   const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
   params.originX = static_cast<std::uint32_t>(region.x0);

@@ -26,8 +26,9 @@ struct VulkanOptions {
   SceneReads reads = SceneReads::Auto;    // Auto: texel buffers where the device's limits allow
   std::uint32_t stepBudget = 0;           // steps per invocation per dispatch; 0: kDefaultStepBudget
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
-  // The Whitted shader's invocations share out a band's pixels (raytrace.comp): about this
-  // many pixels each; 0: kDefaultPixelsPerInvocation. 1: one pixel per invocation.
+  // The Whitted shader's invocations share out a band's pixels (raytrace.comp): a workgroup
+  // takes a run of this many 8x8 tiles, an invocation one pixel of each;
+  // 0: kDefaultPixelsPerInvocation. 1: one pixel per invocation.
   std::uint32_t pixelsPerInvocation = 0;
   bool specialize = true;                 // compile out what the scene does not use
   // The exactness cut-off of the mirror loop (gpu_types.h): Auto compiles it in only when it

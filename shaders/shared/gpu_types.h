@@ -280,8 +280,8 @@ GPU_CONST uint kWorkgroupSize = 8u;       // 8x8 pixels per workgroup (lavapipe:
 // by the next dispatch.
 GPU_CONST uint kDefaultStepBudget = 8192u;
 GPU_CONST uint kMaxLeafPrims = 4u;
-// raytrace.comp: the host dispatches about one invocation per this many pixels of a band;
-// each invocation takes a new pixel when its pixel is done (VulkanOptions::pixelsPerInvocation).
+// raytrace.comp: each workgroup takes a run of this many 8x8 tiles of a band, each lane a
+// pixel of each tile in turn, a new one when its pixel is done (VulkanOptions::pixelsPerInvocation).
 GPU_CONST uint kDefaultPixelsPerInvocation = 16u;
 // Entries of the shader's traversal stack and of a saved one: the BVH builder bounds the
 // depth so that depth + 1 entries never exceed this (kMaxBvhDepth, host/scene/bvh.h).
@@ -369,7 +369,7 @@ struct GpuPathState {
   uint stackSize;
   uint hitPrim;             // primRef of the nearest hit so far, or kNoHit
   uint hitMaterial;
-  uint pixel;               // raytrace.comp: the invocation's pixel, an index into the band's pixels
+  uint pixel;               // raytrace.comp: the tile of the band whose pixel the invocation computes
   uint pad1;                // size 160
   uint stack[kTraversalStackSize];
 };
