@@ -9,9 +9,9 @@
 
 #include "gpu/band_dispatch.h"
 #include "gpu/compute_pipeline.h"
-#include "gpu/tile_order.h"
 #include "errors.h"
 #include "gpu/device_error.h"
+#include "gpu/tile_order.h"
 #include "timing.h"
 #include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
 #include "raytrace_texel.comp.h"   // kRaytraceTexelSpirv: the same with VKRT_TEXEL_READS
