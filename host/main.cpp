@@ -109,7 +109,7 @@ void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
                  v.texelReads ? "texel-buffer" : "storage-buffer");
     std::fprintf(stderr, "    first dispatch (with JIT) %9.1f ms\n", v.firstDispatchSeconds * ms);
     std::fprintf(stderr, "    left out: %s\n", v.leftOut.empty() ? "nothing" : v.leftOut.c_str());
-    std::fprintf(stderr, "    dispatch  %9.1f ms  (%u bands, %u dispatches, %llu pixel suspensions)\n",
+    std::fprintf(stderr, "    dispatch  %9.1f ms  (%u bands, %u dispatches, %llu suspensions)\n",
                  v.dispatchSeconds * ms, v.bands, v.dispatches, static_cast<unsigned long long>(v.suspensions));
     std::fprintf(stderr, "    readback  %9.1f ms\n", v.readbackSeconds * ms);
   }

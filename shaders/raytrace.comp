@@ -1,8 +1,13 @@
-// raytrace.comp: one invocation per pixel of a band. Camera ray, nearest hit through the BVH,
-// shading with shadow rays, and an iterative mirror loop carrying a throughput weight, bounded
-// by maxdepth. Written as a state machine of bounded steps so that no invocation exceeds
-// llvmpipe's loop budget: a pixel that runs out of steps saves its state and the host
-// dispatches again (see kDefaultStepBudget in gpu_types.h).
+// raytrace.comp: the pixels of a band, shared out over the invocations dispatched: each
+// workgroup takes a run of adjacent 8x8 tiles (about kDefaultPixelsPerInvocation), and each
+// lane the same pixel of each tile in turn, starting its next pixel in the same pass of the
+// main loop as it ends one, so that the lanes of a SIMD vector stay busy until their pixels
+// run out, and stay near each other. Which lane computes a pixel is fixed (no atomics). Per
+// pixel: camera ray, nearest hit through the BVH, shading with shadow rays, and an iterative
+// mirror loop carrying a throughput weight, bounded by maxdepth. Written as a state machine
+// of bounded steps so that no invocation exceeds llvmpipe's loop budget: an invocation that
+// runs out of steps saves its state (its pixel's, and which tile) and the host dispatches
+// again (see kDefaultStepBudget in gpu_types.h).
 // Its math is float32 and written independently of the CPU reference (host/cpu/).
 #version 450
 #extension GL_GOOGLE_include_directive : require
@@ -24,21 +29,24 @@ layout(constant_id = 7) const bool kCutoff = true;
 #include "scene_reads.glsl"
 #include "intersect.glsl"
 
-layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance; w 0: suspended
-layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathState states[]; };
+layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance, w 1 once the pixel is done (see main)
+layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathState states[]; };   // one per invocation
 layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
 
 layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
 layout(push_constant) uniform Push { GpuPushConstants pc; };
 
-// ---- per-pixel state (registers; saved to states[] only on suspension) ----------------------
+// ---- per-invocation state (registers; saved to states[] only on suspension) -----------------
+uint tile;    // the tile of the band (8x8 pixels, row by row) whose pixel the invocation computes
+uint pixelX, pixelY;   // that pixel's column and row in the band (not saved: tile tells them)
+uint runEnd, bandRows;   // the end of the invocation's run of tiles; the band's rows
 vec3 rayOrigin, rayDir;
 float rayTMin, bestT, bestB1, bestB2;
 vec3 throughput, radiance, hitPoint, hitNormal, shadowDir, lightColor;
 float shadowTMax, nDotL;
 uint phase, depth, lightIndex, hitPrim, hitMaterial;
 // (the traversal stack, sp, hitTMin and hitGrazing: intersect.glsl)
-uint shadowRays = 0u, reflectionRays = 0u;
+uint shadowRays = 0u, reflectionRays = 0u, nonFinite = 0u;
 
 // ---- the state machine's steps -----------------------------------------------------------------
 
@@ -232,6 +240,7 @@ void saveState(uint slot) {
   states[slot].stackSize = sp;
   states[slot].hitPrim = hitPrim;
   states[slot].hitMaterial = hitMaterial;
+  states[slot].pixel = tile;
   for (uint i = 0u; i < sp; ++i) states[slot].stack[i] = stack[i];
 }
 
@@ -258,57 +267,104 @@ void loadState(uint slot) {
   sp = states[slot].stackSize;
   hitPrim = states[slot].hitPrim;
   hitMaterial = states[slot].hitMaterial;
+  tile = states[slot].pixel;
   for (uint i = 0u; i < sp; ++i) {
     stack[i] = states[slot].stack[i];
     stackT[i] = 0.0;   // entry distances are not saved: a resumed pixel only culls less
   }
 }
 
-void main() {
-  // Workgroups visit the band's tiles in a scattered order, so that each of lavapipe's threads
-  // (which take contiguous runs of workgroups) gets a share of every part of the image.
-  uint tilesInBand = params.tilesX * ((params.bandHeight + kWorkgroupSize - 1u) / kWorkgroupSize);
-  uint tile = (gl_WorkGroupID.x * params.tileOrderStride) % tilesInBand;
-  uint x = (tile % params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
-  uint yInBand = (tile / params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
-  uint y = pc.bandY0 + yInBand;
-  if (x >= params.width || yInBand >= params.bandHeight || y >= params.height) return;
-  uint slot = yInBand * params.width + x;
+// ---- pixels ----------------------------------------------------------------------------------
 
+// The camera ray through the pixel's centre (SPEC section 3), in the full image's pixel
+// coordinates: a crop's pixels are those of the whole image.
+void startPixel() {
+  float a = (float(pixelX + params.originX) + 0.5) - 0.5 * float(params.fullWidth);
+  float b = 0.5 * float(params.fullHeight) - (float(pc.bandY0 + pixelY + params.originY) + 0.5);
+  vec3 dir = normalize(a * pc.cameraRight.xyz + b * pc.cameraUp.xyz - pc.cameraBack.xyz);
+  throughput = vec3(1.0);
+  radiance = vec3(0.0);
+  depth = 0u;
+  startRay(pc.cameraOrigin.xyz, dir, 0.0);
+}
+
+// The lane's pixel in `tile`: whether it lies inside the band (the last tiles of a row or of
+// the band may stick out).
+bool setPixel() {
+  pixelX = (tile % params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
+  pixelY = (tile / params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
+  return pixelX < params.width && pixelY < bandRows;
+}
+
+// The pixel is done: its radiance is written (a NaN or infinite one is counted, so that none
+// reaches the image unseen: the output encodes NaN as 0 and an infinity as 0 or 1), and the
+// invocation's next pixel starts: the same place in the next tile of its run, if any.
+// (The column and row are stepped, not divided out: a vector's integer division is a
+// division per lane on the CPU.)
+void endPixel() {
+  if (any(isnan(radiance)) || any(isinf(radiance))) ++nonFinite;
+  pixels[pixelY * params.width + pixelX] = vec4(radiance, 1.0);
+  do {
+    ++tile;
+    pixelX += kWorkgroupSize;
+    if (pixelX >= params.tilesX * kWorkgroupSize) {
+      pixelX -= params.tilesX * kWorkgroupSize;
+      pixelY += kWorkgroupSize;
+    }
+  } while (tile < runEnd && (pixelX >= params.width || pixelY >= bandRows));
+  if (tile < runEnd) startPixel();
+}
+
+void main() {
+  // Each workgroup takes a run of adjacent tiles, the same pixel of each in turn per lane, so
+  // that the lanes of a vector stay near each other; the runs are visited in a scattered order,
+  // so that each of lavapipe's threads (which take contiguous runs of workgroups) gets a share
+  // of every part of the image.
+  uint runs = gl_NumWorkGroups.x;
+  uint tilesPerRun = (params.tilesX * (params.bandHeight / kWorkgroupSize) + runs - 1u) / runs;
+  bandRows = min(params.bandHeight, params.height - pc.bandY0);
+  uint bandTiles = params.tilesX * ((bandRows + kWorkgroupSize - 1u) / kWorkgroupSize);
+  uint runStart = (gl_WorkGroupID.x * params.tileOrderStride) % runs * tilesPerRun;
+  runEnd = min(runStart + tilesPerRun, bandTiles);
+  uint invocation = gl_WorkGroupID.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
+
+  // The lane's last pixel's w says whether the invocation is done: 1 once that pixel is
+  // written, 0 from a suspension on (so that only suspended invocations touch the state buffer).
+  tile = runEnd;
+  bool found = false;
+  while (tile > runStart && !found) {
+    --tile;
+    found = setPixel();
+  }
+  if (!found) return;   // no pixel of the band in this lane's tiles
+  uint lastPixel = pixelY * params.width + pixelX;
   if (pc.resume != 0u) {
-    if (pixels[slot].w != 0.0) return;   // finished in an earlier round
-    loadState(slot);
+    if (pixels[lastPixel].w != 0.0) return;   // finished in an earlier round
+    loadState(invocation);
+    setPixel();
   } else {
-    // Camera ray through the pixel centre (SPEC section 3), in the full image's pixel
-    // coordinates: a crop's pixels are those of the whole image.
-    float a = (float(x + params.originX) + 0.5) - 0.5 * float(params.fullWidth);
-    float b = 0.5 * float(params.fullHeight) - (float(y + params.originY) + 0.5);
-    vec3 dir = normalize(a * pc.cameraRight.xyz + b * pc.cameraUp.xyz - pc.cameraBack.xyz);
-    throughput = vec3(1.0);
-    radiance = vec3(0.0);
-    depth = 0u;
-    startRay(pc.cameraOrigin.xyz, dir, 0.0);
+    tile = runStart;
+    while (!setPixel()) ++tile;
+    startPixel();
   }
 
   // A ray's traversal and the light step after it share an iteration (lavapipe runs both
-  // bodies for the vector whenever any lane needs either).
+  // bodies for the vector whenever any lane needs either), and so do the end of a pixel and
+  // the start of the next.
   for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
     if (phase == kPhaseTrace || phase == kPhaseShadow) traversalStep(step);
     if (phase == kPhaseLight) lightStep(step);
+    if (phase == kPhaseDone) endPixel();
   }
 
-  if (shadowRays + reflectionRays > 0u) {
+  if (shadowRays + reflectionRays + nonFinite > 0u) {
     atomicAdd(counters.shadowRays, shadowRays);
     atomicAdd(counters.reflectionRays, reflectionRays);
+    atomicAdd(counters.nonFinite, nonFinite);
   }
   if (phase != kPhaseDone) {
-    saveState(slot);
-    pixels[slot] = vec4(0.0);
+    saveState(invocation);
+    pixels[lastPixel].w = 0.0;   // (stale from an earlier band, or 0 already)
     atomicAdd(counters.suspended, 1u);
-    return;
   }
-  // The guard: a NaN or infinite pixel is counted, so that none reaches the image unseen
-  // (the output encodes NaN as 0 and an infinity as 0 or 1).
-  if (any(isnan(radiance)) || any(isinf(radiance))) atomicAdd(counters.nonFinite, 1u);
-  pixels[slot] = vec4(radiance, 1.0);
 }

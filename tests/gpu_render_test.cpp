@@ -3,6 +3,7 @@
 // layer is on for all of them (renderGpu checks that it stays silent).
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -181,6 +182,55 @@ TEST(GpuLoopBudget, SuspendingInTheMiddleOfADescentChangesNoPixel) {
     EXPECT_GT(tiny.suspensions, 10000u);
     EXPECT_TRUE(imagesClose("gpu-step-budget-descent-" + std::to_string(budget), pieces, whole, 0, 0));
   }
+}
+
+// The Whitted shader's invocations share out a band's pixels, each taking its next pixel when
+// its pixel is done (raytrace.comp). However many pixels an invocation takes, however small
+// the step budget (so that an invocation suspends in the middle of a pixel, then resumes and
+// goes on to its next ones), and however many bands (the last one partial), every pixel is
+// the one-pixel-per-invocation render's.
+TEST(GpuLoopBudget, InvocationsTakingSeveralPixelsChangeNoPixel) {
+  Context* context = gpuContextOrSkip();
+  if (!context) return;
+  const SceneDesc scenes[] = {parseSceneFile(sourcePath("scenes/deep_mirrors.test")),
+                              parseScene(loopBudgetScene(), "loop-budget.test")};
+  // The whole image, and a crop whose size is no multiple of the 8x8 tiles (partial tiles at
+  // the right and at the bottom of the last band).
+  const std::optional<PixelRect> crops[] = {std::nullopt, PixelRect{3, 2, 30, 21}};
+  for (const SceneDesc& scene : scenes) {
+    GpuScene flat = flatten(scene);
+    for (const std::optional<PixelRect>& crop : crops) {
+      VulkanOptions single;
+      single.pixelsPerInvocation = 1;
+      single.crop = crop;
+      RayCounts expectedRays;
+      const Image expected = encodeImage(renderVulkan(*context, flat, single, &expectedRays, nullptr), 1.0);
+      for (std::uint32_t perInvocation : {5u, 64u, 100000u}) {
+        for (std::uint32_t budget : {0u, 3u}) {
+          for (std::size_t stateBytes : {std::size_t{64} << 20, sizeof(gpu::GpuPathState) * 64}) {
+            VulkanOptions options;
+            options.pixelsPerInvocation = perInvocation;
+            options.stepBudget = budget;
+            options.maxStateBytes = stateBytes;   // the small one: bands of 8 rows
+            options.crop = crop;
+            RayCounts rays;
+            VulkanTimings timings;
+            Image image = encodeImage(renderVulkan(*context, flat, options, &rays, &timings), 1.0);
+            const std::string name = "gpu-pixels-per-invocation/" + std::string(crop ? "crop-" : "") +
+                                     std::to_string(perInvocation) + "-" + std::to_string(budget) + "-" +
+                                     std::to_string(stateBytes);
+            EXPECT_TRUE(imagesClose(name, image, expected, 0, 0)) << name;
+            EXPECT_EQ(rays.shadow, expectedRays.shadow) << name;   // each pixel traced once
+            EXPECT_EQ(rays.reflection, expectedRays.reflection) << name;
+            EXPECT_EQ(rays.nonFinite, 0u) << name;
+            if (budget == 3u) EXPECT_GT(timings.suspensions, 0u) << name;
+            if (stateBytes < (std::size_t{1} << 20) && perInvocation <= 5u) EXPECT_GT(timings.bands, 1u) << name;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(context->validationMessages(), 0);
 }
 
 TEST(GpuCli, DefaultBackendIsVulkanAndStatsShowItsStages) {

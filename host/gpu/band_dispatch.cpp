@@ -10,8 +10,8 @@
 namespace vkrt {
 namespace {
 
-// Rounds of dispatches per band before giving up (each round advances every unfinished pixel
-// by the full step budget).
+// Rounds of dispatches per band before giving up (each round advances every unfinished
+// invocation by the full step budget).
 constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
 
 }  // namespace

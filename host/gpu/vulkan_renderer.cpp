@@ -83,14 +83,22 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   const PixelRect region = options.crop ? *options.crop
                                         : PixelRect{0, 0, static_cast<int>(scene.width), static_cast<int>(scene.height)};
   const auto width = static_cast<std::uint32_t>(region.width()), height = static_cast<std::uint32_t>(region.height());
-  const std::uint32_t tile = gpu::kWorkgroupSize;
-
-  // Band height: a multiple of the tile, and a state buffer within maxStateBytes.
-  std::size_t rowsByMemory = options.maxStateBytes / (sizeof(gpu::GpuPathState) * width);
+  const std::uint32_t tile = gpu::kWorkgroupSize, groupSize = tile * tile;
+  // Sharing out pixels keeps a CPU's SIMD lanes busy; a GPU has lanes to spare for a pixel each.
+  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const std::uint32_t perInvocation = options.pixelsPerInvocation ? options.pixelsPerInvocation
+                                      : cpuDevice                 ? gpu::kDefaultPixelsPerInvocation
+                                                                  : 1u;
+  // Band height: a multiple of the tile, and a state buffer (one GpuPathState per invocation)
+  // within maxStateBytes.
+  std::size_t rowsByMemory = options.maxStateBytes * perInvocation / (sizeof(gpu::GpuPathState) * width);
   std::uint32_t bandHeight = static_cast<std::uint32_t>(std::max<std::size_t>(tile, rowsByMemory / tile * tile));
   bandHeight = std::min(bandHeight, (height + tile - 1) / tile * tile);
+  // The workgroups of a band: each takes a run of perInvocation adjacent 8x8 tiles.
+  const std::size_t bandPixels = std::size_t{width} * bandHeight;
   const std::uint32_t tilesX = (width + tile - 1) / tile;
   const std::uint32_t tilesInBand = tilesX * (bandHeight / tile);
+  const std::uint32_t groups = (tilesInBand + perInvocation - 1) / perInvocation;
 
   // The shader packs a leaf's first primRef into 28 bits (kStackFirstMask).
   if (scene.bvh.primRefs.size() > gpu::kStackFirstMask)
@@ -106,8 +114,8 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   Buffer materials = Buffer::withContents(context, scene.materials);
   Buffer nodes = Buffer::withContents(context, scene.bvh.nodes);
   Buffer primRefs = Buffer::withContents(context, scene.bvh.primRefs);
-  Buffer pixels(context, std::size_t{width} * bandHeight * sizeof(gpu::vec4), true);
-  Buffer states(context, std::size_t{width} * bandHeight * sizeof(gpu::GpuPathState));
+  Buffer pixels(context, bandPixels * sizeof(gpu::vec4), true);
+  Buffer states(context, std::size_t{groups} * groupSize * sizeof(gpu::GpuPathState));
   Buffer counters(context, sizeof(gpu::GpuCounters), true);
   std::memset(counters.mapped(), 0, sizeof(gpu::GpuCounters));
   t.uploadSeconds = secondsSince(t0);
@@ -124,7 +132,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   params.stepBudget = options.stepBudget ? options.stepBudget : gpu::kDefaultStepBudget;
   params.bandHeight = bandHeight;
   params.tilesX = tilesX;
-  params.tileOrderStride = scatterStride(tilesInBand);
+  params.tileOrderStride = scatterStride(groups);   // the order of the workgroups' runs of tiles
   params.primCount = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
   const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
   params.originX = static_cast<std::uint32_t>(region.x0);
@@ -200,7 +208,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   RayCounts counted;
   for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
     push.bandY0 = y0;
-    if (!dispatchBand(pipeline, &push, push.resume, y0, tilesInBand, counters, options.stop, t, counted))
+    if (!dispatchBand(pipeline, &push, push.resume, y0, groups, counters, options.stop, t, counted))
       return image;
 
     t0 = std::chrono::steady_clock::now();

@@ -24,8 +24,12 @@ enum class Cutoff { Auto, On, Off };
 
 struct VulkanOptions {
   SceneReads reads = SceneReads::Auto;    // Auto: texel buffers where the device's limits allow
-  std::uint32_t stepBudget = 0;           // steps per pixel per dispatch; 0: kDefaultStepBudget
+  std::uint32_t stepBudget = 0;           // steps per invocation per dispatch; 0: kDefaultStepBudget
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
+  // The Whitted shader's invocations share out a band's pixels (raytrace.comp): a workgroup
+  // takes a run of this many 8x8 tiles, an invocation one pixel of each; 0: on a CPU device
+  // (lavapipe) kDefaultPixelsPerInvocation, on a GPU 1 (one pixel per invocation).
+  std::uint32_t pixelsPerInvocation = 0;
   bool specialize = true;                 // compile out what the scene does not use
   // The exactness cut-off of the mirror loop (gpu_types.h): Auto compiles it in only when it
   // can stop a path at least two bounces before maxdepth (its test costs 10-20% of trace time
@@ -48,7 +52,7 @@ struct VulkanTimings {
   double uploadSeconds = 0, pipelineSeconds = 0, firstDispatchSeconds = 0, dispatchSeconds = 0,
          readbackSeconds = 0;
   std::uint32_t bands = 0, dispatches = 0;
-  std::uint64_t suspensions = 0;   // pixel-dispatches that ran out of steps
+  std::uint64_t suspensions = 0;   // invocations (Whitted) or pixels (path tracing) that ran out of steps, over the dispatches
   bool texelReads = false;         // which shader variant ran
   bool testedAll = false;          // the path shader tested every primitive (no BVH walk)
   std::string leftOut;             // the features compiled out, e.g. "spheres, specular (maxdepth 0)"

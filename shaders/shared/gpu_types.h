@@ -245,7 +245,7 @@ GPU_CONST uint kBindingMaterials = 4u;
 GPU_CONST uint kBindingBvhNodes = 5u;
 GPU_CONST uint kBindingPrimRefs = 6u;
 GPU_CONST uint kBindingPixels = 7u;       // output: one vec4 per pixel of the band, rgb = linear radiance, w = 1 when done (0: suspended)
-GPU_CONST uint kBindingPathStates = 8u;   // suspended pixels' state, one GpuPathState per pixel of the band
+GPU_CONST uint kBindingPathStates = 8u;   // suspended state: a GpuPathState per invocation (raytrace.comp) or per pixel of the band (pathtrace.comp)
 GPU_CONST uint kBindingCounters = 9u;     // GpuCounters
 GPU_CONST uint kBindingParams = 10u;      // GpuRenderParams (a uniform buffer)
 GPU_CONST uint kBindingCount = 11u;
@@ -275,13 +275,18 @@ GPU_CONST uint kWorkgroupSize = 8u;       // 8x8 pixels per workgroup (lavapipe:
 
 // llvmpipe ends a shader invocation silently after 65,535 loop iterations in all. One step
 // of the shader's state machine runs at most 1 + kMaxLeafPrims loop iterations, so a budget
-// of this many steps per dispatch stays well inside the limit; a pixel that needs more is
-// suspended (its GpuPathState saved) and resumed by the next dispatch.
+// of this many steps per dispatch stays well inside the limit; an invocation (raytrace.comp)
+// or pixel (pathtrace.comp) that needs more is suspended (its GpuPathState saved) and resumed
+// by the next dispatch.
 GPU_CONST uint kDefaultStepBudget = 8192u;
 GPU_CONST uint kMaxLeafPrims = 4u;
 // pathtrace.comp's test of every primitive (kPathSpecTestAll) is for scenes of at most this
 // many primitives; it counts as one step per kMaxLeafPrims of them.
 GPU_CONST uint kTestAllMaxPrims = 32u;
+// raytrace.comp: each workgroup takes a run of this many 8x8 tiles of a band, each lane a
+// pixel of each tile in turn, a new one when its pixel is done (VulkanOptions::pixelsPerInvocation;
+// on CPU devices: a GPU gets a pixel per invocation).
+GPU_CONST uint kDefaultPixelsPerInvocation = 16u;
 // Entries of the shader's traversal stack and of a saved one: the BVH builder bounds the
 // depth so that depth + 1 entries never exceed this (kMaxBvhDepth, host/scene/bvh.h).
 GPU_CONST uint kTraversalStackSize = 96u;
@@ -321,10 +326,10 @@ struct GpuRenderParams {
   uint height;
   uint maxDepth;            // mirror reflections at most (0 when no surface is specular)
   uint lightCount;
-  uint stepBudget;          // state-machine steps per pixel per dispatch (kDefaultStepBudget)
+  uint stepBudget;          // state-machine steps per invocation per dispatch (kDefaultStepBudget)
   uint bandHeight;          // rows per band, a multiple of kWorkgroupSize
-  uint tilesX;              // 8x8 tiles across the image
-  uint tileOrderStride;     // coprime with the tiles of a band: the order workgroups visit them
+  uint tilesX;              // 8x8 tiles across the image (pathtrace.comp)
+  uint tileOrderStride;     // coprime with the tiles of a band: the order workgroups visit them (pathtrace.comp)
   uint primCount;           // primitive references in the BVH; 0: no geometry (the root is an empty leaf)
   uint rootEntry;           // the root as a traversal-stack entry (above)
   // A crop computes only the pixels [originX, originX + width) x [originY, originY + height)
@@ -344,14 +349,15 @@ GPU_ASSERT_OFFSET(GpuRenderParams, originX, 40)
 GPU_ASSERT_OFFSET(GpuRenderParams, fullHeight, 52)
 
 struct GpuCounters {
-  uint suspended;           // pixels of this dispatch that ran out of steps
+  uint suspended;           // invocations (raytrace.comp) or pixels (pathtrace.comp) of this dispatch that ran out of steps
   uint shadowRays;
   uint reflectionRays;
   uint nonFinite;           // pixels whose radiance was NaN or infinite (RayCounts::nonFinite)
 };
 GPU_ASSERT_SIZE(GpuCounters, 16)
 
-// Everything a suspended pixel needs to continue where it stopped.
+// Everything a suspended pixel needs to continue where it stopped (raytrace.comp: a suspended
+// invocation, whose pixel is `pixel`).
 struct GpuPathState {
   vec4 origin;              // current ray (camera or mirror): xyz origin, w = tMin
   vec4 direction;           // xyz unit direction, w = nearest t so far
@@ -367,7 +373,8 @@ struct GpuPathState {
   uint stackSize;
   uint hitPrim;             // primRef of the nearest hit so far, or kNoHit
   uint hitMaterial;
-  uint pad0, pad1;          // size 160
+  uint pixel;               // raytrace.comp: the tile of the band whose pixel the invocation computes
+  uint pad1;                // size 160
   uint stack[kTraversalStackSize];
 };
 GPU_ASSERT_SIZE(GpuPathState, 160 + 4 * 96)
