@@ -223,8 +223,12 @@ TEST(GpuLoopBudget, InvocationsTakingSeveralPixelsChangeNoPixel) {
             EXPECT_EQ(rays.shadow, expectedRays.shadow) << name;   // each pixel traced once
             EXPECT_EQ(rays.reflection, expectedRays.reflection) << name;
             EXPECT_EQ(rays.nonFinite, 0u) << name;
-            if (budget == 3u) EXPECT_GT(timings.suspensions, 0u) << name;
-            if (stateBytes < (std::size_t{1} << 20) && perInvocation <= 5u) EXPECT_GT(timings.bands, 1u) << name;
+            if (budget == 3u) {
+              EXPECT_GT(timings.suspensions, 0u) << name;
+            }
+            if (stateBytes < (std::size_t{1} << 20) && perInvocation <= 5u) {
+              EXPECT_GT(timings.bands, 1u) << name;
+            }
           }
         }
       }
