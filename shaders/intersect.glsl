@@ -59,15 +59,21 @@ Shear shearFor(vec3 dir) {
 
 // Returns t in (tMin, tMax) or -1; b = the barycentric weights of p1 and p2. A triangle seen
 // edge-on or of zero area (the host leaves those out anyway) is missed, never NaN.
-float hitTriangle(uint index, vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, out vec2 b) {
-  GpuTriangle tri = loadTriangle(index);
+// The edge functions of the sheared triangle: (u, v, w), the unnormalised weights of p0, p1
+// and p2 (u of edge p1-p2, v of edge p2-p0, w of edge p0-p1).
+vec3 edgeWeights(GpuTriangle tri, vec3 origin, Shear sh) {
   vec3 pa = tri.p0.xyz - origin, pb = tri.p1.xyz - origin, pc = tri.p2.xyz - origin;
   precise float ax = pa[sh.kx] - sh.s.x * pa[sh.kz], ay = pa[sh.ky] - sh.s.y * pa[sh.kz];
   precise float bx = pb[sh.kx] - sh.s.x * pb[sh.kz], by = pb[sh.ky] - sh.s.y * pb[sh.kz];
   precise float cx = pc[sh.kx] - sh.s.x * pc[sh.kz], cy = pc[sh.ky] - sh.s.y * pc[sh.kz];
-  precise float u = cx * by - cy * bx;   // edge p1-p2: the weight of p0
-  precise float v = ax * cy - ay * cx;   // edge p2-p0: the weight of p1
-  precise float w = bx * ay - by * ax;   // edge p0-p1: the weight of p2
+  precise vec3 e = vec3(cx * by - cy * bx, ax * cy - ay * cx, bx * ay - by * ax);
+  return e;
+}
+
+float hitTriangle(uint index, vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, out vec2 b) {
+  GpuTriangle tri = loadTriangle(index);
+  vec3 e = edgeWeights(tri, origin, sh);
+  float u = e.x, v = e.y, w = e.z;
   b = vec2(0.0);
   if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return -1.0;
   float det = u + v + w;
@@ -85,13 +91,8 @@ float hitTriangle(uint index, vec3 origin, vec3 dir, Shear sh, float tMin, float
 // a miss): for loops that llvmpipe runs for a whole vector, where each return costs masks.
 float hitTriangleWhole(uint index, vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, out vec2 b) {
   GpuTriangle tri = loadTriangle(index);
-  vec3 pa = tri.p0.xyz - origin, pb = tri.p1.xyz - origin, pc = tri.p2.xyz - origin;
-  precise float ax = pa[sh.kx] - sh.s.x * pa[sh.kz], ay = pa[sh.ky] - sh.s.y * pa[sh.kz];
-  precise float bx = pb[sh.kx] - sh.s.x * pb[sh.kz], by = pb[sh.ky] - sh.s.y * pb[sh.kz];
-  precise float cx = pc[sh.kx] - sh.s.x * pc[sh.kz], cy = pc[sh.ky] - sh.s.y * pc[sh.kz];
-  precise float u = cx * by - cy * bx;
-  precise float v = ax * cy - ay * cx;
-  precise float w = bx * ay - by * ax;
+  vec3 e = edgeWeights(tri, origin, sh);
+  float u = e.x, v = e.y, w = e.z;
   bool outside = (u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0);
   float det = u + v + w;
   vec3 n = vec3(tri.p0.w, tri.p1.w, tri.p2.w);
