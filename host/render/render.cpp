@@ -51,6 +51,29 @@ std::function<void(std::uint64_t, std::uint64_t)> batchProgress(
   };
 }
 
+// The settings every renderer's options share (CpuOptions, PathOptions, VulkanOptions,
+// VulkanPathOptions), set for one batch: its samples, the seed, the crop, progress and Ctrl-C.
+template <class Options>
+void setBatch(Options& o, const RenderRequest& request, const SamplePlan& plan, const SampleBatch& batch,
+              std::function<void(std::uint64_t, std::uint64_t)> progress) {
+  o.seed = plan.seed;
+  o.firstSample = static_cast<decltype(o.firstSample)>(batch.firstSample);
+  o.sampleCount = batch.count;
+  o.crop = request.crop;
+  o.progress = std::move(progress);
+  o.stop = [] { return pendingInterrupt() != 0; };
+}
+
+// Renders the plan's samples in batches (render/progressive) and reports them.
+RadianceImage renderBatches(const BatchRenderer& batches, const SamplePlan& plan, RenderReport& report) {
+  ProgressiveReport done;
+  RadianceImage image = renderProgressive(batches, plan.progressive, &done);
+  report.samples = done.samples;
+  report.batches = done.batches;
+  report.timeUp = done.timeUp;
+  return image;
+}
+
 // The seam between the pipeline and the integrators, per backend: a BatchRenderer for the
 // scene's integrator. The Whitted model is renderReference / renderVulkan; the path
 // integrators (scene.path.integrator != Integrator::Raytracer) are renderPathReference /
@@ -63,41 +86,26 @@ RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene
   report.bvhNodes = bvh.nodes.size();
 
   t0 = std::chrono::steady_clock::now();
-  CpuOptions options;
-  options.threads = request.threads;
-  options.stop = [] { return pendingInterrupt() != 0; };
-  options.crop = request.crop;
-  options.seed = plan.seed;
   report.backend = "cpu";
   report.threads = request.threads > 0 ? request.threads : static_cast<int>(std::thread::hardware_concurrency());
   BatchRenderer batches = [&](const SampleBatch& batch, const std::function<void(std::uint64_t, std::uint64_t)>& px) {
-    CpuOptions o = options;
-    o.firstSample = batch.firstSample;
-    o.sampleCount = batch.count;
-    o.progress = batchProgress(plan, progress, px);
     RayCounts rays;
     RadianceImage image;
     if (scene.path.integrator == Integrator::Raytracer) {
+      CpuOptions o;
+      o.threads = request.threads;
+      setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
       image = renderReference(scene, bvh, o, &rays);
     } else {
-      PathOptions p;
-      p.threads = o.threads;
-      p.seed = o.seed;
-      p.firstSample = static_cast<std::uint32_t>(o.firstSample);
-      p.sampleCount = o.sampleCount;
-      p.crop = o.crop;
-      p.progress = o.progress;
-      p.stop = o.stop;
-      image = renderPathReference(scene, bvh, p, &rays);
+      PathOptions o;
+      o.threads = request.threads;
+      setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
+      image = renderPathReference(scene, bvh, o, &rays);
     }
     report.rays += rays;
     return image;
   };
-  ProgressiveReport done;
-  RadianceImage image = renderProgressive(batches, plan.progressive, &done);
-  report.samples = done.samples;
-  report.batches = done.batches;
-  report.timeUp = done.timeUp;
+  RadianceImage image = renderBatches(batches, plan, report);
   report.renderSeconds = secondsSince(t0);
   return image;
 }
@@ -125,46 +133,31 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
   std::vector<Sphere>().swap(scene.spheres);
 
   t0 = std::chrono::steady_clock::now();
-  VulkanOptions options;
-  options.stepBudget = request.stepBudget;
-  options.reads = request.reads;
-  options.specialize = request.specialize;
-  options.cutoff = request.cutoff;
-  options.stop = [] { return pendingInterrupt() != 0; };
-  options.crop = request.crop;
-  options.seed = plan.seed;
   BatchRenderer batches = [&](const SampleBatch& batch, const std::function<void(std::uint64_t, std::uint64_t)>& px) {
-    VulkanOptions o = options;
-    o.firstSample = batch.firstSample;
-    o.sampleCount = batch.count;
-    o.progress = batchProgress(plan, progress, px);
     RayCounts rays;
     VulkanTimings timings;
     RadianceImage image;
     if (scene.path.integrator == Integrator::Raytracer) {
+      VulkanOptions o;
+      o.stepBudget = request.stepBudget;
+      o.reads = request.reads;
+      o.specialize = request.specialize;
+      o.cutoff = request.cutoff;
+      setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
       image = renderVulkan(context, gpuScene, o, &rays, &timings);
     } else {
-      VulkanPathOptions p;
-      p.reads = o.reads;
-      p.seed = o.seed;
-      p.firstSample = static_cast<std::uint32_t>(o.firstSample);
-      p.sampleCount = o.sampleCount;
-      p.stepBudget = o.stepBudget;
-      p.specialize = o.specialize;
-      p.progress = o.progress;
-      p.stop = o.stop;
-      p.crop = o.crop;
-      image = renderVulkanPath(context, gpuScene, p, &rays, &timings);
+      VulkanPathOptions o;
+      o.stepBudget = request.stepBudget;
+      o.reads = request.reads;
+      o.specialize = request.specialize;
+      setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
+      image = renderVulkanPath(context, gpuScene, o, &rays, &timings);
     }
     report.rays += rays;
     report.vulkan = timings;   // the last batch's (the Whitted model has one)
     return image;
   };
-  ProgressiveReport done;
-  RadianceImage image = renderProgressive(batches, plan.progressive, &done);
-  report.samples = done.samples;
-  report.batches = done.batches;
-  report.timeUp = done.timeUp;
+  RadianceImage image = renderBatches(batches, plan, report);
   report.renderSeconds = setup + secondsSince(t0);
   return image;
 }
