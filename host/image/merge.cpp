@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <type_traits>
 
 #include "errors.h"
 #include "image/crop.h"
@@ -22,9 +23,6 @@ struct Tile {
   Pixels image;
 };
 
-Image readPixels(const std::string& path, const Image*) { return readImage(path); }
-RadianceImage readPixels(const std::string& path, const RadianceImage*) { return readPfm(path); }
-
 template <class Pixels>
 Tile<Pixels> readTile(const std::string& path) {
   Tile<Pixels> tile{path, {}, {}};
@@ -37,7 +35,10 @@ Tile<Pixels> readTile(const std::string& path) {
   std::optional<CropRecord> record = parseCropRecord(*value);
   if (!record) throw UsageError("tile '" + path + "': malformed " + kCropKeyword + " record '" + *value + "'");
   tile.record = *record;
-  tile.image = readPixels(path, static_cast<const Pixels*>(nullptr));
+  if constexpr (std::is_same_v<Pixels, RadianceImage>)
+    tile.image = readPfm(path);
+  else
+    tile.image = readImage(path);
   if (tile.image.width != record->rect.width() || tile.image.height != record->rect.height())
     throw UsageError("tile '" + path + "' is " + std::to_string(tile.image.width) + "x" +
                      std::to_string(tile.image.height) + ", but its record says " + *value);
