@@ -184,7 +184,7 @@ TEST(ExitStatus, OutOfMemoryIs6WheneverFound) {
   // (AddressSanitizer reserves more address space than the limit, and ends the process
   // itself when an allocation fails: this half runs in the plain build only.)
   std::string cmd = "ulimit -v 500000 && exec env VKRT_TEST_MEMORY_AVAILABLE_MB=100000 '" +
-                    std::string(VKRT_BINARY) + "' --backend cpu --threads 1 -o '" + dir + "/o.png' '" + dir +
+                    vkrtBinary() + "' --backend cpu --threads 1 -o '" + dir + "/o.png' '" + dir +
                     "/big.test' 2>&1";
   std::FILE* p = ::popen(cmd.c_str(), "r");
   ASSERT_NE(p, nullptr);

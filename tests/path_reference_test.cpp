@@ -311,7 +311,7 @@ TEST(PathPointLights, DiffuseFloorUnderAPointAndADirectionalLight) {
 
 TEST(PathCourseScenes, EveryCse168SceneRendersWithoutNaN) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::path(VKRT_SOURCE_DIR) / ".." / "shared" / "cse168" / "scenes";
+  const fs::path dir = fs::path(test::sourceDir()) / ".." / "shared" / "cse168" / "scenes";
   if (!fs::is_directory(dir)) VKRT_SKIP_UNLESS_CI("no course data at ../shared/cse168/scenes");
   int rendered = 0;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {

@@ -29,6 +29,25 @@ namespace fs = std::filesystem;
 
 namespace vkrt::test {
 
+namespace {
+
+std::string fromEnvironment(const char* name, const char* fallback) {
+  const char* value = std::getenv(name);
+  return value && *value ? value : fallback;
+}
+
+}  // namespace
+
+const std::string& sourceDir() {
+  static const std::string dir = fromEnvironment("VKRT_TEST_SOURCE_DIR", VKRT_SOURCE_DIR);
+  return dir;
+}
+
+const std::string& vkrtBinary() {
+  static const std::string binary = fromEnvironment("VKRT_TEST_BINARY", VKRT_BINARY);
+  return binary;
+}
+
 bool inCi() {
   const char* ci = std::getenv("CI");
   return ci && std::string(ci) == "true";
@@ -36,21 +55,21 @@ bool inCi() {
 
 std::optional<std::string> cse167Dir() {
   const char* env = std::getenv("VKRT_CSE167_DIR");
-  fs::path dir = env ? fs::path(env) : fs::path(VKRT_SOURCE_DIR) / ".." / "shared" / "cse167";
+  fs::path dir = env ? fs::path(env) : fs::path(sourceDir()) / ".." / "shared" / "cse167";
   if (fs::is_directory(dir / "scenes")) return fs::canonical(dir).string();
   return std::nullopt;
 }
 
 std::optional<std::string> cse168Dir() {
   const char* env = std::getenv("VKRT_CSE168_DIR");
-  fs::path dir = env ? fs::path(env) : fs::path(VKRT_SOURCE_DIR) / ".." / "shared" / "cse168";
+  fs::path dir = env ? fs::path(env) : fs::path(sourceDir()) / ".." / "shared" / "cse168";
   if (fs::is_directory(dir / "scenes")) return fs::canonical(dir).string();
   return std::nullopt;
 }
 
 std::vector<std::string> projectSceneNames() {
   std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(fs::path(VKRT_SOURCE_DIR) / "scenes"))
+  for (const auto& e : fs::directory_iterator(fs::path(sourceDir()) / "scenes"))
     if (e.path().extension() == ".test") names.push_back(e.path().stem().string());
   std::sort(names.begin(), names.end());
   return names;
@@ -62,7 +81,7 @@ std::string testName(std::string name) {
   return name;
 }
 
-std::string sourcePath(const std::string& relative) { return (fs::path(VKRT_SOURCE_DIR) / relative).string(); }
+std::string sourcePath(const std::string& relative) { return (fs::path(sourceDir()) / relative).string(); }
 
 std::string outputPath(const std::string& name) {
   const char* env = std::getenv("VKRT_TEST_OUTPUT");
@@ -196,7 +215,7 @@ Spawned spawnVkrt(const std::vector<std::string>& args, const std::string& logPa
                   const std::vector<std::string>& env) {
   Spawned s;
   s.logPath = logPath;
-  std::vector<std::string> all = {VKRT_BINARY};
+  std::vector<std::string> all = {vkrtBinary()};
   all.insert(all.end(), args.begin(), args.end());
   pid_t pid = ::fork();
   if (pid == 0) {
@@ -226,7 +245,7 @@ Finished waitVkrt(const Spawned& process) {
 }
 
 RunResult runVkrt(const std::string& args, const std::string& env) {
-  std::string cmd = (env.empty() ? "" : "env " + env + " ") + "'" + VKRT_BINARY + "' " + args + " 2>&1";
+  std::string cmd = (env.empty() ? "" : "env " + env + " ") + "'" + vkrtBinary() + "' " + args + " 2>&1";
   RunResult r;
   FILE* p = ::popen(cmd.c_str(), "r");
   if (!p) return r;

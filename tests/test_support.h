@@ -30,6 +30,12 @@ std::vector<std::string> projectSceneNames();
 // A test-name-safe version of a scene name ('-' becomes '_').
 std::string testName(std::string name);
 
+// The source tree and the vkrt binary: where the build left them, or $VKRT_TEST_SOURCE_DIR
+// and $VKRT_TEST_BINARY when the built tests run in another place (bench/device-check
+// --prebuilt, on a machine that did not build them).
+const std::string& sourceDir();
+const std::string& vkrtBinary();
+
 // Path of a file in the project's source tree.
 std::string sourcePath(const std::string& relative);
 
