@@ -1,5 +1,6 @@
 #include "gpu/band_dispatch.h"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
@@ -14,11 +15,26 @@ namespace {
 // invocation by the full step budget).
 constexpr std::uint64_t kMaxRoundsPerBand = 1000000;
 
+double clampBudget(double budget, std::uint32_t maxBudget) {
+  return std::clamp(budget, std::min<double>(kMinStepBudget, maxBudget), static_cast<double>(maxBudget));
+}
+
 }  // namespace
+
+std::uint32_t firstStepBudget(std::uint32_t maxBudget, std::uint64_t invocations, bool cpuDevice, double steps) {
+  if (!cpuDevice || invocations == 0) return maxBudget;
+  return static_cast<std::uint32_t>(clampBudget(steps / static_cast<double>(invocations), maxBudget));
+}
+
+std::uint32_t pacedStepBudget(std::uint32_t budget, double seconds, std::uint32_t maxBudget) {
+  const double most = kMaxStepBudgetGrowth * budget;
+  const double wanted = seconds > 0 ? budget * (kTargetDispatchSeconds / seconds) : most;
+  return static_cast<std::uint32_t>(clampBudget(std::min(wanted, most), maxBudget));
+}
 
 bool dispatchBand(ComputePipeline& pipeline, const void* push, std::uint32_t& resume, std::uint32_t bandY0,
                   std::uint32_t groups, Buffer& counters, const std::function<bool()>& stop, VulkanTimings& timings,
-                  RayCounts& rays) {
+                  RayCounts& rays, StepPace* pace) {
   auto* counter = static_cast<volatile gpu::GpuCounters*>(counters.mapped());
   resume = 0;
   std::uint64_t rounds = 0;
@@ -30,10 +46,12 @@ bool dispatchBand(ComputePipeline& pipeline, const void* push, std::uint32_t& re
     const auto t0 = std::chrono::steady_clock::now();
     pipeline.run(push, groups, &counters);
     const double s = secondsSince(t0);
-    if (timings.dispatches == 0)
+    if (timings.dispatches == 0) {
       timings.firstDispatchSeconds = s;
-    else
+    } else {
       timings.dispatchSeconds += s;
+      if (pace && pace->budget) *pace->budget = pacedStepBudget(*pace->budget, s, pace->maxBudget);
+    }
     ++timings.dispatches;
     timings.suspensions += counter->suspended;
     rays.shadow += counter->shadowRays;

@@ -120,7 +120,11 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   params.height = height;
   params.maxDepth = scene.path.maxDepth;
   params.lightCount = static_cast<std::uint32_t>(scene.lights.size());
-  params.stepBudget = options.stepBudget ? options.stepBudget : gpu::kDefaultStepBudget;
+  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  params.stepBudget = options.stepBudget ? options.stepBudget
+                                         : firstStepBudget(gpu::kDefaultStepBudget,
+                                                           std::uint64_t{tilesInBand} * tile * tile, cpuDevice,
+                                                           kPathFirstDispatchSteps);
   params.bandHeight = bandHeight;
   params.tilesX = tilesX;
   params.tileOrderStride = scatterStride(tilesInBand);
@@ -135,6 +139,8 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   params.fullHeight = scene.height;
   Buffer paramsBuffer(context, sizeof params);
   std::memcpy(paramsBuffer.mapped(), &params, sizeof params);
+  StepPace pace;
+  if (!options.stepBudget) pace = {&static_cast<gpu::GpuRenderParams*>(paramsBuffer.mapped())->stepBudget, gpu::kDefaultStepBudget};
   gpu::GpuPathParams path = scene.path;
   path.seed = options.seed;
   path.firstSample = options.firstSample;
@@ -203,7 +209,7 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   const std::uint64_t total = std::uint64_t{width} * height * samples;
   for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
     push.bandY0 = y0;
-    if (!dispatchBand(pipeline, &push, push.resume, y0, tilesInBand, counters, options.stop, t, counted))
+    if (!dispatchBand(pipeline, &push, push.resume, y0, tilesInBand, counters, options.stop, t, counted, &pace))
       return image;
 
     t0 = std::chrono::steady_clock::now();

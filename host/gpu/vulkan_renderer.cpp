@@ -129,7 +129,10 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   // Without a specular surface no mirror ray is ever traced.
   params.maxDepth = features.specular ? scene.maxDepth : 0;
   params.lightCount = static_cast<std::uint32_t>(scene.lights.size());
-  params.stepBudget = options.stepBudget ? options.stepBudget : gpu::kDefaultStepBudget;
+  params.stepBudget = options.stepBudget ? options.stepBudget
+                                         : firstStepBudget(gpu::kDefaultStepBudget,
+                                                           std::uint64_t{groups} * groupSize, cpuDevice,
+                                                           kWhittedFirstDispatchSteps);
   params.bandHeight = bandHeight;
   params.tilesX = tilesX;
   params.tileOrderStride = scatterStride(groups);   // the order of the workgroups' runs of tiles
@@ -147,6 +150,8 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
     throw InternalError("BVH depth " + std::to_string(scene.bvh.depth) + " exceeds the traversal stack");
   Buffer paramsBuffer(context, sizeof params);
   std::memcpy(paramsBuffer.mapped(), &params, sizeof params);
+  StepPace pace;
+  if (!options.stepBudget) pace = {&static_cast<gpu::GpuRenderParams*>(paramsBuffer.mapped())->stepBudget, gpu::kDefaultStepBudget};
 
   std::vector<std::uint32_t> spec(gpu::kSpecCount);   // bools as 0/1 (SPIR-V bool spec constants are 32 bits)
   spec[gpu::kSpecHasTriangles] = features.triangles;
@@ -208,7 +213,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   RayCounts counted;
   for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
     push.bandY0 = y0;
-    if (!dispatchBand(pipeline, &push, push.resume, y0, groups, counters, options.stop, t, counted))
+    if (!dispatchBand(pipeline, &push, push.resume, y0, groups, counters, options.stop, t, counted, &pace))
       return image;
 
     t0 = std::chrono::steady_clock::now();
