@@ -37,6 +37,7 @@ layout(constant_id = kPathSpecTestAll) const bool kTestAll = false;
 
 #include "scene_reads.glsl"
 #include "intersect.glsl"
+#include "mis_weight.glsl"
 
 #ifdef VKRT_TEXEL_READS
 layout(binding = kBindingQuadLights) uniform usamplerBuffer quadLightWords;   // RGBA32UI
@@ -343,9 +344,7 @@ void beginShading() {
         weight = 0.0;   // the light samples of the vertex before counted it
       } else if (bounce > 0u && nextEvent() == kNextEventMis) {
         // Power heuristic against the light samples: pdfs in solid angle at the vertex before.
-        float lightPdf = bestT * bestT / (q.corner.w * cosLight);
-        float ratio = lightPdf / lastPdf;
-        weight = 1.0 / (1.0 + ratio * ratio);
+        weight = powerHeuristic(lastPdf, bestT * bestT / (q.corner.w * cosLight));
       }
       radiance += throughput * weight * q.radiance.rgb;
     }
@@ -359,8 +358,7 @@ void beginShading() {
     if (nextEvent() == kNextEventOn) {
       emitted = vec3(0.0);
     } else {
-      float ratio = emitterHitPdf(m) / lastPdf;
-      emitted *= 1.0 / (1.0 + ratio * ratio);
+      emitted *= powerHeuristic(lastPdf, emitterHitPdf(m));
     }
   }
   radiance += throughput * emitted;
@@ -416,9 +414,7 @@ void quadLightSample(uint j, uint k, GpuMaterial m) {
   vec3 c = throughput * f * q.radiance.rgb *
            (cosSurface * cosLight / distance2 * q.corner.w / float(path.lightSamples));
   if (integrator() == kIntegratorPathTracer && nextEvent() == kNextEventMis) {
-    float lightPdf = distance2 / (q.corner.w * cosLight);
-    float ratio = scatterPdf(m, hitNormal, wi, -rayDir) / lightPdf;
-    c *= 1.0 / (1.0 + ratio * ratio);
+    c *= powerHeuristic(distance2 / (q.corner.w * cosLight), scatterPdf(m, hitNormal, wi, -rayDir));
   }
   if (any(notEqual(c, vec3(0.0)))) startShadowRay(wi, distance * kQuadShadowSpan, cosSurface, c);
 }
@@ -503,8 +499,7 @@ void emitterSample(uint k, GpuMaterial m, inout uint step) {
   float lightPdf = emitterAreaDensity(light) * factor * distance2 / cosLight;
   vec3 c = throughput * brdf(m, hitNormal, wi, -rayDir) * light.emission.rgb * (cosSurface / (lightPdf * float(n)));
   if (nextEvent() == kNextEventMis) {
-    float ratio = scatterPdf(m, hitNormal, wi, -rayDir) / lightPdf;
-    c *= 1.0 / (1.0 + ratio * ratio);
+    c *= powerHeuristic(lightPdf, scatterPdf(m, hitNormal, wi, -rayDir));
   }
   if (any(notEqual(c, vec3(0.0))))
     startShadowRay(wi, distance - offsetAt(primitiveOffset, x, cosLight), cosSurface, c);

@@ -630,6 +630,34 @@ TEST(GpuPathSlow, StrategiesConvergeToTheSameImage) {
   EXPECT_FALSE(blockTTests(renderPath(deeper, o), reference, 8, 1e-3, kStrategyBlocks * 3 * 4).empty());
 }
 
+// A diffuse floor beside a near-mirror Phong sphere (shininess 1000) and a small quad light
+// (path_scenes.h, floorBesideMirrorSphere), maxdepth 2: cosine sampling with NEE finds the
+// light reaching the floor through the sphere only by the light samples at the sphere, BRDF
+// sampling with MIS mostly by the sphere's sampled rays, weighted. Tolerance: per-block
+// t-tests of the pixel differences (blockTTests, 8x8 blocks), family false-alarm rate 1e-3,
+// each image of 256 samples per pixel.
+TEST(GpuPath, MirrorLobeUnderASmallLightCosineNeeMatchesBrdfMis) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc cosine = test::floorBesideMirrorSphere(32, 2);
+  cosine.path.nextEvent = NextEvent::On;
+  cosine.path.sampling = Sampling::Cosine;
+  SceneDesc mis = cosine;
+  mis.path.nextEvent = NextEvent::Mis;
+  mis.path.sampling = Sampling::Brdf;
+  VulkanPathOptions o;
+  o.sampleCount = 256;
+  o.seed = 41;
+  const RadianceImage a = renderPath(cosine, o);
+  o.seed = 42;
+  const RadianceImage b = renderPath(mis, o);
+  auto failures = blockTTests(a, b, 8, 1e-3, kStrategyBlocks * 3);
+  if (!failures.empty()) {
+    save(a, "mirror-lobe-cosine-nee");
+    save(b, "mirror-lobe-brdf-mis");
+  }
+  EXPECT_TRUE(failures.empty()) << failures.size() << " blocks differ, first " << failures[0];
+}
+
 // The same with emissive triangles and an ellipsoid (no quad light) sampled as lights (NEE
 // on, mis) or found by hitting only (off).
 TEST(GpuPathSlow, EmissiveSurfacesAsLights) {

@@ -155,6 +155,29 @@ SceneDesc glossyFloorUnderLargeLight(int size) {
   return s;
 }
 
+SceneDesc floorBesideMirrorSphere(int size, int maxDepth) {
+  SceneDesc s;
+  Material floor;
+  floor.ambient = dvec3(0.0);
+  floor.diffuse = dvec3(0.8);
+  Material glossy;
+  glossy.ambient = dvec3(0.0);
+  glossy.diffuse = dvec3(0.2);
+  glossy.specular = dvec3(0.8);
+  glossy.shininess = 1000.0;
+  addQuad(s, dvec3(-3, 0, -3), dvec3(6, 0, 0), dvec3(0, 0, 6), addMaterial(s, floor));   // up
+  Sphere ball;
+  ball.center = dvec3(0, 0.5, 0);
+  ball.radius = 0.5;
+  ball.material = addMaterial(s, glossy);
+  s.spheres.push_back(ball);
+  addQuadLight(s, dvec3(-1, 0.2, -0.3), dvec3(0, 0, 0.6), dvec3(0, 0.6, 0), dvec3(30.0, 25.0, 20.0));   // facing +x
+  setCamera(s, dvec3(-2.6, 1.0, 0.0), dvec3(-1.6, 0, 0), 40.0, size, size);
+  s.path.integrator = Integrator::PathTracer;
+  s.maxDepth = maxDepth;
+  return s;
+}
+
 namespace {
 
 // The continued fraction of the regularized incomplete beta function (Numerical Recipes'

@@ -42,6 +42,13 @@ SceneDesc emissiveSurfacesBox(int size, int maxDepth);
 // and a GGX half, seen from below the light's plane; maxdepth 1.
 SceneDesc glossyFloorUnderLargeLight(int size);
 
+// A diffuse floor beside a near-mirror Phong sphere (shininess 1000, ks 0.8, kd 0.2) and a
+// 0.6 x 0.6 quad light half a unit to its side, facing it: the floor behind the light's plane
+// (x < -1) is lit only through the sphere (light -> sphere -> floor); seen from beyond the
+// light, with the sphere and the lit floor at the top of the image. pathtracer, maxdepth
+// `maxDepth`.
+SceneDesc floorBesideMirrorSphere(int size, int maxDepth);
+
 // The two-sided p-value of Welch's t-test for means m1, m2 with variances of the means
 // v1, v2 (already divided by their counts) and counts n1, n2.
 double welchPValue(double m1, double v1, int n1, double m2, double v2, int n2);

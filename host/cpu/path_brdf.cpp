@@ -101,6 +101,11 @@ double directionPdf(Sampling sampling, const Material& m, const dvec3& n, const 
   return (1.0 - t) * nDotI / kPi + t * specular;
 }
 
+double powerHeuristic(double pdfThis, double pdfOther) {
+  const double a2 = pdfThis * pdfThis, b2 = pdfOther * pdfOther;
+  return a2 + b2 > 0.0 ? a2 / (a2 + b2) : 0.0;
+}
+
 dvec3 sampleDirection(Sampling sampling, const Material& m, const dvec3& n, const dvec3& wo, double u, double v,
                       double lobe) {
   const double phi = 2.0 * kPi * v;

@@ -27,6 +27,11 @@ double directionPdf(Sampling sampling, const Material& m, const dvec3& n, const 
 dvec3 sampleDirection(Sampling sampling, const Material& m, const dvec3& n, const dvec3& wo, double u, double v,
                       double lobe);
 
+// The power heuristic (beta = 2, SPEC-PATHTRACING section 4): the MIS weight of a sample
+// drawn by the strategy of density pdfThis against the other strategy's pdfOther,
+// pdfThis^2 / (pdfThis^2 + pdfOther^2); 0 when both are 0.
+double powerHeuristic(double pdfThis, double pdfOther);
+
 // The frame's vectors around unit axis n (gpu_types.h): local (x, y, z) is x t + y b + z n.
 void frameAround(const dvec3& n, dvec3& t, dvec3& b);
 

@@ -58,11 +58,6 @@ struct Vertex {
   SecondaryRayOffsets offset;
 };
 
-double powerHeuristic(double pdfA, double pdfB) {
-  const double a2 = pdfA * pdfA, b2 = pdfB * pdfB;
-  return a2 + b2 > 0.0 ? a2 / (a2 + b2) : 0.0;
-}
-
 class PathIntegrator {
  public:
   PathIntegrator(const SceneDesc& scene, const Bvh& bvh) : scene_(scene), query_(scene, bvh) {
