@@ -4,10 +4,16 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "cpu/path_reference.h"
+#include "gpu/vulkan_path_renderer.h"
 #include "image/compare.h"
+#include "image/image.h"
+#include "path_scenes.h"
 #include "scene/bvh.h"
+#include "scene/flatten.h"
 #include "scene/parse.h"
 #include "scene/ray_offset.h"
 #include "test_support.h"
@@ -30,7 +36,7 @@ std::string point(const dvec3& p) { return num(p.x) + " " + num(p.y) + " " + num
 // or (viaFile) through the file's own `translate` and `scale`, which also move the point
 // light (lights follow the transform; SPEC section 7). Attenuation is constant, so the
 // picture is the same at every scale.
-std::string stiffScene(double k, dvec3 offset, bool viaFile) {
+std::string stiffScene(double k, dvec3 offset, bool viaFile, const std::string& extra = "") {
   auto at = [&](dvec3 p) { return point(viaFile ? p : p * k + offset); };
   auto len = [&](double v) { return num(viaFile ? v : v * k); };
   std::string s = "size 120 90\nmaxdepth 3\n";
@@ -44,7 +50,7 @@ std::string stiffScene(double k, dvec3 offset, bool viaFile) {
   s += "pushTransform\ntranslate " + at({2.2, 0.5, 0}) + "\nscale " + len(1) + " " + len(0.5) + " " + len(0.5) +
        "\nsphere 0 0 0 1\npopTransform\n";
   s += "diffuse 0.1 0.1 0.3\nspecular 0.8 0.8 0.8\nsphere " + at({-2, 0.6, 1}) + " " + len(0.6) + "\n";
-  return s;
+  return s + extra;
 }
 
 struct Variant {
@@ -52,6 +58,7 @@ struct Variant {
   double k;
   double offset;
   bool viaFile;
+  const char* extra = "";   // lines added at the end (in the scene's own units)
 };
 void PrintTo(const Variant& v, std::ostream* os) { *os << v.name; }
 
@@ -65,7 +72,7 @@ class ScaleInvariance : public ::testing::TestWithParam<Variant> {};
 TEST_P(ScaleInvariance, CpuPictureIsTheSame) {
   const Variant v = GetParam();
   Image base = renderText(stiffScene(1, dvec3(0), false));
-  Image moved = renderText(stiffScene(v.k, dvec3(v.offset), v.viaFile));
+  Image moved = renderText(stiffScene(v.k, dvec3(v.offset), v.viaFile, v.extra));
   EXPECT_TRUE(imagesClose(std::string("scale-cpu/") + v.name, moved, base, 2, scaleTolerance(base)));
 }
 
@@ -73,10 +80,10 @@ TEST_P(ScaleInvariance, VulkanPictureIsTheSame) {
   VKRT_REQUIRE_GPU(context);
   const Variant v = GetParam();
   Image base = renderGpu(parseScene(stiffScene(1, dvec3(0), false), "base.test"));
-  Image moved = renderGpu(parseScene(stiffScene(v.k, dvec3(v.offset), v.viaFile), "moved.test"));
+  Image moved = renderGpu(parseScene(stiffScene(v.k, dvec3(v.offset), v.viaFile, v.extra), "moved.test"));
   EXPECT_TRUE(imagesClose(std::string("scale-gpu/") + v.name, moved, base, 2, scaleTolerance(base)));
   // And the two backends agree on the moved scene too.
-  Image cpu = renderText(stiffScene(v.k, dvec3(v.offset), v.viaFile));
+  Image cpu = renderText(stiffScene(v.k, dvec3(v.offset), v.viaFile, v.extra));
   EXPECT_TRUE(imagesClose(std::string("scale-gpu-vs-cpu/") + v.name, moved, cpu, 2, scaleTolerance(base)));
 }
 
@@ -84,8 +91,44 @@ INSTANTIATE_TEST_SUITE_P(Stiff, ScaleInvariance,
                          ::testing::Values(Variant{"milli", 1e-3, 0, false}, Variant{"times1e4", 1e4, 0, false},
                                            Variant{"moved1e4", 1, 1e4, false}, Variant{"milliInFile", 1e-3, 0, true},
                                            Variant{"times1e4InFile", 1e4, 0, true},
-                                           Variant{"milliMoved", 1e-3, 10, false}),
+                                           Variant{"milliMoved", 1e-3, 10, false},
+                                           // Beyond float32's range of squares, and its extremes.
+                                           Variant{"times1e20", 1e20, 0, false}, Variant{"times1em30", 1e-30, 0, false},
+                                           Variant{"times1e30", 1e30, 0, false}, Variant{"times1em30InFile", 1e-30, 0, true},
+                                           Variant{"times1e20InFile", 1e20, 0, true},
+                                           Variant{"times1e20Moved", 1e20, 1e25, false},
+                                           Variant{"times1em30Moved", 1e-30, 1e-25, false},
+                                           // One far object widens the scene's box; the picture stays.
+                                           Variant{"farSphere1e7", 1, 0, false, "sphere 1e7 0 0 1\n"},
+                                           Variant{"farSphere1e8", 1, 0, false, "sphere 1e8 0 0 1\n"},
+                                           Variant{"farSpheres1e15", 1, 0, false,
+                                                   "sphere 1e15 0 0 1\nsphere 0 -1e15 0 1\nsphere 0 0 -1e15 1\n"},
+                                           Variant{"farSphere1e7Milli", 1e-3, 0, false, "sphere 1e4 0 0 1e-3\n"}),
                          [](const auto& p) { return std::string(p.param.name); });
+
+// A sphere's radius far from 1, with its transform making up for it (`scale 1e-10` around a
+// sphere of radius 1e10, `scale 1e20` around one of 1e-20): the same sphere, the same picture.
+TEST(SphereRadius, FarFromOneAgainstItsTransformGivesTheSamePicture) {
+  const std::string base = stiffScene(1, dvec3(0), false);
+  const std::string plain = "sphere 0 1 0 1\n";
+  ASSERT_NE(base.find(plain), std::string::npos);
+  Context* context = gpuContextOrSkip();
+  const Image cpuBase = renderText(base);
+  const Image gpuBase = context ? renderGpu(parseScene(base, "base.test")) : Image{};
+  const std::pair<const char*, const char*> variants[] = {
+      {"1e10", "pushTransform\nscale 1e-10 1e-10 1e-10\nsphere 0 1e10 0 1e10\npopTransform\n"},
+      {"1e-20", "pushTransform\nscale 1e20 1e20 1e20\nsphere 0 1e-20 0 1e-20\npopTransform\n"},
+      {"1e30", "pushTransform\nscale 1e-30 1e-30 1e-30\nsphere 0 1e30 0 1e30\npopTransform\n"}};
+  for (const auto& [name, variant] : variants) {
+    std::string text = base;
+    text.replace(text.find(plain), plain.size(), variant);
+    EXPECT_TRUE(imagesClose(std::string("radius-cpu/") + name, renderText(text), cpuBase, 2, scaleTolerance(cpuBase)));
+    if (context) {
+      EXPECT_TRUE(imagesClose(std::string("radius-gpu/") + name, renderGpu(parseScene(text, "radius.test")), gpuBase,
+                              2, scaleTolerance(gpuBase)));
+    }
+  }
+}
 
 // A fan of 1000 thin triangles around the point the centre pixel looks at, filling the view,
 // emitting white: a ray that slipped between two of them would leave a black pixel. Flat and
@@ -197,4 +240,102 @@ TEST(ShadingEdgeCases, MaxDepth1000BetweenPerfectMirrorsEnds) {
   VulkanTimings timings;
   Image gpu = renderGpu(scene, 0, &timings);
   EXPECT_TRUE(imagesClose("edge-case/maxdepth1000", gpu, cpu, 2, 3));
+}
+
+namespace {
+
+// The scene with every length multiplied by k and then moved by `offset` (point lights'
+// attenuation made up for, so that the picture is the same).
+SceneDesc scaledScene(SceneDesc s, double k, const dvec3& offset) {
+  const dmat4 m = glm::scale(glm::translate(dmat4(1.0), offset), dvec3(k));
+  auto at = [&](const dvec3& p) { return p * k + offset; };
+  for (Triangle& t : s.triangles)
+    for (dvec3& p : t.p) p = at(p);
+  for (Sphere& sp : s.spheres) {
+    sp.worldFromObject = m * sp.worldFromObject;
+    sp.objectFromWorld = glm::inverse(sp.worldFromObject);
+  }
+  for (QuadLight& q : s.quadLights) {
+    q.a = at(q.a);
+    q.ab *= k;
+    q.ac *= k;
+  }
+  for (Light& l : s.lights) {
+    if (l.type == LightType::Point) l.vec = at(l.vec);
+    l.attenuation = dvec3(l.attenuation.x, l.attenuation.y / k, l.attenuation.z / k / k);
+  }
+  s.camera.from = at(s.camera.from);
+  s.camera.at = at(s.camera.at);
+  return s;
+}
+
+}  // namespace
+
+// The path tracer with next-event estimation of a quad light and of emissive triangles and
+// ellipsoids (areas, densities and pick weights in the float32 frame's units): the same
+// picture at every scale and place, on both backends. Tolerance: 30 of the 1024 pixels more
+// than 2/255 off (as between the backends: pixel centres on the diagonals see two walls' edge
+// exactly, and the secondary-ray offsets scale by whole decades, not exactly by 2^70).
+TEST(PathScaleInvariance, QuadLightAndEmittersAtEveryScale) {
+  // The box with its quad light, and the emissive ellipsoid and triangle of the other box.
+  SceneDesc base = cornellLikeBox(32, 3);
+  const SceneDesc emitters = emissiveSurfacesBox(32, 3);
+  base.materials.insert(base.materials.end(), emitters.materials.begin() + static_cast<long>(base.materials.size()),
+                        emitters.materials.end());
+  base.spheres = emitters.spheres;
+  base.triangles.push_back(emitters.triangles.back());
+  base.path.nextEvent = NextEvent::Mis;
+  PathOptions cpu;
+  cpu.seed = 17;
+  cpu.sampleCount = 4;
+  VulkanPathOptions gpu;
+  gpu.seed = 17;
+  gpu.sampleCount = 4;
+  Context* context = gpuContextOrSkip();
+  auto render = [&](const SceneDesc& s, bool onGpu) {
+    RayCounts counts;
+    RadianceImage r = onGpu ? renderVulkanPath(*context, flatten(s), gpu, &counts, nullptr)
+                            : renderPathReference(s, buildBvh(s), cpu, &counts);
+    EXPECT_EQ(counts.nonFinite, 0u);
+    Image img(r.width, r.height);
+    for (std::size_t i = 0; i < r.rgb.size(); ++i) img.rgb[i] = radianceToByte(r.rgb[i]);
+    return img;
+  };
+  for (bool onGpu : {false, true}) {
+    if (onGpu && !context) break;
+    const Image expected = render(base, onGpu);
+    long long lit = 0;
+    for (std::uint8_t b : expected.rgb) lit += b != 0;
+    ASSERT_GT(lit, 100);
+    const std::pair<const char*, SceneDesc> variants[] = {
+        {"2^70", scaledScene(base, 0x1p70, dvec3(0.0))},
+        {"1e20", scaledScene(base, 1e20, dvec3(0.0))},
+        {"1e-30", scaledScene(base, 1e-30, dvec3(0.0))},
+        {"1e-30moved", scaledScene(base, 1e-30, dvec3(3e-30, -1e-29, 2e-30))},
+        {"1e30", scaledScene(base, 1e30, dvec3(0.0))}};
+    for (const auto& [name, scene] : variants) {
+      const Image actual = render(scene, onGpu);
+      const std::string label = std::string(onGpu ? "path-scale-gpu/" : "path-scale-cpu/") + name;
+      EXPECT_TRUE(imagesClose(label, actual, expected, 2, 30));
+    }
+  }
+}
+
+// A point light's attenuation c0 + c1 r + c2 r^2 at every scale (the scene's c1 / k and
+// c2 / k^2 with it): the float32 frame's own units must not change the light.
+TEST(AttenuationScaleInvariance, SameLightAtEveryScale) {
+  const SceneDesc base = parseScene(
+      litRoom("camera 0 1 6 0 0 0 0 1 0 45\nattenuation 0.5 0.3 0.2\ndiffuse 0.7 0.7 0.7\nspecular 0.2 0.2 0.2\n"
+              "shininess 20"),
+      "attenuation.test");
+  Context* context = gpuContextOrSkip();
+  const Image cpuBase = renderScene(base);
+  const Image gpuBase = context ? renderGpu(base) : Image{};
+  for (double k : {1e20, 0x1p-90, 1e-30, 1e30}) {
+    const SceneDesc scaled = scaledScene(base, k, dvec3(0.5 * k));
+    EXPECT_TRUE(imagesClose("attenuation-cpu/" + num(k), renderScene(scaled), cpuBase, 2, 3));
+    if (context) {
+      EXPECT_TRUE(imagesClose("attenuation-gpu/" + num(k), renderGpu(scaled), gpuBase, 2, 3));
+    }
+  }
 }

@@ -433,7 +433,7 @@ static bool neverHit(const Sphere& s) {
   return !(s.radius > 0.0) || !(det != 0.0) || !finite;
 }
 
-Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads) {
+Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads, double scale) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<BuildPrim> prims(scene.triangles.size() + scene.spheres.size());
   const std::size_t triangles = scene.triangles.size();
@@ -446,8 +446,8 @@ Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads) {
           prims[i].ref = kDropped;
           continue;
         }
-        prims[i] = makePrim(glm::min(t.p[0], glm::min(t.p[1], t.p[2])) - origin,
-                            glm::max(t.p[0], glm::max(t.p[1], t.p[2])) - origin, static_cast<std::uint32_t>(i));
+        prims[i] = makePrim((glm::min(t.p[0], glm::min(t.p[1], t.p[2])) - origin) * scale,
+                            (glm::max(t.p[0], glm::max(t.p[1], t.p[2])) - origin) * scale, static_cast<std::uint32_t>(i));
       } else {
         dvec3 lo, hi;
         if (neverHit(scene.spheres[i - triangles])) {
@@ -455,7 +455,8 @@ Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads) {
           continue;
         }
         sphereBounds(scene.spheres[i - triangles], lo, hi);
-        prims[i] = makePrim(lo - origin, hi - origin, static_cast<std::uint32_t>(i - triangles) | gpu::kPrimSphereBit);
+        prims[i] = makePrim((lo - origin) * scale, (hi - origin) * scale,
+                            static_cast<std::uint32_t>(i - triangles) | gpu::kPrimSphereBit);
       }
     }
   };
