@@ -339,3 +339,58 @@ TEST(AttenuationScaleInvariance, SameLightAtEveryScale) {
     }
   }
 }
+
+// Directions stated with tiny or vast vectors (a rotation axis, the camera's up vector and
+// its look-at point, a directional light, vertex normals) mean the same direction: the same
+// picture as with vectors of ordinary length, on both backends. A vector is multiplied by
+// each factor; its length's square underflows or overflows double precision.
+TEST(TinyVectors, DirectionsOfAnyLengthGiveTheSamePicture) {
+  auto scene = [](double f) {
+    auto v = [f](double x, double y, double z) { return num(x * f) + " " + num(y * f) + " " + num(z * f); };
+    // The camera at the origin (so that a look-at point 1e-200 away is representable), the
+    // rest moved in front of it.
+    std::string s = "size 48 36\ncamera 0 0 0 " + v(0, -1, -6) + " " + v(0, 1, 0) + " 45\ntranslate 0 -1 -6\n";
+    s += "directional " + v(1, 1, 2) + " 0.6 0.6 0.6\npoint 0 3 3 0.5 0.5 0.5\n";
+    s += "diffuse 0.5 0.4 0.3\nspecular 0.3 0.3 0.3\nshininess 20\n";
+    s += "pushTransform\nrotate " + v(1, 2, 3) + " 40\nscale 1.5 0.6 1\nsphere 0 0 0 1\npopTransform\n";
+    s += "vertexnormal -3 -1 -3 " + v(0, 1, 0.3) + "\nvertexnormal 3 -1 -3 " + v(0.2, 1, 0) +
+         "\nvertexnormal 0 -1 3 " + v(-0.2, 1, 0) + "\ntrinormal 0 1 2\n";
+    return s;
+  };
+  const SceneDesc base = parseScene(scene(1.0), "base.test");
+  Context* context = gpuContextOrSkip();
+  const Image cpuBase = renderScene(base);
+  long long lit = 0;
+  for (std::uint8_t b : cpuBase.rgb) lit += b != 0;
+  ASSERT_GT(lit, 1000);
+  const Image gpuBase = context ? renderGpu(base) : Image{};
+  for (double f : {1e-200, 1e-160, 1e200, 1e300}) {
+    const SceneDesc s = parseScene(scene(f), "tiny.test");
+    EXPECT_TRUE(imagesClose("tiny-vectors-cpu/" + num(f), renderScene(s), cpuBase, 1, 3));
+    if (context) {
+      EXPECT_TRUE(imagesClose("tiny-vectors-gpu/" + num(f), renderGpu(s), gpuBase, 1, 3));
+    }
+  }
+}
+
+// A triangle far smaller than anything it is near (1e-20 to 1e-100 across, hidden at the
+// centre of a unit sphere, in three planes through it) changes no pixel: rays that pass far from it never
+// "hit" it through rounding (the CPU reference computes edge functions from the edges).
+TEST(TinyVectors, ATinyTriangleInsideASphereChangesNothing) {
+  const std::string base = "size 80 60\ncamera 0 0 5 0 0 0 0 1 0 45\npoint 3 3 3 1 1 1\ndirectional 0 0 1 .3 .3 .3\n"
+                           "diffuse 0.5 0.5 0.5\nspecular .3 .3 .3\nshininess 20\nsphere 0 0 0 1\n";
+  Context* context = gpuContextOrSkip();
+  const Image cpuBase = renderText(base);
+  const Image gpuBase = context ? renderGpu(parseScene(base, "base.test")) : Image{};
+  for (double size : {1e-20, 1e-9, 1e-100})
+    for (const char* turn : {"", "rotate 0 1 0 90\n", "rotate 1 2 3 30\n"}) {   // about the centre
+      const std::string axis = turn[0] == 0 ? "xy" : turn[7] == '0' ? "yz" : "tilted";
+      std::string text = base + turn + "vertex 0 0 0\nvertex " + num(size) + " 0 0\nvertex 0 " + num(size) +
+                         " 0\ntri 0 1 2\n";
+      EXPECT_TRUE(imagesClose("tiny-triangle-cpu/" + num(size) + axis, renderText(text), cpuBase, 0, 0));
+      if (context) {
+        EXPECT_TRUE(imagesClose("tiny-triangle-gpu/" + num(size) + axis, renderGpu(parseScene(text, "tiny.test")),
+                                gpuBase, 0, 0));
+      }
+    }
+}

@@ -17,6 +17,7 @@
 
 #include "scene/emitters.h"
 #include "scene/ray_offset.h"
+#include "scene/unit_vector.h"
 
 namespace vkrt {
 namespace {
@@ -40,8 +41,8 @@ gpu::vec4 f4(const dvec3& v, float w = 0.0f) {
 // The camera basis in double, then float: a per-pixel step right and up, and the back vector.
 gpu::GpuPushConstants cameraConstants(const SceneDesc& scene, const dvec3& origin, double scale) {
   const Camera& c = scene.camera;
-  dvec3 w = glm::normalize(c.from - c.at);
-  dvec3 u = glm::normalize(glm::cross(c.up, w));
+  dvec3 w = unitVector(c.from - c.at);
+  dvec3 u = unitVector(glm::cross(scaledForSquares(c.up), w));
   dvec3 v = glm::cross(w, u);
   double tanY = std::tan(glm::radians(c.fovyDegrees) / 2.0);
   double tanX = tanY * scene.width / scene.height;

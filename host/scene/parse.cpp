@@ -19,6 +19,7 @@
 #include "errors.h"
 #include "image/image_file.h"
 #include "scene/number.h"
+#include "scene/unit_vector.h"
 
 namespace vkrt {
 namespace {
@@ -451,10 +452,13 @@ class Parser {
     if (view == dvec3(0.0)) {
       error("degenerate camera: look-from equals look-at");
       ok = false;
+    } else if (!std::isfinite(view.x) || !std::isfinite(view.y) || !std::isfinite(view.z)) {
+      error("look-from and look-at are too far apart: their difference overflows double precision");
+      ok = false;
     } else if (c.up == dvec3(0.0)) {
       error("degenerate camera: the up vector is zero");
       ok = false;
-    } else if (glm::length(glm::cross(glm::normalize(c.up), glm::normalize(view))) <= 1e-12) {
+    } else if (glm::length(glm::cross(unitVector(c.up), unitVector(view))) <= 1e-12) {
       error("degenerate camera: the up vector is parallel to the view direction");
       ok = false;
     }
@@ -552,7 +556,11 @@ class Parser {
       t.p[k] = toWorldPoint(vertexNormals_[idx[k]].position);
       dvec3 n = nm * vertexNormals_[idx[k]].normal;
       double len = glm::length(n);
-      t.n[k] = len > 0.0 ? n / len : dvec3(0.0, 0.0, 1.0);
+      // A normal or transform so small or large that the length underflows or overflows:
+      // the same direction through unitVector.
+      if (!(len > 0.0) || !std::isfinite(len)) n = unitVector(nm * unitVector(vertexNormals_[idx[k]].normal));
+      else n /= len;
+      t.n[k] = n != dvec3(0.0) ? n : dvec3(0.0, 0.0, 1.0);
     }
     t.material = currentMaterial();
     scene_.triangles.push_back(t);
@@ -572,7 +580,7 @@ class Parser {
       error("rotate axis must not be zero");
       return;
     }
-    transform_ = transform_ * rotation(glm::normalize(axis), glm::radians(a[3]));
+    transform_ = transform_ * rotation(unitVector(axis), glm::radians(a[3]));
   }
 
   // Rodrigues' rotation about a unit axis, right-handed, as a 4x4 matrix.
@@ -617,9 +625,12 @@ class Parser {
     } else {
       l.type = LightType::Directional;
       dvec3 d{a[0], a[1], a[2]};
-      l.vec = dvec3(transform_ * glm::dvec4(d, 0.0));
-      if (l.vec == dvec3(0.0)) return error("directional light direction must not be zero");
-      l.vec = glm::normalize(l.vec);
+      if (d == dvec3(0.0)) return error("directional light direction must not be zero");
+      // Scaled by powers of two before and after the transform: a tiny or vast direction
+      // neither underflows nor overflows (and one of ordinary size keeps its bits).
+      l.vec = unitVector(dvec3(transform_ * glm::dvec4(scaledForSquares(d), 0.0)));
+      if (l.vec == dvec3(0.0))
+        return error("directional light direction vanishes under the current transform (a scale of 0)");
     }
     scene_.lights.push_back(l);
   }
