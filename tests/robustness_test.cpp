@@ -3,6 +3,8 @@
 // degenerate primitives, and the edge cases of the shading equation, on both backends.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -11,6 +13,7 @@
 #include "gpu/vulkan_path_renderer.h"
 #include "image/compare.h"
 #include "image/image.h"
+#include "image/pfm.h"
 #include "path_scenes.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
@@ -20,6 +23,7 @@
 
 using namespace vkrt;
 using namespace vkrt::test;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -392,5 +396,113 @@ TEST(TinyVectors, ATinyTriangleInsideASphereChangesNothing) {
         EXPECT_TRUE(imagesClose("tiny-triangle-gpu/" + num(size) + axis, renderGpu(parseScene(text, "tiny.test")),
                                 gpuBase, 0, 0));
       }
+    }
+}
+
+// ---- What reaches a file is finite ------------------------------------------------------------
+
+namespace {
+
+// Every channel of the PFM at `path` is finite; returns the largest in absolute value.
+float largestFiniteChannel(const std::string& path) {
+  const RadianceImage img = readPfm(path);
+  float largest = 0.0f;
+  for (float c : img.rgb) {
+    EXPECT_TRUE(std::isfinite(c)) << path;
+    if (std::isfinite(c)) largest = std::max(largest, std::abs(c));
+  }
+  return largest;
+}
+
+std::vector<std::string> backendsHere() {
+  std::vector<std::string> b = {"cpu"};
+  if (gpuContextOrSkip()) b.push_back("vulkan");
+  return b;
+}
+
+}  // namespace
+
+// A colour, light or radiance beyond float32 (the Vulkan backend's precision) renders as the
+// largest float, with a warning at its line (an error with --strict), on both backends; the
+// PFM holds no infinity.
+TEST(FiniteOutput, ValuesBeyondFloatAreClampedWithAWarningAtTheirLine) {
+  const std::string dir = freshDir("finite/beyond-float");
+  const std::pair<std::string, std::string> cases[] = {
+      {"emission 1e39 0 0", "'emission' argument 1 '1e39'"},
+      {"ambient 0 -1e300 0", "'ambient' argument 2 '-1e300'"},
+      {"point 0 0 5 1e300 1 1", "'point' argument 4 '1e300'"},
+      {"directional 0 0 1 1 1 1e39", "'directional' argument 6 '1e39'"}};
+  for (const std::string& backend : backendsHere())
+    for (const auto& [line, quoted] : cases) {
+      writeFile(dir + "/s.test", "size 20 10\ncamera 0 0 5 0 0 0 0 1 0 45\n" + line + "\ndiffuse 0.5 0.5 0.5\n"
+                                 "sphere 0 0 0 1\n");
+      const std::string message = quoted + " is beyond the largest float32 value (3.4028235e38)";
+      RunResult r = runVkrt("--backend " + backend + " -o " + dir + "/o.pfm " + dir + "/s.test");
+      EXPECT_EQ(r.exitCode, 0) << r.output;
+      EXPECT_NE(r.output.find(dir + "/s.test:3: warning: " + message), std::string::npos) << r.output;
+      EXPECT_EQ(r.output.find("NaN or infinite"), std::string::npos) << r.output;
+      if (fileExists(dir + "/o.pfm")) {
+        EXPECT_GT(largestFiniteChannel(dir + "/o.pfm"), 0.1f) << line;
+      }
+      fs::remove(dir + "/o.pfm");
+      RunResult strict = runVkrt("--strict --backend " + backend + " -o " + dir + "/o.pfm " + dir + "/s.test");
+      EXPECT_EQ(strict.exitCode, 2) << strict.output;
+      EXPECT_NE(strict.output.find(dir + "/s.test:3: error: " + message), std::string::npos) << strict.output;
+      EXPECT_FALSE(fileExists(dir + "/o.pfm"));
+    }
+}
+
+// Values within float32 whose sum is beyond it: both backends count the pixels (a warning; an
+// error with --strict) and write the largest float, never an infinity.
+TEST(FiniteOutput, SumsBeyondFloatAreCountedAndWrittenFinite) {
+  const std::string dir = freshDir("finite/sums");
+  writeFile(dir + "/s.test", "size 20 10\ncamera 0 0 5 0 0 0 0 1 0 45\nambient 3e38 3e38 3e38\n"
+                             "emission 3e38 0 0\nsphere 0 0 0 1\n");
+  for (const std::string& backend : backendsHere()) {
+    RunResult r = runVkrt("--backend " + backend + " -o " + dir + "/o.pfm " + dir + "/s.test");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("vkrt: warning: 16 pixels had a NaN or infinite colour"), std::string::npos)
+        << backend << ": " << r.output;
+    EXPECT_EQ(largestFiniteChannel(dir + "/o.pfm"), std::numeric_limits<float>::max()) << backend;
+    RunResult strict = runVkrt("--strict --backend " + backend + " -o " + dir + "/s.pfm " + dir + "/s.test");
+    EXPECT_EQ(strict.exitCode, 2) << strict.output;
+  }
+}
+
+// The path integrators with BRDF sampling at accepted extremes (Phong shininess 1e20, GGX
+// roughness 1e30): clamped, with a warning at the line, to values that render finite on both
+// backends and give the same picture as those values given directly.
+TEST(FiniteOutput, ExtremeBrdfParametersRenderFinite) {
+  auto scene = [](const std::string& material, const char* nee) {
+    return "size 24 18\nintegrator pathtracer\nspp 8\nmaxdepth 3\nimportancesampling brdf\nnexteventestimation " +
+           std::string(nee) + "\ncamera 0 1 5 0 0 0 0 1 0 45\nquadLight -1 3 -1 0 0 2 2 0 0 5 5 5\n"
+           "diffuse 0.3 0.3 0.3\nspecular 0.5 0.5 0.5\n" + material + "\nsphere 0 0 0 1\n"
+           "vertex -5 -1 -5\nvertex 5 -1 -5\nvertex 5 -1 5\nvertex -5 -1 5\ntri 0 3 2\ntri 0 2 1\n";
+  };
+  Context* context = gpuContextOrSkip();
+  const std::pair<std::string, std::string> cases[] = {{"shininess 1e20", "shininess 1e9"},
+                                                       {"shininess 1e300", "shininess 1e9"},
+                                                       {"brdf ggx\nroughness 1e30", "brdf ggx\nroughness 1e4"}};
+  for (const auto& [extreme, limit] : cases)
+    for (const char* nee : {"off", "mis"}) {
+      ParsedScene parsed = parseSceneWithWarnings(scene(extreme, nee), "extreme.test");
+      ASSERT_FALSE(parsed.warnings.empty()) << extreme;
+      EXPECT_NE(parsed.warnings.front().message.find("clamped to 1e"), std::string::npos)
+          << parsed.warnings.front().message;
+      const SceneDesc& s = parsed.scene;
+      const SceneDesc same = parseScene(scene(limit, nee), "limit.test");
+      PathOptions cpu;
+      cpu.sampleCount = 8;
+      RayCounts counts;
+      const RadianceImage onCpu = renderPathReference(s, buildBvh(s), cpu, &counts);
+      EXPECT_EQ(counts.nonFinite, 0u) << extreme << " " << nee;
+      const RadianceImage cpuSame = renderPathReference(same, buildBvh(same), cpu, nullptr);
+      EXPECT_EQ(onCpu.rgb, cpuSame.rgb) << extreme << " " << nee;
+      if (!context) continue;
+      VulkanPathOptions gpu;
+      gpu.sampleCount = 8;
+      RayCounts gpuCounts;
+      renderVulkanPath(*context, flatten(s), gpu, &gpuCounts, nullptr);
+      EXPECT_EQ(gpuCounts.nonFinite, 0u) << extreme << " " << nee;
     }
 }
