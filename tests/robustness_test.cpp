@@ -506,3 +506,24 @@ TEST(FiniteOutput, ExtremeBrdfParametersRenderFinite) {
       EXPECT_EQ(gpuCounts.nonFinite, 0u) << extreme << " " << nee;
     }
 }
+
+// A point light (constant attenuation) so far away that its rays are parallel: the picture of
+// a directional light along the same direction, on both backends, however far (its distance
+// squared beyond float32, or beyond double).
+TEST(FarPointLight, IsTheDirectionalLightOfItsDirection) {
+  const std::string rest = "diffuse 0.5 0.4 0.3\nspecular 0.3 0.3 0.3\nshininess 20\nsphere 0 0 0 1\n"
+                           "sphere 1.5 0.3 0.5 0.4\nvertex -4 -1 -4\nvertex 4 -1 -4\nvertex 4 -1 4\nvertex -4 -1 4\n"
+                           "tri 0 3 2\ntri 0 2 1\n";
+  const std::string camera = "size 48 36\ncamera 0 1 6 0 0 0 0 1 0 45\n";
+  const std::string directional = camera + "directional 1 2 3 0.9 0.9 0.9\n" + rest;
+  Context* context = gpuContextOrSkip();
+  const Image cpuBase = renderText(directional);
+  const Image gpuBase = context ? renderGpu(parseScene(directional, "directional.test")) : Image{};
+  for (double d : {1e25, 1e100, 1e300}) {
+    const std::string text = camera + "point " + num(d) + " " + num(2 * d) + " " + num(3 * d) + " 0.9 0.9 0.9\n" + rest;
+    EXPECT_TRUE(imagesClose("far-light-cpu/" + num(d), renderText(text), cpuBase, 1, 3));
+    if (context) {
+      EXPECT_TRUE(imagesClose("far-light-gpu/" + num(d), renderGpu(parseScene(text, "far.test")), gpuBase, 1, 3));
+    }
+  }
+}

@@ -26,6 +26,9 @@ namespace {
 constexpr std::size_t kParallelMinTriangles = 50000;
 
 constexpr double kFloatMax = std::numeric_limits<float>::max();
+// A point light farther than this from the frame's origin (max norm, frame units) is moved
+// to this distance (lightsFar, below).
+constexpr double kFarLight = 0x1p40;
 
 // The power of two that brings a sphere's radius into [1, 2) when it lies outside
 // [2^-8, 2^8], else 1 (the radius as it is).
@@ -220,6 +223,20 @@ GpuScene flatten(const SceneDesc& scene) {
     // is the largest float (the light is then as good as 0 wherever r is not).
     const dvec3& c = l.attenuation;
     gl.attenuation = f4(glm::min(dvec3(c.x, c.y / scale, c.z / scale / scale), dvec3(kFloatMax)));
+    const dvec3 position = (l.vec - origin) * scale;
+    const double far = std::max({std::abs(position.x), std::abs(position.y), std::abs(position.z)});
+    if (point && far > kFarLight) {
+      // So far beyond the geometry (whose frame coordinates are at most a few units) that its
+      // direction and distance are the same from every point of it, to far below float32's
+      // resolution (2^-39): moved to kFarLight along the same line, its colour divided by the
+      // attenuation at its distance in double (float32 would overflow squaring that distance).
+      const dvec3 unit = unitVector(position);
+      const double distance = glm::dot(position * (1.0 / far), unit) * far / scale;   // in world units
+      const double divisor = c.x + c.y * distance + c.z * distance * distance;
+      gl.positionOrDirection = f4(unit * kFarLight, gpu::kPointLight);
+      gl.color = f4(glm::clamp(l.color / divisor, dvec3(-kFloatMax), dvec3(kFloatMax)));
+      gl.attenuation = {1.0f, 0.0f, 0.0f, 0.0f};
+    }
     g.lights.push_back(gl);
   }
   for (const Material& m : scene.materials) {

@@ -28,4 +28,13 @@ inline glm::dvec3 unitVector(const glm::dvec3& v) {
   return s == glm::dvec3(0.0) ? s : glm::normalize(s);
 }
 
+// |v|: glm::length where its square neither underflows nor overflows (the same bits), else
+// computed from v scaled by its largest component.
+inline double lengthOf(const glm::dvec3& v) {
+  const double l = glm::length(v);
+  if (std::isfinite(l) && (l > 0.0 || v == glm::dvec3(0.0))) return l;
+  const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  return std::isfinite(largest) ? largest * glm::length(v / largest) : largest;
+}
+
 }  // namespace vkrt
