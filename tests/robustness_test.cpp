@@ -99,6 +99,7 @@ INSTANTIATE_TEST_SUITE_P(Stiff, ScaleInvariance,
                                            // Beyond float32's range of squares, and its extremes.
                                            Variant{"times1e20", 1e20, 0, false}, Variant{"times1em30", 1e-30, 0, false},
                                            Variant{"times1e30", 1e30, 0, false}, Variant{"times1em30InFile", 1e-30, 0, true},
+                                           Variant{"times1em150", 1e-150, 0, false}, Variant{"times1e150", 1e150, 0, false},
                                            Variant{"times1e20InFile", 1e20, 0, true},
                                            Variant{"times1e20Moved", 1e20, 1e25, false},
                                            Variant{"times1em30Moved", 1e-30, 1e-25, false},

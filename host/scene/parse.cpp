@@ -18,6 +18,7 @@
 
 #include "errors.h"
 #include "image/image_file.h"
+#include "scene/linear_map.h"
 #include "scene/number.h"
 #include "scene/unit_vector.h"
 
@@ -154,8 +155,7 @@ struct VertexWithNormal {
 // `scale 0`, whose triangles are degenerate anyway) the cofactor matrix keeps a direction.
 glm::dmat3 normalMatrix(const dmat4& m) {
   glm::dmat3 a(m);
-  double det = glm::determinant(a);
-  if (det != 0.0) return glm::transpose(glm::inverse(a));
+  if (!isSingular(a)) return glm::transpose(inverseLinear(a));
   return glm::dmat3(glm::cross(a[1], a[2]), glm::cross(a[2], a[0]), glm::cross(a[0], a[1]));
 }
 
@@ -494,13 +494,13 @@ class Parser {
       error("sphere radius must not be negative, got " + quoted(args_[3]));
       return;
     }
-    if (glm::determinant(glm::dmat3(transform_)) == 0.0) {
+    if (isSingular(glm::dmat3(transform_))) {
       error("sphere under a singular transform (a scale of 0): it has no volume and no normal");
       return;
     }
     Sphere s;
     s.worldFromObject = transform_;
-    s.objectFromWorld = glm::inverse(transform_);
+    s.objectFromWorld = inverseAffine(transform_);
     s.center = {a[0], a[1], a[2]};
     s.radius = a[3];
     s.material = currentMaterial();
