@@ -528,3 +528,16 @@ TEST(FarPointLight, IsTheDirectionalLightOfItsDirection) {
     }
   }
 }
+
+// A look-from and look-at 2e300 apart: the difference is finite (only its square overflows),
+// so the camera is valid and its basis exact; only a difference beyond double is an error
+// (parse_errors_test: CameraFromAtOverflows).
+TEST(TinyVectors, ACameraWhoseViewSquaredOverflowsIsValid) {
+  const SceneDesc s = parseScene("size 8 6\ncamera 1e300 0 0 -1e300 0 0 0 1e300 0 45\nsphere 0 0 0 1\n", "far.test");
+  EXPECT_EQ(s.camera.from.x, 1e300);
+  const GpuScene g = flatten(s);
+  EXPECT_EQ(g.push.cameraBack.x, 1.0f);
+  EXPECT_EQ(g.push.cameraBack.y, 0.0f);
+  EXPECT_GT(g.push.cameraUp.y, 0.0f);
+  EXPECT_LT(g.push.cameraRight.z, 0.0f);   // right = up x back = y x x = -z
+}
