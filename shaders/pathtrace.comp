@@ -152,7 +152,7 @@ vec3 brdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
   } else {
     float s = m.specular.w;
     vec3 r = 2.0 * nDotO * n - wo;
-    f += m.specular.rgb * ((s + 2.0) / (2.0 * kPi) * powSafe(max(dot(r, wi), 0.0), s));
+    f += m.specular.rgb * ((s + 2.0) / (2.0 * kPi) * powSafe(clamp(dot(r, wi), 0.0, 1.0), s));   // (rounding: never above 1)
   }
   return f;
 }
@@ -179,7 +179,7 @@ float scatterPdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
   } else {
     float s = m.specular.w;
     vec3 r = 2.0 * dot(n, wo) * n - wo;
-    specular = (s + 1.0) / (2.0 * kPi) * powSafe(max(dot(r, wi), 0.0), s);
+    specular = (s + 1.0) / (2.0 * kPi) * powSafe(clamp(dot(r, wi), 0.0, 1.0), s);
   }
   return (1.0 - t) * nDotI * kInvPi + t * specular;
 }

@@ -115,8 +115,9 @@ TEST(Cli, WarningsArePrintedAndTheRenderGoesOn) {
 // 2) before anything is written.
 TEST(Cli, StrictRefusesNonFinitePixels) {
   std::string dir = freshDir("cli/strict-nan");
-  writeFile(dir + "/s.test", "size 20 10\ncamera 0 0 5 0 0 0 0 1 0 45\nambient 1e308 1e308 1e308\n"
-                             "emission 1e308 0 0\nsphere 0 0 0 1\n");
+  // Each value within float32, their sum beyond it.
+  writeFile(dir + "/s.test", "size 20 10\ncamera 0 0 5 0 0 0 0 1 0 45\nambient 3e38 3e38 3e38\n"
+                             "emission 3e38 0 0\nsphere 0 0 0 1\n");
   RunResult r = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/s.test");
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("vkrt: warning: "), std::string::npos) << r.output;

@@ -54,6 +54,8 @@ std::vector<BadInput> badInputs() {
       {"CameraFromEqualsAt", "size 64 48\ncamera 1 2 3 1 2 3 0 1 0 45\n", 2, "look-from equals look-at"},
       {"CameraUpParallel", "size 64 48\ncamera 0 0 5 0 0 0 0 0 2 45\n", 2, "up vector is parallel"},
       {"CameraUpZero", "size 64 48\ncamera 0 0 5 0 0 0 0 0 0 45\n", 2, "up vector is zero"},
+      {"CameraFromAtOverflows", "size 64 48\ncamera 1e308 0 0 -1e308 0 0 0 1 0 45\n", 2,
+       "look-from and look-at are too far apart: their difference overflows double precision"},
       {"CameraFovZero", "size 64 48\ncamera 0 0 5 0 0 0 0 1 0 0\n", 2, "field of view must be in (0, 180)"},
       {"CameraFov180", "size 64 48\ncamera 0 0 5 0 0 0 0 1 0 180\n", 2, "field of view must be in (0, 180)"},
       {"NegativeRadius", kOk + "sphere 0 0 0 -1\n", 3, "sphere radius must not be negative"},
@@ -68,6 +70,8 @@ std::vector<BadInput> badInputs() {
       {"BinaryGarbage", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16), 2, "file is not text (byte 0x1A in column 1)"},
       {"NegativeShininess", kOk + "shininess -2\n", 3, "shininess must not be negative"},
       {"ZeroDirectional", kOk + "directional 0 0 0 1 1 1\n", 3, "directional light direction must not be zero"},
+      {"DirectionalUnderZeroScale", kOk + "scale 0 0 0\ndirectional 0 0 1 1 1 1\n", 4,
+       "directional light direction vanishes under the current transform (a scale of 0)"},
       {"SingularSphere", kOk + "scale 1 0 1\nsphere 0 0 0 1\n", 4, "singular transform"},
       // SPEC-PATHTRACING section 1 (kPath: lines 1-3, integrator pathtracer)
       {"MaxDepthBelowMinusOne", kPath + "maxdepth -2\n", 4,

@@ -3,17 +3,27 @@
 // degenerate primitives, and the edge cases of the shading equation, on both backends.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <limits>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "cpu/path_reference.h"
+#include "gpu/vulkan_path_renderer.h"
 #include "image/compare.h"
+#include "image/image.h"
+#include "image/pfm.h"
+#include "path_scenes.h"
 #include "scene/bvh.h"
+#include "scene/flatten.h"
 #include "scene/parse.h"
 #include "scene/ray_offset.h"
 #include "test_support.h"
 
 using namespace vkrt;
 using namespace vkrt::test;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -30,7 +40,7 @@ std::string point(const dvec3& p) { return num(p.x) + " " + num(p.y) + " " + num
 // or (viaFile) through the file's own `translate` and `scale`, which also move the point
 // light (lights follow the transform; SPEC section 7). Attenuation is constant, so the
 // picture is the same at every scale.
-std::string stiffScene(double k, dvec3 offset, bool viaFile) {
+std::string stiffScene(double k, dvec3 offset, bool viaFile, const std::string& extra = "") {
   auto at = [&](dvec3 p) { return point(viaFile ? p : p * k + offset); };
   auto len = [&](double v) { return num(viaFile ? v : v * k); };
   std::string s = "size 120 90\nmaxdepth 3\n";
@@ -44,7 +54,7 @@ std::string stiffScene(double k, dvec3 offset, bool viaFile) {
   s += "pushTransform\ntranslate " + at({2.2, 0.5, 0}) + "\nscale " + len(1) + " " + len(0.5) + " " + len(0.5) +
        "\nsphere 0 0 0 1\npopTransform\n";
   s += "diffuse 0.1 0.1 0.3\nspecular 0.8 0.8 0.8\nsphere " + at({-2, 0.6, 1}) + " " + len(0.6) + "\n";
-  return s;
+  return s + extra;
 }
 
 struct Variant {
@@ -52,6 +62,7 @@ struct Variant {
   double k;
   double offset;
   bool viaFile;
+  const char* extra = "";   // lines added at the end (in the scene's own units)
 };
 void PrintTo(const Variant& v, std::ostream* os) { *os << v.name; }
 
@@ -65,7 +76,7 @@ class ScaleInvariance : public ::testing::TestWithParam<Variant> {};
 TEST_P(ScaleInvariance, CpuPictureIsTheSame) {
   const Variant v = GetParam();
   Image base = renderText(stiffScene(1, dvec3(0), false));
-  Image moved = renderText(stiffScene(v.k, dvec3(v.offset), v.viaFile));
+  Image moved = renderText(stiffScene(v.k, dvec3(v.offset), v.viaFile, v.extra));
   EXPECT_TRUE(imagesClose(std::string("scale-cpu/") + v.name, moved, base, 2, scaleTolerance(base)));
 }
 
@@ -73,10 +84,10 @@ TEST_P(ScaleInvariance, VulkanPictureIsTheSame) {
   VKRT_REQUIRE_GPU(context);
   const Variant v = GetParam();
   Image base = renderGpu(parseScene(stiffScene(1, dvec3(0), false), "base.test"));
-  Image moved = renderGpu(parseScene(stiffScene(v.k, dvec3(v.offset), v.viaFile), "moved.test"));
+  Image moved = renderGpu(parseScene(stiffScene(v.k, dvec3(v.offset), v.viaFile, v.extra), "moved.test"));
   EXPECT_TRUE(imagesClose(std::string("scale-gpu/") + v.name, moved, base, 2, scaleTolerance(base)));
   // And the two backends agree on the moved scene too.
-  Image cpu = renderText(stiffScene(v.k, dvec3(v.offset), v.viaFile));
+  Image cpu = renderText(stiffScene(v.k, dvec3(v.offset), v.viaFile, v.extra));
   EXPECT_TRUE(imagesClose(std::string("scale-gpu-vs-cpu/") + v.name, moved, cpu, 2, scaleTolerance(base)));
 }
 
@@ -84,8 +95,45 @@ INSTANTIATE_TEST_SUITE_P(Stiff, ScaleInvariance,
                          ::testing::Values(Variant{"milli", 1e-3, 0, false}, Variant{"times1e4", 1e4, 0, false},
                                            Variant{"moved1e4", 1, 1e4, false}, Variant{"milliInFile", 1e-3, 0, true},
                                            Variant{"times1e4InFile", 1e4, 0, true},
-                                           Variant{"milliMoved", 1e-3, 10, false}),
+                                           Variant{"milliMoved", 1e-3, 10, false},
+                                           // Beyond float32's range of squares, and its extremes.
+                                           Variant{"times1e20", 1e20, 0, false}, Variant{"times1em30", 1e-30, 0, false},
+                                           Variant{"times1e30", 1e30, 0, false}, Variant{"times1em30InFile", 1e-30, 0, true},
+                                           Variant{"times1em150", 1e-150, 0, false}, Variant{"times1e150", 1e150, 0, false},
+                                           Variant{"times1e20InFile", 1e20, 0, true},
+                                           Variant{"times1e20Moved", 1e20, 1e25, false},
+                                           Variant{"times1em30Moved", 1e-30, 1e-25, false},
+                                           // One far object widens the scene's box; the picture stays.
+                                           Variant{"farSphere1e7", 1, 0, false, "sphere 1e7 0 0 1\n"},
+                                           Variant{"farSphere1e8", 1, 0, false, "sphere 1e8 0 0 1\n"},
+                                           Variant{"farSpheres1e15", 1, 0, false,
+                                                   "sphere 1e15 0 0 1\nsphere 0 -1e15 0 1\nsphere 0 0 -1e15 1\n"},
+                                           Variant{"farSphere1e7Milli", 1e-3, 0, false, "sphere 1e4 0 0 1e-3\n"}),
                          [](const auto& p) { return std::string(p.param.name); });
+
+// A sphere's radius far from 1, with its transform making up for it (`scale 1e-10` around a
+// sphere of radius 1e10, `scale 1e20` around one of 1e-20): the same sphere, the same picture.
+TEST(SphereRadius, FarFromOneAgainstItsTransformGivesTheSamePicture) {
+  const std::string base = stiffScene(1, dvec3(0), false);
+  const std::string plain = "sphere 0 1 0 1\n";
+  ASSERT_NE(base.find(plain), std::string::npos);
+  Context* context = gpuContextOrSkip();
+  const Image cpuBase = renderText(base);
+  const Image gpuBase = context ? renderGpu(parseScene(base, "base.test")) : Image{};
+  const std::pair<const char*, const char*> variants[] = {
+      {"1e10", "pushTransform\nscale 1e-10 1e-10 1e-10\nsphere 0 1e10 0 1e10\npopTransform\n"},
+      {"1e-20", "pushTransform\nscale 1e20 1e20 1e20\nsphere 0 1e-20 0 1e-20\npopTransform\n"},
+      {"1e30", "pushTransform\nscale 1e-30 1e-30 1e-30\nsphere 0 1e30 0 1e30\npopTransform\n"}};
+  for (const auto& [name, variant] : variants) {
+    std::string text = base;
+    text.replace(text.find(plain), plain.size(), variant);
+    EXPECT_TRUE(imagesClose(std::string("radius-cpu/") + name, renderText(text), cpuBase, 2, scaleTolerance(cpuBase)));
+    if (context) {
+      EXPECT_TRUE(imagesClose(std::string("radius-gpu/") + name, renderGpu(parseScene(text, "radius.test")), gpuBase,
+                              2, scaleTolerance(gpuBase)));
+    }
+  }
+}
 
 // A fan of 1000 thin triangles around the point the centre pixel looks at, filling the view,
 // emitting white: a ray that slipped between two of them would leave a black pixel. Flat and
@@ -197,4 +245,299 @@ TEST(ShadingEdgeCases, MaxDepth1000BetweenPerfectMirrorsEnds) {
   VulkanTimings timings;
   Image gpu = renderGpu(scene, 0, &timings);
   EXPECT_TRUE(imagesClose("edge-case/maxdepth1000", gpu, cpu, 2, 3));
+}
+
+namespace {
+
+// The scene with every length multiplied by k and then moved by `offset` (point lights'
+// attenuation made up for, so that the picture is the same).
+SceneDesc scaledScene(SceneDesc s, double k, const dvec3& offset) {
+  const dmat4 m = glm::scale(glm::translate(dmat4(1.0), offset), dvec3(k));
+  auto at = [&](const dvec3& p) { return p * k + offset; };
+  for (Triangle& t : s.triangles)
+    for (dvec3& p : t.p) p = at(p);
+  for (Sphere& sp : s.spheres) {
+    sp.worldFromObject = m * sp.worldFromObject;
+    sp.objectFromWorld = glm::inverse(sp.worldFromObject);
+  }
+  for (QuadLight& q : s.quadLights) {
+    q.a = at(q.a);
+    q.ab *= k;
+    q.ac *= k;
+  }
+  for (Light& l : s.lights) {
+    if (l.type == LightType::Point) l.vec = at(l.vec);
+    l.attenuation = dvec3(l.attenuation.x, l.attenuation.y / k, l.attenuation.z / k / k);
+  }
+  s.camera.from = at(s.camera.from);
+  s.camera.at = at(s.camera.at);
+  return s;
+}
+
+}  // namespace
+
+// The path tracer with next-event estimation of a quad light and of emissive triangles and
+// ellipsoids (areas, densities and pick weights in the float32 frame's units): the same
+// picture at every scale and place, on both backends. Tolerance: 30 of the 1024 pixels more
+// than 2/255 off (as between the backends: pixel centres on the diagonals see two walls' edge
+// exactly, and the secondary-ray offsets scale by whole decades, not exactly by 2^70).
+TEST(PathScaleInvariance, QuadLightAndEmittersAtEveryScale) {
+  // The box with its quad light, and the emissive ellipsoid and triangle of the other box.
+  SceneDesc base = cornellLikeBox(32, 3);
+  const SceneDesc emitters = emissiveSurfacesBox(32, 3);
+  base.materials.insert(base.materials.end(), emitters.materials.begin() + static_cast<long>(base.materials.size()),
+                        emitters.materials.end());
+  base.spheres = emitters.spheres;
+  base.triangles.push_back(emitters.triangles.back());
+  base.path.nextEvent = NextEvent::Mis;
+  PathOptions cpu;
+  cpu.seed = 17;
+  cpu.sampleCount = 4;
+  VulkanPathOptions gpu;
+  gpu.seed = 17;
+  gpu.sampleCount = 4;
+  Context* context = gpuContextOrSkip();
+  auto render = [&](const SceneDesc& s, bool onGpu) {
+    RayCounts counts;
+    RadianceImage r = onGpu ? renderVulkanPath(*context, flatten(s), gpu, &counts, nullptr)
+                            : renderPathReference(s, buildBvh(s), cpu, &counts);
+    EXPECT_EQ(counts.nonFinite, 0u);
+    Image img(r.width, r.height);
+    for (std::size_t i = 0; i < r.rgb.size(); ++i) img.rgb[i] = radianceToByte(r.rgb[i]);
+    return img;
+  };
+  for (bool onGpu : {false, true}) {
+    if (onGpu && !context) break;
+    const Image expected = render(base, onGpu);
+    long long lit = 0;
+    for (std::uint8_t b : expected.rgb) lit += b != 0;
+    ASSERT_GT(lit, 100);
+    const std::pair<const char*, SceneDesc> variants[] = {
+        {"2^70", scaledScene(base, 0x1p70, dvec3(0.0))},
+        {"1e20", scaledScene(base, 1e20, dvec3(0.0))},
+        {"1e-30", scaledScene(base, 1e-30, dvec3(0.0))},
+        {"1e-30moved", scaledScene(base, 1e-30, dvec3(3e-30, -1e-29, 2e-30))},
+        {"1e30", scaledScene(base, 1e30, dvec3(0.0))}};
+    for (const auto& [name, scene] : variants) {
+      const Image actual = render(scene, onGpu);
+      const std::string label = std::string(onGpu ? "path-scale-gpu/" : "path-scale-cpu/") + name;
+      EXPECT_TRUE(imagesClose(label, actual, expected, 2, 30));
+    }
+  }
+}
+
+// A point light's attenuation c0 + c1 r + c2 r^2 at every scale (the scene's c1 / k and
+// c2 / k^2 with it): the float32 frame's own units must not change the light.
+TEST(AttenuationScaleInvariance, SameLightAtEveryScale) {
+  const SceneDesc base = parseScene(
+      litRoom("camera 0 1 6 0 0 0 0 1 0 45\nattenuation 0.5 0.3 0.2\ndiffuse 0.7 0.7 0.7\nspecular 0.2 0.2 0.2\n"
+              "shininess 20"),
+      "attenuation.test");
+  Context* context = gpuContextOrSkip();
+  const Image cpuBase = renderScene(base);
+  const Image gpuBase = context ? renderGpu(base) : Image{};
+  for (double k : {1e20, 0x1p-90, 1e-30, 1e30}) {
+    const SceneDesc scaled = scaledScene(base, k, dvec3(0.5 * k));
+    EXPECT_TRUE(imagesClose("attenuation-cpu/" + num(k), renderScene(scaled), cpuBase, 2, 3));
+    if (context) {
+      EXPECT_TRUE(imagesClose("attenuation-gpu/" + num(k), renderGpu(scaled), gpuBase, 2, 3));
+    }
+  }
+}
+
+// Directions stated with tiny or vast vectors (a rotation axis, the camera's up vector and
+// its look-at point, a directional light, vertex normals) mean the same direction: the same
+// picture as with vectors of ordinary length, on both backends. A vector is multiplied by
+// each factor; its length's square underflows or overflows double precision.
+TEST(TinyVectors, DirectionsOfAnyLengthGiveTheSamePicture) {
+  auto scene = [](double f) {
+    auto v = [f](double x, double y, double z) { return num(x * f) + " " + num(y * f) + " " + num(z * f); };
+    // The camera at the origin (so that a look-at point 1e-200 away is representable), the
+    // rest moved in front of it.
+    std::string s = "size 48 36\ncamera 0 0 0 " + v(0, -1, -6) + " " + v(0, 1, 0) + " 45\ntranslate 0 -1 -6\n";
+    s += "directional " + v(1, 1, 2) + " 0.6 0.6 0.6\npoint 0 3 3 0.5 0.5 0.5\n";
+    s += "diffuse 0.5 0.4 0.3\nspecular 0.3 0.3 0.3\nshininess 20\n";
+    s += "pushTransform\nrotate " + v(1, 2, 3) + " 40\nscale 1.5 0.6 1\nsphere 0 0 0 1\npopTransform\n";
+    s += "vertexnormal -3 -1 -3 " + v(0, 1, 0.3) + "\nvertexnormal 3 -1 -3 " + v(0.2, 1, 0) +
+         "\nvertexnormal 0 -1 3 " + v(-0.2, 1, 0) + "\ntrinormal 0 1 2\n";
+    return s;
+  };
+  const SceneDesc base = parseScene(scene(1.0), "base.test");
+  Context* context = gpuContextOrSkip();
+  const Image cpuBase = renderScene(base);
+  long long lit = 0;
+  for (std::uint8_t b : cpuBase.rgb) lit += b != 0;
+  ASSERT_GT(lit, 1000);
+  const Image gpuBase = context ? renderGpu(base) : Image{};
+  for (double f : {1e-200, 1e-160, 1e200, 1e300}) {
+    const SceneDesc s = parseScene(scene(f), "tiny.test");
+    EXPECT_TRUE(imagesClose("tiny-vectors-cpu/" + num(f), renderScene(s), cpuBase, 1, 3));
+    if (context) {
+      EXPECT_TRUE(imagesClose("tiny-vectors-gpu/" + num(f), renderGpu(s), gpuBase, 1, 3));
+    }
+  }
+}
+
+// A triangle far smaller than anything it is near (1e-20 to 1e-100 across, hidden at the
+// centre of a unit sphere, in three planes through it) changes no pixel: rays that pass far from it never
+// "hit" it through rounding (the CPU reference computes edge functions from the edges).
+TEST(TinyVectors, ATinyTriangleInsideASphereChangesNothing) {
+  const std::string base = "size 80 60\ncamera 0 0 5 0 0 0 0 1 0 45\npoint 3 3 3 1 1 1\ndirectional 0 0 1 .3 .3 .3\n"
+                           "diffuse 0.5 0.5 0.5\nspecular .3 .3 .3\nshininess 20\nsphere 0 0 0 1\n";
+  Context* context = gpuContextOrSkip();
+  const Image cpuBase = renderText(base);
+  const Image gpuBase = context ? renderGpu(parseScene(base, "base.test")) : Image{};
+  for (double size : {1e-20, 1e-9, 1e-100})
+    for (const char* turn : {"", "rotate 0 1 0 90\n", "rotate 1 2 3 30\n"}) {   // about the centre
+      const std::string axis = turn[0] == 0 ? "xy" : turn[7] == '0' ? "yz" : "tilted";
+      std::string text = base + turn + "vertex 0 0 0\nvertex " + num(size) + " 0 0\nvertex 0 " + num(size) +
+                         " 0\ntri 0 1 2\n";
+      EXPECT_TRUE(imagesClose("tiny-triangle-cpu/" + num(size) + axis, renderText(text), cpuBase, 0, 0));
+      if (context) {
+        EXPECT_TRUE(imagesClose("tiny-triangle-gpu/" + num(size) + axis, renderGpu(parseScene(text, "tiny.test")),
+                                gpuBase, 0, 0));
+      }
+    }
+}
+
+// ---- What reaches a file is finite ------------------------------------------------------------
+
+namespace {
+
+// Every channel of the PFM at `path` is finite; returns the largest in absolute value.
+float largestFiniteChannel(const std::string& path) {
+  const RadianceImage img = readPfm(path);
+  float largest = 0.0f;
+  for (float c : img.rgb) {
+    EXPECT_TRUE(std::isfinite(c)) << path;
+    if (std::isfinite(c)) largest = std::max(largest, std::abs(c));
+  }
+  return largest;
+}
+
+std::vector<std::string> backendsHere() {
+  std::vector<std::string> b = {"cpu"};
+  if (gpuContextOrSkip()) b.push_back("vulkan");
+  return b;
+}
+
+}  // namespace
+
+// A colour, light or radiance beyond float32 (the Vulkan backend's precision) renders as the
+// largest float, with a warning at its line (an error with --strict), on both backends; the
+// PFM holds no infinity.
+TEST(FiniteOutput, ValuesBeyondFloatAreClampedWithAWarningAtTheirLine) {
+  const std::string dir = freshDir("finite/beyond-float");
+  const std::pair<std::string, std::string> cases[] = {
+      {"emission 1e39 0 0", "'emission' argument 1 '1e39'"},
+      {"ambient 0 -1e300 0", "'ambient' argument 2 '-1e300'"},
+      {"point 0 0 5 1e300 1 1", "'point' argument 4 '1e300'"},
+      {"directional 0 0 1 1 1 1e39", "'directional' argument 6 '1e39'"}};
+  for (const std::string& backend : backendsHere())
+    for (const auto& [line, quoted] : cases) {
+      writeFile(dir + "/s.test", "size 20 10\ncamera 0 0 5 0 0 0 0 1 0 45\n" + line + "\ndiffuse 0.5 0.5 0.5\n"
+                                 "sphere 0 0 0 1\n");
+      const std::string message = quoted + " is beyond the largest float32 value (3.4028235e38)";
+      RunResult r = runVkrt("--backend " + backend + " -o " + dir + "/o.pfm " + dir + "/s.test");
+      EXPECT_EQ(r.exitCode, 0) << r.output;
+      EXPECT_NE(r.output.find(dir + "/s.test:3: warning: " + message), std::string::npos) << r.output;
+      EXPECT_EQ(r.output.find("NaN or infinite"), std::string::npos) << r.output;
+      if (fileExists(dir + "/o.pfm")) {
+        EXPECT_GT(largestFiniteChannel(dir + "/o.pfm"), 0.1f) << line;
+      }
+      fs::remove(dir + "/o.pfm");
+      RunResult strict = runVkrt("--strict --backend " + backend + " -o " + dir + "/o.pfm " + dir + "/s.test");
+      EXPECT_EQ(strict.exitCode, 2) << strict.output;
+      EXPECT_NE(strict.output.find(dir + "/s.test:3: error: " + message), std::string::npos) << strict.output;
+      EXPECT_FALSE(fileExists(dir + "/o.pfm"));
+    }
+}
+
+// Values within float32 whose sum is beyond it: both backends count the pixels (a warning; an
+// error with --strict) and write the largest float, never an infinity.
+TEST(FiniteOutput, SumsBeyondFloatAreCountedAndWrittenFinite) {
+  const std::string dir = freshDir("finite/sums");
+  writeFile(dir + "/s.test", "size 20 10\ncamera 0 0 5 0 0 0 0 1 0 45\nambient 3e38 3e38 3e38\n"
+                             "emission 3e38 0 0\nsphere 0 0 0 1\n");
+  for (const std::string& backend : backendsHere()) {
+    RunResult r = runVkrt("--backend " + backend + " -o " + dir + "/o.pfm " + dir + "/s.test");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("vkrt: warning: 16 pixels had a NaN or infinite colour"), std::string::npos)
+        << backend << ": " << r.output;
+    EXPECT_EQ(largestFiniteChannel(dir + "/o.pfm"), std::numeric_limits<float>::max()) << backend;
+    RunResult strict = runVkrt("--strict --backend " + backend + " -o " + dir + "/s.pfm " + dir + "/s.test");
+    EXPECT_EQ(strict.exitCode, 2) << strict.output;
+  }
+}
+
+// The path integrators with BRDF sampling at accepted extremes (Phong shininess 1e20, GGX
+// roughness 1e30): clamped, with a warning at the line, to values that render finite on both
+// backends and give the same picture as those values given directly.
+TEST(FiniteOutput, ExtremeBrdfParametersRenderFinite) {
+  auto scene = [](const std::string& material, const char* nee) {
+    return "size 24 18\nintegrator pathtracer\nspp 8\nmaxdepth 3\nimportancesampling brdf\nnexteventestimation " +
+           std::string(nee) + "\ncamera 0 1 5 0 0 0 0 1 0 45\nquadLight -1 3 -1 0 0 2 2 0 0 5 5 5\n"
+           "diffuse 0.3 0.3 0.3\nspecular 0.5 0.5 0.5\n" + material + "\nsphere 0 0 0 1\n"
+           "vertex -5 -1 -5\nvertex 5 -1 -5\nvertex 5 -1 5\nvertex -5 -1 5\ntri 0 3 2\ntri 0 2 1\n";
+  };
+  Context* context = gpuContextOrSkip();
+  const std::pair<std::string, std::string> cases[] = {{"shininess 1e20", "shininess 1e9"},
+                                                       {"shininess 1e300", "shininess 1e9"},
+                                                       {"brdf ggx\nroughness 1e30", "brdf ggx\nroughness 1e4"}};
+  for (const auto& [extreme, limit] : cases)
+    for (const char* nee : {"off", "mis"}) {
+      ParsedScene parsed = parseSceneWithWarnings(scene(extreme, nee), "extreme.test");
+      ASSERT_FALSE(parsed.warnings.empty()) << extreme;
+      EXPECT_NE(parsed.warnings.front().message.find("clamped to 1e"), std::string::npos)
+          << parsed.warnings.front().message;
+      const SceneDesc& s = parsed.scene;
+      const SceneDesc same = parseScene(scene(limit, nee), "limit.test");
+      PathOptions cpu;
+      cpu.sampleCount = 8;
+      RayCounts counts;
+      const RadianceImage onCpu = renderPathReference(s, buildBvh(s), cpu, &counts);
+      EXPECT_EQ(counts.nonFinite, 0u) << extreme << " " << nee;
+      const RadianceImage cpuSame = renderPathReference(same, buildBvh(same), cpu, nullptr);
+      EXPECT_EQ(onCpu.rgb, cpuSame.rgb) << extreme << " " << nee;
+      if (!context) continue;
+      VulkanPathOptions gpu;
+      gpu.sampleCount = 8;
+      RayCounts gpuCounts;
+      renderVulkanPath(*context, flatten(s), gpu, &gpuCounts, nullptr);
+      EXPECT_EQ(gpuCounts.nonFinite, 0u) << extreme << " " << nee;
+    }
+}
+
+// A point light (constant attenuation) so far away that its rays are parallel: the picture of
+// a directional light along the same direction, on both backends, however far (its distance
+// squared beyond float32, or beyond double).
+TEST(FarPointLight, IsTheDirectionalLightOfItsDirection) {
+  const std::string rest = "diffuse 0.5 0.4 0.3\nspecular 0.3 0.3 0.3\nshininess 20\nsphere 0 0 0 1\n"
+                           "sphere 1.5 0.3 0.5 0.4\nvertex -4 -1 -4\nvertex 4 -1 -4\nvertex 4 -1 4\nvertex -4 -1 4\n"
+                           "tri 0 3 2\ntri 0 2 1\n";
+  const std::string camera = "size 48 36\ncamera 0 1 6 0 0 0 0 1 0 45\n";
+  const std::string directional = camera + "directional 1 2 3 0.9 0.9 0.9\n" + rest;
+  Context* context = gpuContextOrSkip();
+  const Image cpuBase = renderText(directional);
+  const Image gpuBase = context ? renderGpu(parseScene(directional, "directional.test")) : Image{};
+  for (double d : {1e25, 1e100, 1e300}) {
+    const std::string text = camera + "point " + num(d) + " " + num(2 * d) + " " + num(3 * d) + " 0.9 0.9 0.9\n" + rest;
+    EXPECT_TRUE(imagesClose("far-light-cpu/" + num(d), renderText(text), cpuBase, 1, 3));
+    if (context) {
+      EXPECT_TRUE(imagesClose("far-light-gpu/" + num(d), renderGpu(parseScene(text, "far.test")), gpuBase, 1, 3));
+    }
+  }
+}
+
+// A look-from and look-at 2e300 apart: the difference is finite (only its square overflows),
+// so the camera is valid and its basis exact; only a difference beyond double is an error
+// (parse_errors_test: CameraFromAtOverflows).
+TEST(TinyVectors, ACameraWhoseViewSquaredOverflowsIsValid) {
+  const SceneDesc s = parseScene("size 8 6\ncamera 1e300 0 0 -1e300 0 0 0 1e300 0 45\nsphere 0 0 0 1\n", "far.test");
+  EXPECT_EQ(s.camera.from.x, 1e300);
+  const GpuScene g = flatten(s);
+  EXPECT_EQ(g.push.cameraBack.x, 1.0f);
+  EXPECT_EQ(g.push.cameraBack.y, 0.0f);
+  EXPECT_GT(g.push.cameraUp.y, 0.0f);
+  EXPECT_LT(g.push.cameraRight.z, 0.0f);   // right = up x back = y x x = -z
 }

@@ -62,7 +62,7 @@ dvec3 evalBrdf(const Material& m, const dvec3& n, const dvec3& wi, const dvec3& 
   if (!(nDotI > 0.0 && nDotO > 0.0)) return dvec3(0.0);
   dvec3 f = m.diffuse / kPi;
   if (m.brdf == BrdfModel::Phong) {
-    double rDotI = std::max(glm::dot(reflectAbout(n, wo), wi), 0.0);
+    double rDotI = std::clamp(glm::dot(reflectAbout(n, wo), wi), 0.0, 1.0);   // (rounding: never above 1)
     f += m.specular * ((m.shininess + 2.0) / (2.0 * kPi) * std::pow(rDotI, m.shininess));
   } else {
     dvec3 h = glm::normalize(wi + wo);
@@ -91,7 +91,7 @@ double directionPdf(Sampling sampling, const Material& m, const dvec3& n, const 
   const double t = specularLobeProbability(m);
   double specular;
   if (m.brdf == BrdfModel::Phong) {
-    double rDotI = std::max(glm::dot(reflectAbout(n, wo), wi), 0.0);
+    double rDotI = std::clamp(glm::dot(reflectAbout(n, wo), wi), 0.0, 1.0);   // (rounding: never above 1)
     specular = (m.shininess + 1.0) / (2.0 * kPi) * std::pow(rDotI, m.shininess);
   } else {
     dvec3 h = glm::normalize(wi + wo);

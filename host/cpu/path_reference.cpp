@@ -15,6 +15,7 @@
 #include "cpu/scene_query.h"
 #include "gpu_types.h"
 #include "scene/emitters.h"
+#include "scene/unit_vector.h"
 
 namespace vkrt {
 namespace {
@@ -228,7 +229,7 @@ class PathIntegrator {
       double distance = kInfinity, divisor = 1.0;
       if (light.type == LightType::Point) {
         dvec3 d = light.vec - v.p;
-        distance = glm::length(d);
+        distance = lengthOf(d);   // (a light 1e300 away: its square overflows)
         if (distance == 0.0) continue;
         toLight = d / distance;
         divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;

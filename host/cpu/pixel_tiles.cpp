@@ -17,9 +17,8 @@ constexpr int kTile = 16;
 
 float toFloat(double c) {
   constexpr double kMax = std::numeric_limits<float>::max();
-  if (c > kMax) return std::numeric_limits<float>::infinity();
-  if (c < -kMax) return -std::numeric_limits<float>::infinity();
-  return static_cast<float>(c);
+  if (std::isnan(c)) return 0.0f;
+  return static_cast<float>(std::clamp(c, -kMax, kMax));
 }
 
 void shadeTiles(const PixelRect& region, int threads, std::uint64_t unitsPerPixel,
@@ -46,7 +45,9 @@ void shadeTiles(const PixelRect& region, int threads, std::uint64_t unitsPerPixe
           const dvec3 c = shade(x, y, local);
           float* px = image.pixel(x - region.x0, y - region.y0);
           for (int k = 0; k < 3; ++k) px[k] = toFloat(c[k]);
-          if (!std::isfinite(c.x + c.y + c.z)) ++local.nonFinite;
+          // As the shader counts: a channel NaN or beyond float32 (which it computes in).
+          constexpr double kMax = std::numeric_limits<float>::max();
+          if (!(std::abs(c.x) <= kMax && std::abs(c.y) <= kMax && std::abs(c.z) <= kMax)) ++local.nonFinite;
         }
       std::lock_guard lock(mutex);
       done += static_cast<std::uint64_t>(x1 - x0) * (y1 - y0) * unitsPerPixel;

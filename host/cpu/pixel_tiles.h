@@ -13,7 +13,8 @@
 
 namespace vkrt {
 
-// The nearest float; beyond float's range, +-infinity (a plain cast would be undefined there).
+// The nearest float; beyond float's range, the largest float of that sign, and 0 for NaN (a
+// plain cast would be undefined there): an image holds no NaN or infinity.
 float toFloat(double c);
 
 // Calls shade(x, y, counts) for every pixel (x, y) of `region` (full-image coordinates) on

@@ -8,6 +8,7 @@
 
 #include "cpu/pixel_tiles.h"
 #include "cpu/scene_query.h"
+#include "scene/unit_vector.h"
 
 namespace vkrt {
 namespace {
@@ -33,7 +34,7 @@ class Tracer {
       double distance = kInf, divisor = 1.0;
       if (light.type == LightType::Point) {
         dvec3 v = light.vec - p;
-        distance = glm::length(v);
+        distance = lengthOf(v);   // (a light 1e300 away: its square overflows)
         if (distance == 0.0) continue;
         toLight = v / distance;
         divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;

@@ -5,26 +5,42 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/unit_vector.h"
+
 namespace vkrt {
 namespace {
 
-// Plane intersection followed by an inside test on the three edge functions.
+// cross(a - q, b - q), the edge function of edge a -> b at q, computed as cross(a - q, b - a)
+// (or its mirror for b -> a): from the edge itself, not from two long vectors toward q whose
+// cross product cancels (a tiny triangle seen from afar would otherwise be "hit" by rounding
+// noise). The two triangles that share an edge compute it from the same numbers, with
+// opposite signs.
+dvec3 edgeFunction(const dvec3& a, const dvec3& b, const dvec3& q) {
+  const bool ordered = a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  return ordered ? glm::cross(a - q, b - a) : -glm::cross(b - q, a - b);
+}
+
+// Plane intersection followed by an inside test on the three edge functions. The normal is
+// scaled by a power of two (exact) so that its square neither underflows nor overflows.
 bool hitTriangle(const Triangle& tri, const Ray& ray, double tMin, double tMax, Hit& hit) {
   dvec3 e1 = tri.p[1] - tri.p[0], e2 = tri.p[2] - tri.p[0];
-  dvec3 n = glm::cross(e1, e2);
+  dvec3 n = scaledForSquares(glm::cross(e1, e2));
   double nn = glm::dot(n, n);
   double denom = glm::dot(n, ray.dir);
   if (nn == 0.0 || denom == 0.0) return false;   // degenerate, or ray in the plane
   double t = glm::dot(n, tri.p[0] - ray.origin) / denom;
   if (!(t > tMin && t < tMax)) return false;
   dvec3 q = ray.origin + t * ray.dir;
-  double w0 = glm::dot(glm::cross(tri.p[1] - q, tri.p[2] - q), n);
-  double w1 = glm::dot(glm::cross(tri.p[2] - q, tri.p[0] - q), n);
-  double w2 = glm::dot(glm::cross(tri.p[0] - q, tri.p[1] - q), n);
+  double w0 = glm::dot(edgeFunction(tri.p[1], tri.p[2], q), n);
+  double w1 = glm::dot(edgeFunction(tri.p[2], tri.p[0], q), n);
+  double w2 = glm::dot(edgeFunction(tri.p[0], tri.p[1], q), n);
   if (w0 < 0.0 || w1 < 0.0 || w2 < 0.0) return false;
+  // w0 + w1 + w2 = |cross(e1, e2)| |n|: the weights over their sum, as found.
+  const double sum = w0 + w1 + w2;
+  if (!(sum > 0.0)) return false;
   hit.t = t;
-  hit.b1 = w1 / nn;
-  hit.b2 = w2 / nn;
+  hit.b1 = w1 / sum;
+  hit.b2 = w2 / sum;
   return true;
 }
 
@@ -66,8 +82,8 @@ bool hitBox(const gpu::GpuBvhNode& n, const Ray& ray, const dvec3& invDir, doubl
 
 SceneQuery::SceneQuery(const SceneDesc& scene, const Bvh& bvh) : scene_(scene), bvh_(bvh) {
   const Camera& c = scene.camera;
-  w_ = glm::normalize(c.from - c.at);
-  u_ = glm::normalize(glm::cross(c.up, w_));
+  w_ = unitVector(c.from - c.at);
+  u_ = unitVector(glm::cross(scaledForSquares(c.up), w_));
   v_ = glm::cross(w_, u_);
   halfW_ = scene.width / 2.0;
   halfH_ = scene.height / 2.0;
@@ -121,7 +137,7 @@ std::uint32_t SceneQuery::surfaceAt(const Hit& hit, const dvec3& p, dvec3& norma
   if (t.smooth)
     normal = glm::normalize((1.0 - hit.b1 - hit.b2) * t.n[0] + hit.b1 * t.n[1] + hit.b2 * t.n[2]);
   else
-    normal = glm::normalize(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
+    normal = unitVector(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
   return t.material;
 }
 

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <thread>
 
 #include "errors.h"
@@ -214,6 +215,14 @@ void checkImageFitsInMemory(const SceneDesc& scene, int width, int height) {
                       " MB available");
 }
 
+// What a file receives is finite: a NaN channel (counted, and warned of) becomes 0 and an
+// infinite one the largest float of its sign, as the 8-bit encoding reads them.
+void keepFinite(RadianceImage& image) {
+  constexpr float kMax = std::numeric_limits<float>::max();
+  for (float& c : image.rgb)
+    if (!std::isfinite(c)) c = std::isnan(c) ? 0.0f : std::copysign(kMax, c);
+}
+
 // --strict: pixels whose colour was NaN or infinite (the scene's extreme values) are an
 // error, reported before anything is written.
 void checkFinite(const RenderRequest& request, const SceneDesc& scene, const RenderReport& report) {
@@ -358,6 +367,7 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
   checkFinite(request, scene, report);
+  keepFinite(image);
   if (request.crop) image.text.emplace_back(kCropKeyword, formatCropRecord({*request.crop, scene.width, scene.height}));
   // A path integrator's image says which samples it is the mean of, so that batches rendered
   // apart (other seeds) can be averaged by `vkrt merge`. The Whitted model's is exact: none.

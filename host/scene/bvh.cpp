@@ -13,6 +13,9 @@
 #include <limits>
 #include <thread>
 
+#include "scene/linear_map.h"
+#include "scene/unit_vector.h"
+
 namespace vkrt {
 namespace {
 
@@ -420,20 +423,19 @@ void sphereBounds(const Sphere& s, dvec3& lo, dvec3& hi) {
 }
 
 static bool neverHit(const Triangle& t) {
-  dvec3 n = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
-  return !(glm::dot(n, n) > 0.0) || !std::isfinite(glm::dot(n, n));
+  // (scaled by a power of two first: a triangle 1e-150 or 1e150 across is no degenerate one)
+  return scaledForSquares(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])) == dvec3(0.0);
 }
 
 static bool neverHit(const Sphere& s) {
-  double det = glm::determinant(s.worldFromObject);
   const dmat4& inv = s.objectFromWorld;
   bool finite = true;
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(inv[c][r]);
-  return !(s.radius > 0.0) || !(det != 0.0) || !finite;
+  return !(s.radius > 0.0) || isSingular(glm::dmat3(s.worldFromObject)) || !finite;
 }
 
-Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads) {
+Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads, double scale) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<BuildPrim> prims(scene.triangles.size() + scene.spheres.size());
   const std::size_t triangles = scene.triangles.size();
@@ -446,8 +448,8 @@ Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads) {
           prims[i].ref = kDropped;
           continue;
         }
-        prims[i] = makePrim(glm::min(t.p[0], glm::min(t.p[1], t.p[2])) - origin,
-                            glm::max(t.p[0], glm::max(t.p[1], t.p[2])) - origin, static_cast<std::uint32_t>(i));
+        prims[i] = makePrim((glm::min(t.p[0], glm::min(t.p[1], t.p[2])) - origin) * scale,
+                            (glm::max(t.p[0], glm::max(t.p[1], t.p[2])) - origin) * scale, static_cast<std::uint32_t>(i));
       } else {
         dvec3 lo, hi;
         if (neverHit(scene.spheres[i - triangles])) {
@@ -455,7 +457,8 @@ Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads) {
           continue;
         }
         sphereBounds(scene.spheres[i - triangles], lo, hi);
-        prims[i] = makePrim(lo - origin, hi - origin, static_cast<std::uint32_t>(i - triangles) | gpu::kPrimSphereBit);
+        prims[i] = makePrim((lo - origin) * scale, (hi - origin) * scale,
+                            static_cast<std::uint32_t>(i - triangles) | gpu::kPrimSphereBit);
       }
     }
   };

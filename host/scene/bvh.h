@@ -27,9 +27,9 @@ void sphereBounds(const Sphere& s, dvec3& lo, dvec3& hi);
 
 // Builds the hierarchy over the primitives that can be hit (degenerate ones are left out).
 // An empty scene gives one empty leaf whose box contains nothing.
-// The boxes are of the geometry moved by -origin (flatten() builds for scene-centred
-// coordinates; the CPU reference for world coordinates). Builds on up to `threads` threads
-// (0: one per core); the tree is the same for every count.
-Bvh buildBvh(const SceneDesc& scene, const dvec3& origin = dvec3(0.0), int threads = 0);
+// The boxes are of the geometry moved by -origin, then multiplied by `scale` (flatten() builds
+// for its float32 frame; the CPU reference for world coordinates). Builds on up to `threads`
+// threads (0: one per core); the tree is the same for every count.
+Bvh buildBvh(const SceneDesc& scene, const dvec3& origin = dvec3(0.0), int threads = 0, double scale = 1.0);
 
 }  // namespace vkrt

@@ -1,8 +1,11 @@
 // SceneDesc -> GpuScene. The only place where double-precision scene data becomes float32, and
-// where the world is moved so that the centre of the scene's geometry sits at the origin (in
-// double, before rounding): float32 then sees the same small numbers wherever the scene is
-// placed, and the geometry keeps the most precision (centring on the camera instead cost
-// scene7 7 more pixels off the course's reference).
+// where the world is moved into the float32 frame (ray_offset.h, floatFrameOrigin and
+// floatFrameScale; in double, before rounding): the origin at the centre of the scene's
+// geometry (or at the camera, when a far object would put that centre far from what the
+// camera sees nearby), and lengths multiplied by a power of two that brings a vast or tiny
+// scene's size near 1. Float32 then sees the same numbers wherever the scene is and however
+// large it is; a power of two changes no rounding, so a scene of ordinary size (scale 1) and
+// the same scene scaled by 2^k give the same bits.
 #include "scene/flatten.h"
 
 #include <algorithm>
@@ -14,6 +17,7 @@
 
 #include "scene/emitters.h"
 #include "scene/ray_offset.h"
+#include "scene/unit_vector.h"
 
 namespace vkrt {
 namespace {
@@ -21,20 +25,32 @@ namespace {
 // Triangles are converted on two threads from this many on.
 constexpr std::size_t kParallelMinTriangles = 50000;
 
+constexpr double kFloatMax = std::numeric_limits<float>::max();
+// A point light farther than this from the frame's origin (max norm, frame units) is moved
+// to this distance (lightsFar, below).
+constexpr double kFarLight = 0x1p40;
+
+// The power of two that brings a sphere's radius into [1, 2) when it lies outside
+// [2^-8, 2^8], else 1 (the radius as it is).
+double radiusNormaliser(double radius) {
+  if (!(radius > 0.0) || !std::isfinite(radius) || (radius >= 1.0 / 256.0 && radius <= 256.0)) return 1.0;
+  return std::ldexp(1.0, -std::ilogb(radius));
+}
+
 gpu::vec4 f4(const dvec3& v, float w = 0.0f) {
   return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), w};
 }
 
 // The camera basis in double, then float: a per-pixel step right and up, and the back vector.
-gpu::GpuPushConstants cameraConstants(const SceneDesc& scene, const dvec3& origin) {
+gpu::GpuPushConstants cameraConstants(const SceneDesc& scene, const dvec3& origin, double scale) {
   const Camera& c = scene.camera;
-  dvec3 w = glm::normalize(c.from - c.at);
-  dvec3 u = glm::normalize(glm::cross(c.up, w));
+  dvec3 w = unitVector(c.from - c.at);
+  dvec3 u = unitVector(glm::cross(scaledForSquares(c.up), w));
   dvec3 v = glm::cross(w, u);
   double tanY = std::tan(glm::radians(c.fovyDegrees) / 2.0);
   double tanX = tanY * scene.width / scene.height;
   gpu::GpuPushConstants p{};
-  p.cameraOrigin = f4(c.from - origin);
+  p.cameraOrigin = f4((c.from - origin) * scale);
   p.cameraRight = f4(u * (tanX / (scene.width / 2.0)));
   p.cameraUp = f4(v * (tanY / (scene.height / 2.0)));
   p.cameraBack = f4(w);
@@ -87,9 +103,9 @@ void cutoffConstants(const SceneDesc& scene, gpu::GpuPushConstants& p) {
 }
 
 // The settings of SPEC-PATHTRACING in the shader's terms, and the camera.
-gpu::GpuPathParams pathParams(const SceneDesc& scene, const dvec3& origin) {
+gpu::GpuPathParams pathParams(const SceneDesc& scene, const dvec3& origin, double scale) {
   const PathSettings& s = scene.path;
-  const gpu::GpuPushConstants camera = cameraConstants(scene, origin);
+  const gpu::GpuPushConstants camera = cameraConstants(scene, origin, scale);
   gpu::GpuPathParams p{};
   p.cameraOrigin = camera.cameraOrigin;
   p.cameraRight = camera.cameraRight;
@@ -119,16 +135,16 @@ gpu::GpuPathParams pathParams(const SceneDesc& scene, const dvec3& origin) {
 
 // Triangles [begin, end) into their GPU layout at the same indices; the normals of smooth
 // ones are appended to `normals`, their normalsIndex counted from its size.
-void convertTriangles(const SceneDesc& scene, const dvec3& origin, const PrimitiveOffsets& offsets,
+void convertTriangles(const SceneDesc& scene, const dvec3& origin, double scale, const PrimitiveOffsets& offsets,
                       std::size_t begin, std::size_t end, std::vector<gpu::GpuTriangle>& out,
                       std::vector<gpu::GpuTriangleNormals>& normals) {
   for (std::size_t i = begin; i < end; ++i) {
     const Triangle& t = scene.triangles[i];
     gpu::GpuTriangle gt{};
-    gt.rayOffset = static_cast<float>(offsets.triangles[i]);
+    gt.rayOffset = static_cast<float>(offsets.triangles[i] * scale);
     // The plane, in double: the shader measures t from it, so that a vast triangle's float32
     // corners do not make its hits less exact than the ray's own origin allows.
-    const dvec3 a = t.p[0] - origin, b = t.p[1] - origin, c = t.p[2] - origin;
+    const dvec3 a = (t.p[0] - origin) * scale, b = (t.p[1] - origin) * scale, c = (t.p[2] - origin) * scale;
     dvec3 normal = glm::cross(b - a, c - a);
     const double area2 = glm::length(normal);
     normal = area2 > 0.0 && std::isfinite(area2) ? normal / area2 : dvec3(0.0);
@@ -155,15 +171,18 @@ GpuScene flatten(const SceneDesc& scene) {
   g.height = static_cast<std::uint32_t>(scene.height);
   g.maxDepth = static_cast<std::uint32_t>(scene.maxDepth);
   const dvec3 origin = floatFrameOrigin(scene);
+  const double scale = floatFrameScale(scene, origin);
   g.origin = origin;
-  g.push = cameraConstants(scene, origin);
+  g.scale = scale;
+  g.push = cameraConstants(scene, origin, scale);
   cutoffConstants(scene, g.push);
   // The ray offsets and the BVH do not depend on each other: the offsets on another thread.
   std::future<PrimitiveOffsets> offsetsLater =
       std::async(std::launch::async, [&scene] { return primitiveOffsets(scene); });
-  g.bvh = buildBvh(scene, origin);
+  g.bvh = buildBvh(scene, origin, 0, scale);
   const PrimitiveOffsets offsets = offsetsLater.get();
-  const dmat4 fromOrigin = glm::translate(dmat4(1.0), origin);
+  // From the float32 frame to the world.
+  const dmat4 fromFrame = glm::scale(glm::translate(dmat4(1.0), origin), dvec3(1.0 / scale));
   // The triangles in two halves, the second on another thread when there are many; each half
   // numbers its smooth triangles' normals from 0, and the second's are moved after the first's.
   const std::size_t nt = scene.triangles.size();
@@ -171,8 +190,8 @@ GpuScene flatten(const SceneDesc& scene) {
   std::vector<gpu::GpuTriangleNormals> secondNormals;
   const std::size_t half = nt >= kParallelMinTriangles ? nt / 2 : nt;
   auto secondHalf = std::async(nt >= kParallelMinTriangles ? std::launch::async : std::launch::deferred,
-                               [&] { convertTriangles(scene, origin, offsets, half, nt, g.triangles, secondNormals); });
-  convertTriangles(scene, origin, offsets, 0, half, g.triangles, g.triangleNormals);
+                               [&] { convertTriangles(scene, origin, scale, offsets, half, nt, g.triangles, secondNormals); });
+  convertTriangles(scene, origin, scale, offsets, 0, half, g.triangles, g.triangleNormals);
   secondHalf.get();
   if (!secondNormals.empty()) {
     const auto shift = static_cast<gpu::uint>(g.triangleNormals.size());
@@ -184,20 +203,40 @@ GpuScene flatten(const SceneDesc& scene) {
   for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
     const Sphere& s = scene.spheres[i];
     gpu::GpuSphere gs{};
-    gs.rayOffset = static_cast<float>(offsets.spheres[i]);
-    // From the scene-centred frame to coordinates centred on the sphere, in double: a
-    // sphere far from the world's origin keeps float32's precision.
-    gs.objectFromWorld = gpu::mat4(glm::translate(dmat4(1.0), -s.center) * s.objectFromWorld * fromOrigin);
-    gs.centerRadius = f4(dvec3(0.0), static_cast<float>(s.radius));
+    gs.rayOffset = static_cast<float>(offsets.spheres[i] * scale);
+    // From the float32 frame to coordinates centred on the sphere, in double: a sphere far
+    // from the world's origin keeps float32's precision. A radius far from 1 is brought into
+    // [1, 2) by a power of two (exact), so that its square neither overflows nor underflows.
+    const double radiusScale = radiusNormaliser(s.radius);
+    gs.objectFromWorld = gpu::mat4(glm::scale(dmat4(1.0), dvec3(radiusScale)) * glm::translate(dmat4(1.0), -s.center) *
+                                   s.objectFromWorld * fromFrame);
+    gs.centerRadius = f4(dvec3(0.0), static_cast<float>(s.radius * radiusScale));
     gs.materialIndex = s.material;
     g.spheres.push_back(gs);
   }
   for (const Light& l : scene.lights) {
     gpu::GpuLight gl{};
     bool point = l.type == LightType::Point;
-    gl.positionOrDirection = point ? f4(l.vec - origin, gpu::kPointLight) : f4(l.vec, 0.0f);
+    gl.positionOrDirection = point ? f4((l.vec - origin) * scale, gpu::kPointLight) : f4(l.vec, 0.0f);
     gl.color = f4(l.color);
-    gl.attenuation = f4(l.attenuation);
+    // The divisor c0 + c1 r + c2 r^2 with r in the frame's units; a coefficient beyond float
+    // is the largest float (the light is then as good as 0 wherever r is not).
+    const dvec3& c = l.attenuation;
+    gl.attenuation = f4(glm::min(dvec3(c.x, c.y / scale, c.z / scale / scale), dvec3(kFloatMax)));
+    const dvec3 position = (l.vec - origin) * scale;
+    const double far = std::max({std::abs(position.x), std::abs(position.y), std::abs(position.z)});
+    if (point && far > kFarLight) {
+      // So far beyond the geometry (whose frame coordinates are at most a few units) that its
+      // direction and distance are the same from every point of it, to far below float32's
+      // resolution (2^-39): moved to kFarLight along the same line, its colour divided by the
+      // attenuation at its distance in double (float32 would overflow squaring that distance).
+      const dvec3 unit = unitVector(position);
+      const double distance = glm::dot(position * (1.0 / far), unit) * far / scale;   // in world units
+      const double divisor = c.x + c.y * distance + c.z * distance * distance;
+      gl.positionOrDirection = f4(unit * kFarLight, gpu::kPointLight);
+      gl.color = f4(glm::clamp(l.color / divisor, dvec3(-kFloatMax), dvec3(kFloatMax)));
+      gl.attenuation = {1.0f, 0.0f, 0.0f, 0.0f};
+    }
     g.lights.push_back(gl);
   }
   for (const Material& m : scene.materials) {
@@ -207,22 +246,25 @@ GpuScene flatten(const SceneDesc& scene) {
                            f4(m.emission, m.quadLight >= 0 ? static_cast<float>(m.quadLight) : gpu::kNoQuadLight)});
   }
   for (const QuadLight& q : scene.quadLights) {
-    const dvec3 across = glm::cross(q.ac, q.ab);   // |cross(ac, ab)| = |cross(ab, ac)|: the area
+    const dvec3 ab = q.ab * scale, ac = q.ac * scale;
+    const dvec3 across = glm::cross(ac, ab);   // |cross(ac, ab)| = |cross(ab, ac)|: the area
     const double area = glm::length(across);
     gpu::GpuQuadLight gq{};
-    gq.corner = f4(q.a - origin, static_cast<float>(area));
-    gq.edgeAB = f4(q.ab);
-    gq.edgeAC = f4(q.ac);
+    gq.corner = f4((q.a - origin) * scale, static_cast<float>(area));
+    gq.edgeAB = f4(ab);
+    gq.edgeAC = f4(ac);
     gq.normal = f4(area > 0.0 ? across / area : dvec3(0.0));
     gq.radiance = f4(q.radiance);
     g.quadLights.push_back(gq);
   }
-  g.path = pathParams(scene, origin);
+  g.path = pathParams(scene, origin, scale);
   const EmitterTable table = collectEmitters(scene);
   for (std::size_t e = 0; e < table.prims.size(); ++e)
     g.emitters.push_back({table.prims[e], static_cast<float>(table.cdf[e])});
   g.path.emitterCount = static_cast<gpu::uint>(g.emitters.size());
-  g.path.emitterWeightScale = g.emitters.empty() ? 0.0f : static_cast<float>(1.0 / table.totalWeight);
+  // The weights are areas (times emission): in the frame's units, scale^2 times the world's.
+  g.path.emitterWeightScale =
+      g.emitters.empty() ? 0.0f : static_cast<float>(1.0 / table.totalWeight / scale / scale);
   g.spp = static_cast<std::uint32_t>(std::max(scene.path.spp, 1));
   return g;
 }

@@ -12,7 +12,10 @@ namespace vkrt {
 
 struct GpuScene {
   std::uint32_t width = 0, height = 0, maxDepth = 0;
-  dvec3 origin{0.0};   // the world position of the float32 frame's origin (the geometry's centre)
+  // The float32 frame (ray_offset.h): world point x is (x - origin) * scale in every position
+  // below; lengths are multiplied by scale (a power of two), directions are as they are.
+  dvec3 origin{0.0};
+  double scale = 1.0;
   gpu::GpuPushConstants push{};     // the push constants but the band's: camera (SPEC section 3), cut-off
   std::vector<gpu::GpuTriangle> triangles;
   std::vector<gpu::GpuTriangleNormals> triangleNormals;   // only for `trinormal` triangles

@@ -18,7 +18,9 @@
 
 #include "errors.h"
 #include "image/image_file.h"
+#include "scene/linear_map.h"
 #include "scene/number.h"
+#include "scene/unit_vector.h"
 
 namespace vkrt {
 namespace {
@@ -72,13 +74,25 @@ std::string quoted(std::string_view token) { return "'" + escapedBytes(token) + 
 
 // The kinds of warning (SPEC section 8); each kind is summarised after kMaxWarningsPerKind.
 enum class WarningKind {
-  UnknownCommand, KeywordCase, ExtraArguments, Repeated, BeforeSize, OutputName, NotForIntegrator, EndlessPaths, Count
+  UnknownCommand, KeywordCase, ExtraArguments, Repeated, BeforeSize, OutputName, NotForIntegrator, EndlessPaths,
+  Clamped, Count
 };
 constexpr const char* kWarningKindNames[] = {
     "unknown commands", "keywords in another case", "extra arguments", "repeated commands",
-    "commands before 'size'", "output names", "commands the integrator does not use", "paths without an end"};
+    "commands before 'size'", "output names", "commands the integrator does not use", "paths without an end",
+    "values clamped"};
 static_assert(std::size(kWarningKindNames) == static_cast<std::size_t>(WarningKind::Count));
 constexpr std::size_t kWarningKinds = static_cast<std::size_t>(WarningKind::Count);
+
+// Values that render finite on both backends (README "Numerical robustness"): a colour or
+// radiance channel beyond float32 (the Vulkan backend's precision) is clamped to the largest
+// float; a Phong exponent above kMaxPathShininess (path integrators: a lobe narrower than
+// float32 resolves, whose normalisation (s + 2) / 2 pi squared by MIS would overflow) and a
+// GGX roughness above kMaxRoughness (alpha^4 would overflow float32; the lobe is as flat at
+// 1e4 as beyond) are clamped to those. Each with a warning at its line.
+constexpr double kMaxColour = 3.4028234663852886e38;   // the largest float
+constexpr double kMaxPathShininess = 1e9;
+constexpr double kMaxRoughness = 1e4;
 
 // The keyword values of SPEC-PATHTRACING section 1, in the order of their enums.
 constexpr std::string_view kIntegratorNames[] = {"raytracer", "analyticdirect", "direct", "pathtracer"};
@@ -141,8 +155,7 @@ struct VertexWithNormal {
 // `scale 0`, whose triangles are degenerate anyway) the cofactor matrix keeps a direction.
 glm::dmat3 normalMatrix(const dmat4& m) {
   glm::dmat3 a(m);
-  double det = glm::determinant(a);
-  if (det != 0.0) return glm::transpose(glm::inverse(a));
+  if (!isSingular(a)) return glm::transpose(inverseLinear(a));
   return glm::dmat3(glm::cross(a[1], a[2]), glm::cross(a[2], a[0]), glm::cross(a[0], a[1]));
 }
 
@@ -451,10 +464,13 @@ class Parser {
     if (view == dvec3(0.0)) {
       error("degenerate camera: look-from equals look-at");
       ok = false;
+    } else if (!std::isfinite(view.x) || !std::isfinite(view.y) || !std::isfinite(view.z)) {
+      error("look-from and look-at are too far apart: their difference overflows double precision");
+      ok = false;
     } else if (c.up == dvec3(0.0)) {
       error("degenerate camera: the up vector is zero");
       ok = false;
-    } else if (glm::length(glm::cross(glm::normalize(c.up), glm::normalize(view))) <= 1e-12) {
+    } else if (glm::length(glm::cross(unitVector(c.up), unitVector(view))) <= 1e-12) {
       error("degenerate camera: the up vector is parallel to the view direction");
       ok = false;
     }
@@ -478,13 +494,13 @@ class Parser {
       error("sphere radius must not be negative, got " + quoted(args_[3]));
       return;
     }
-    if (glm::determinant(glm::dmat3(transform_)) == 0.0) {
+    if (isSingular(glm::dmat3(transform_))) {
       error("sphere under a singular transform (a scale of 0): it has no volume and no normal");
       return;
     }
     Sphere s;
     s.worldFromObject = transform_;
-    s.objectFromWorld = glm::inverse(transform_);
+    s.objectFromWorld = inverseAffine(transform_);
     s.center = {a[0], a[1], a[2]};
     s.radius = a[3];
     s.material = currentMaterial();
@@ -552,7 +568,11 @@ class Parser {
       t.p[k] = toWorldPoint(vertexNormals_[idx[k]].position);
       dvec3 n = nm * vertexNormals_[idx[k]].normal;
       double len = glm::length(n);
-      t.n[k] = len > 0.0 ? n / len : dvec3(0.0, 0.0, 1.0);
+      // A normal or transform so small or large that the length underflows or overflows:
+      // the same direction through unitVector.
+      if (!(len > 0.0) || !std::isfinite(len)) n = unitVector(nm * unitVector(vertexNormals_[idx[k]].normal));
+      else n /= len;
+      t.n[k] = n != dvec3(0.0) ? n : dvec3(0.0, 0.0, 1.0);
     }
     t.material = currentMaterial();
     scene_.triangles.push_back(t);
@@ -572,7 +592,7 @@ class Parser {
       error("rotate axis must not be zero");
       return;
     }
-    transform_ = transform_ * rotation(glm::normalize(axis), glm::radians(a[3]));
+    transform_ = transform_ * rotation(unitVector(axis), glm::radians(a[3]));
   }
 
   // Rodrigues' rotation about a unit axis, right-handed, as a 4x4 matrix.
@@ -609,7 +629,7 @@ class Parser {
     const char* cmd = point ? "point" : "directional";
     if (!numbers(cmd, 6, "x y z r g b", a)) return;
     Light l;
-    l.color = {a[3], a[4], a[5]};
+    l.color = withinFloat(cmd, {a[3], a[4], a[5]}, 3);
     if (point) {
       l.type = LightType::Point;
       l.vec = toWorldPoint({a[0], a[1], a[2]});
@@ -617,9 +637,12 @@ class Parser {
     } else {
       l.type = LightType::Directional;
       dvec3 d{a[0], a[1], a[2]};
-      l.vec = dvec3(transform_ * glm::dvec4(d, 0.0));
-      if (l.vec == dvec3(0.0)) return error("directional light direction must not be zero");
-      l.vec = glm::normalize(l.vec);
+      if (d == dvec3(0.0)) return error("directional light direction must not be zero");
+      // Scaled by powers of two before and after the transform: a tiny or vast direction
+      // neither underflows nor overflows (and one of ordinary size keeps its bits).
+      l.vec = unitVector(dvec3(transform_ * glm::dvec4(scaledForSquares(d), 0.0)));
+      if (l.vec == dvec3(0.0))
+        return error("directional light direction vanishes under the current transform (a scale of 0)");
     }
     scene_.lights.push_back(l);
   }
@@ -637,7 +660,21 @@ class Parser {
   void cmdColor(std::string_view cmd, dvec3& target) {
     double a[3];
     if (!numbers(cmd, 3, "r g b", a)) return;
-    target = {a[0], a[1], a[2]};
+    target = withinFloat(cmd, {a[0], a[1], a[2]}, 0);
+  }
+
+  // A colour whose channels (arguments first.. first + 2) lie beyond float32: clamped to the
+  // largest float, with a warning naming the first such argument.
+  dvec3 withinFloat(std::string_view cmd, dvec3 c, int first) {
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(c[k]) <= kMaxColour) continue;
+      warn(WarningKind::Clamped, "'" + std::string(cmd) + "' argument " + std::to_string(first + k + 1) + " " +
+                                     quoted(args_[first + k]) +
+                                     " is beyond the largest float32 value (3.4028235e38), in which the Vulkan backend "
+                                     "computes: clamped to it on both backends");
+      return glm::clamp(c, dvec3(-kMaxColour), dvec3(kMaxColour));
+    }
+    return c;
   }
 
   void cmdShininess() {
@@ -645,6 +682,7 @@ class Parser {
     if (!numbers("shininess", 1, "s", a)) return;
     if (a[0] < 0.0) return error("shininess must not be negative, got " + quoted(args_[0]));
     material_.shininess = a[0];
+    if (a[0] > kMaxPathShininess) steepShininessLines_.push_back(line_);   // (clamped for the path integrators)
   }
 
   // ---- path tracing (SPEC-PATHTRACING section 1) ----------------------------------------------
@@ -709,6 +747,11 @@ class Parser {
     if (!numbers("roughness", 1, "alpha", a)) return;
     if (a[0] < 0.0) return error("roughness must not be negative, got " + quoted(args_[0]));
     material_.roughness = a[0];
+    if (a[0] > kMaxRoughness) {
+      warn(WarningKind::Clamped, "roughness " + quoted(args_[0]) +
+                                     " clamped to 1e4 (GGX is as flat there as beyond, and float32 would overflow)");
+      material_.roughness = kMaxRoughness;
+    }
   }
 
   void cmdGamma() {
@@ -728,7 +771,7 @@ class Parser {
     q.a = toWorldPoint(corner);
     q.ab = toWorldPoint(corner + ab) - q.a;
     q.ac = toWorldPoint(corner + ac) - q.a;
-    q.radiance = {a[9], a[10], a[11]};
+    q.radiance = withinFloat("quadLight", {a[9], a[10], a[11]}, 9);
     q.line = line_;
     if (glm::cross(q.ac, q.ab) == dvec3(0.0))
       return error("degenerate quadLight: its sides ab and ac span no area" +
@@ -768,6 +811,14 @@ class Parser {
     for (Material& m : scene_.materials) {
       if (isIgnored(Command::Brdf)) m.brdf = defaultMaterial.brdf;
       if (isIgnored(Command::Roughness)) m.roughness = defaultMaterial.roughness;
+    }
+    // The path integrators' Phong lobe, beyond what float32 resolves (kMaxPathShininess).
+    if (integrator != Integrator::Raytracer) {
+      for (int line : steepShininessLines_)
+        warnAt(line, WarningKind::Clamped,
+               "shininess clamped to 1e9 for " + which +
+                   " (a lobe narrower than float32 resolves: the same picture, and finite)");
+      for (Material& m : scene_.materials) m.shininess = std::min(m.shininess, kMaxPathShininess);
     }
 
     // `lightstratify on` cuts the light into sqrt(N) x sqrt(N) cells.
@@ -838,6 +889,7 @@ class Parser {
   bool sawSize_ = false;
   int firstSizeLine_ = 0;
   int cameraLine_ = 0, maxDepthLine_ = 0;   // 0: not seen yet (the scene keeps the others)
+  std::vector<int> steepShininessLines_;      // `shininess` lines above kMaxPathShininess
   int beforeSizeLine_ = 0;                  // the first command before `size`
   int integratorLine_ = 0, lightSamplesLine_ = 0;
   int lightStratifyLine_ = 0;               // of the last `lightstratify`, when it said `on`

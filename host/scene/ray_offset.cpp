@@ -214,9 +214,80 @@ bool sceneBounds(const SceneDesc& scene, dvec3& boxLo, dvec3& boxHi) {
   return true;
 }
 
+namespace {
+
+// The distance from p to box [lo, hi] (0 inside it).
+double boxDistance(const dvec3& p, const dvec3& lo, const dvec3& hi) {
+  return glm::length(glm::max(glm::max(lo - p, p - hi), dvec3(0.0)));
+}
+
+// The point of triangle abc nearest to p (Ericson, Real-Time Collision Detection, 5.1.5).
+dvec3 nearestOnTriangle(const dvec3& p, const dvec3& a, const dvec3& b, const dvec3& c) {
+  const dvec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const dvec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + d1 / (d1 - d3) * ab;
+  const dvec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double denom = va + vb + vc;
+  if (!(denom != 0.0) || !std::isfinite(denom)) return a;   // degenerate: a corner will do
+  return a + ab * (vb / denom) + ac * (vc / denom);
+}
+
+// Whether some primitive comes within `reach` of p: a triangle whose nearest point does, or
+// a sphere whose surface may (a lower bound of its distance: the object-space distance over
+// the Frobenius norm of objectFromWorld, which bounds how much that map stretches).
+bool geometryWithin(const SceneDesc& scene, const dvec3& p, double reach) {
+  for (const Triangle& t : scene.triangles) {
+    const dvec3 lo = glm::min(t.p[0], glm::min(t.p[1], t.p[2])), hi = glm::max(t.p[0], glm::max(t.p[1], t.p[2]));
+    if (boxDistance(p, lo, hi) > reach) continue;
+    if (glm::length(p - nearestOnTriangle(p, t.p[0], t.p[1], t.p[2])) <= reach) return true;
+  }
+  for (const Sphere& s : scene.spheres) {
+    dvec3 lo, hi;
+    sphereBounds(s, lo, hi);
+    if (boxDistance(p, lo, hi) > reach) continue;
+    const glm::dmat3 m(s.objectFromWorld);
+    double frobenius = 0.0;
+    for (int c = 0; c < 3; ++c) frobenius += glm::dot(m[c], m[c]);
+    const double inObject = std::abs(glm::length(dvec3(s.objectFromWorld * glm::dvec4(p, 1.0)) - s.center) - s.radius);
+    if (!(inObject > reach * std::sqrt(frobenius))) return true;
+  }
+  return false;
+}
+
+double maxNorm(const dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+}  // namespace
+
 dvec3 floatFrameOrigin(const SceneDesc& scene) {
   dvec3 lo, hi;
-  return sceneBounds(scene, lo, hi) ? 0.5 * (lo + hi) : scene.camera.from;
+  if (!sceneBounds(scene, lo, hi)) return scene.camera.from;
+  const dvec3 centre = 0.5 * lo + 0.5 * hi;   // (halves first: no overflow near the largest double)
+  // The centre of the geometry, unless the camera is much nearer to some geometry than to the
+  // centre (a far object widens the box): float32 would then round what the camera sees
+  // nearby more coarsely than its distance allows, and the frame is centred on the camera.
+  const double fromCentre = glm::length(scene.camera.from - centre);
+  if (!(fromCentre > 0.0) || !std::isfinite(fromCentre)) return fromCentre > 0.0 ? scene.camera.from : centre;
+  return geometryWithin(scene, scene.camera.from, fromCentre * kFrameCentreReach) ? scene.camera.from : centre;
+}
+
+double floatFrameScale(const SceneDesc& scene, const dvec3& origin) {
+  dvec3 lo, hi;
+  double extent = maxNorm(scene.camera.from - origin);
+  if (sceneBounds(scene, lo, hi)) extent = std::max({extent, maxNorm(lo - origin), maxNorm(hi - origin)});
+  if (!(extent > 0.0) || !std::isfinite(extent)) return 1.0;
+  if (extent >= kFrameExtentLow && extent <= kFrameExtentHigh) return 1.0;
+  return std::ldexp(1.0, std::clamp(-std::ilogb(extent), -1000, 1000));   // the extent into [1, 2)
 }
 
 double offsetForSize(double size) {

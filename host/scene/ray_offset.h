@@ -13,9 +13,22 @@ namespace vkrt {
 // The box around the scene's triangles and spheres; false (and nothing set) without geometry.
 bool sceneBounds(const SceneDesc& scene, dvec3& lo, dvec3& hi);
 
-// Where flatten() puts the origin of the shader's float32 frame: the centre of the geometry's
-// box, or the camera without geometry. The offsets' magnitude term is measured from it.
+// The shader's float32 frame: world point x is (x - origin) * scale there (flatten()).
+// Its origin: the centre of the geometry's box; or the camera, without geometry or when some
+// primitive comes within kFrameCentreReach times the camera's distance from that centre:
+// then the centre is far from what the camera may see nearby (a far object widens the box),
+// and float32 would round it more coarsely than its distance from the camera. The offsets'
+// magnitude term is measured from it.
+inline constexpr double kFrameCentreReach = 1.0 / 64.0;
 dvec3 floatFrameOrigin(const SceneDesc& scene);
+
+// The frame's scale: a power of two (exact in float), 1 when the largest coordinate of the
+// geometry and the camera in the frame (max norm) lies within [kFrameExtentLow,
+// kFrameExtentHigh], else the one that brings it into [1, 2): float32 then neither overflows
+// nor underflows in squares of lengths, wherever and however large the scene is.
+inline constexpr double kFrameExtentLow = 1.0 / 256.0;
+inline constexpr double kFrameExtentHigh = 256.0;
+double floatFrameScale(const SceneDesc& scene, const dvec3& origin);
 
 // The course's offset (1e-3) for an object of the course's sizes, scaled by whole decades for
 // an object of another size (its size: the diagonal of its box).

@@ -23,13 +23,15 @@ using uint = std::uint32_t;
 #endif
 
 // ---- Secondary rays: the offset policy (the one place that states it) --------------------------
-// The shader works in coordinates centred on the scene's geometry (flatten() subtracts the
-// centre of its box in double precision), so a scene far from the origin gives float32 the
-// same small numbers.
+// The shader works in the float32 frame of flatten() (host/scene/ray_offset.h): centred on the
+// scene's geometry, or on the camera when a far object would put that centre far from what
+// it sees nearby, and scaled by a power of two that brings the scene's size near 1 (computed
+// in double precision), so a scene far from the origin, vast or tiny, gives float32 the same
+// numbers. rayOffset and every length below are in the frame's units.
 // A secondary ray (shadow or mirror) starts at the hit point p and ignores hits with
 //     t <= max(rayOffset, kOffsetPerMagnitude * m, kGrazingPerMagnitude * m / |N.dir|),
 //     m = max(|p - o|_max, |p - camera|_max)
-// along its unit direction (o: the centre of the geometry's box), where rayOffset belongs to
+// along its unit direction (o: the frame's origin), where rayOffset belongs to
 // the primitive that was hit (GpuTriangle, GpuSphere; host/scene/ray_offset.cpp):
 //  - Objects: each sphere, and each set of triangles connected through shared vertex
 //    positions (a mesh, a quad, a box). An object's size S is the diagonal of its box.
