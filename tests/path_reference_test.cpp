@@ -311,8 +311,9 @@ TEST(PathPointLights, DiffuseFloorUnderAPointAndADirectionalLight) {
 
 TEST(PathCourseScenes, EveryCse168SceneRendersWithoutNaN) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::path(test::sourceDir()) / ".." / "shared" / "cse168" / "scenes";
-  if (!fs::is_directory(dir)) VKRT_SKIP_UNLESS_CI("no course data at ../shared/cse168/scenes");
+  const std::optional<std::string> data = test::cse168Dir();
+  if (!data) VKRT_SKIP_UNLESS_CI("no course data at ../shared/cse168 (or $VKRT_CSE168_DIR)");
+  const fs::path dir = fs::path(*data) / "scenes";
   int rendered = 0;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     if (entry.path().extension() != ".test") continue;
