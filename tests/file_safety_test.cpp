@@ -73,6 +73,21 @@ RunResult runShell(const std::string& dir, const std::string& command) {
 
 const std::string kVkrt = std::string("'") + VKRT_BINARY + "'";
 
+// waitVkrt, but a process still running after `seconds` is killed (SIGKILL: exit 137), so
+// that a vkrt that does not stop fails the test instead of hanging it.
+Finished waitVkrtWithin(const Spawned& p, double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  siginfo_t info{};
+  while (std::chrono::steady_clock::now() < deadline) {
+    info.si_pid = 0;
+    if (::waitid(P_PID, static_cast<id_t>(p.pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid != 0)
+      return waitVkrt(p);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ::kill(p.pid, SIGKILL);
+  return waitVkrt(p);
+}
+
 }  // namespace
 
 // --check REF where the render's own output is REF (the scene's `output` line, -o, another
@@ -452,7 +467,7 @@ TEST(SceneReading, CtrlCStopsAReadThatWaits) {
   Spawned waiting = spawnVkrt({"--backend", "cpu", dir + "/fifo.test"}, dir + "/log-open");
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ::kill(waiting.pid, SIGINT);
-  Finished opened = waitVkrt(waiting);
+  Finished opened = waitVkrtWithin(waiting, 30);
   EXPECT_EQ(opened.exitCode, 130) << opened.output;
   EXPECT_TRUE(contains(opened.output, "interrupted")) << opened.output;
   // A writer that sends a line and then nothing: vkrt waits in read(); a batch.
@@ -466,7 +481,7 @@ TEST(SceneReading, CtrlCStopsAReadThatWaits) {
   ASSERT_EQ(::write(fd, "size 10 10\n", 11), 11);
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ::kill(reading.pid, SIGINT);
-  Finished read = waitVkrt(reading);
+  Finished read = waitVkrtWithin(reading, 30);
   ::close(fd);
   EXPECT_EQ(read.exitCode, 130) << read.output;
   EXPECT_TRUE(contains(read.output, "1 not rendered (stopped)")) << read.output;
