@@ -32,6 +32,14 @@ namespace {
 using vkrt::kExitDiffers;
 using vkrt::kExitOk;
 
+// The exception being handled, or Interrupted when a signal has been received: a signal
+// that cuts a wait short (an image read from a FIFO: "Interrupted system call") is what
+// stopped the command, and its status is the signal's.
+std::exception_ptr failure() {
+  if (int signal = vkrt::pendingInterrupt()) return std::make_exception_ptr(vkrt::Interrupted(signal));
+  return std::current_exception();
+}
+
 // The scene's warnings, on stderr before the render starts; -q leaves them out.
 std::function<void(const std::vector<vkrt::Diagnostic>&)> warningPrinter(bool quiet) {
   if (quiet) return nullptr;
@@ -228,7 +236,7 @@ int renderBatch(const vkrt::Options& o) {
       if (o.stats) printStats(request, report);
       warnNonFinite(o, report);
     } catch (...) {
-      status = vkrt::reportError(std::current_exception(), {scenePath, o.quiet}, stderr);
+      status = vkrt::reportError(failure(), {scenePath, o.quiet}, stderr);
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     worst = vkrt::worseExitStatus(worst, status);
@@ -294,8 +302,9 @@ int diff(const vkrt::Options& options) {
   files.addInput(options.diffA, "image A");
   files.addInput(options.diffB, "image B");
   claimHeatmap(options, files);
-  return reportComparison(options, vkrt::readImage(options.diffA), vkrt::readImage(options.diffB),
-                          options.diffA + " vs " + options.diffB);
+  vkrt::Image a = vkrt::readImage(options.diffA);   // A first: its error, if both have one
+  vkrt::Image b = vkrt::readImage(options.diffB);
+  return reportComparison(options, a, b, options.diffA + " vs " + options.diffB);
 }
 
 // One scene: the scene file and the --check reference are inputs; the heatmap and the image
@@ -358,6 +367,6 @@ int main(int argc, char** argv) {
     if (options.scenes.size() > 1) return renderBatch(options);
     return renderOne(options);
   } catch (...) {
-    return vkrt::reportError(std::current_exception(), {options.request.scenePath, options.quiet}, stderr);
+    return vkrt::reportError(failure(), {options.request.scenePath, options.quiet}, stderr);
   }
 }

@@ -486,4 +486,12 @@ TEST(SceneReading, CtrlCStopsAReadThatWaits) {
   EXPECT_EQ(read.exitCode, 130) << read.output;
   EXPECT_TRUE(contains(read.output, "1 not rendered (stopped)")) << read.output;
   EXPECT_FALSE(fileExists(dir + "/b.png"));
+  // An image read from a FIFO (diff, --check, merge) is stopped the same way.
+  writeBlackPng(dir + "/b.png");
+  Spawned diff = spawnVkrt({"diff", dir + "/fifo.test", dir + "/b.png"}, dir + "/log-diff");
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ::kill(diff.pid, SIGTERM);
+  Finished diffed = waitVkrtWithin(diff, 30);
+  EXPECT_EQ(diffed.exitCode, 143) << diffed.output;
+  EXPECT_TRUE(contains(diffed.output, "interrupted")) << diffed.output;
 }
