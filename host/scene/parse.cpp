@@ -931,12 +931,15 @@ std::string readSceneText(const std::string& path) {
     const std::size_t size = text.size();
     const std::size_t room = std::min(text.capacity() - size, kChunk);
     ssize_t n = 0;
+    int readError = 0;
     if (room > 0) {
       text.resize(size + room);
       n = ::read(file.fd, text.data() + size, room);
+      readError = errno;
       text.resize(size + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
     } else {
       n = ::read(file.fd, probe, sizeof probe);
+      readError = errno;
       if (n > 0) {
         // A stream (or a file that grew): grow by doubling, never much past the limit.
         std::size_t want = std::max(text.capacity() * 2, size + kChunk);
@@ -945,8 +948,8 @@ std::string readSceneText(const std::string& path) {
       }
     }
     if (n < 0) {
-      if (errno == EINTR) continue;   // the loop's first line ends it when a signal asked to stop
-      throw IoError("cannot read scene file '" + name + "': " + std::strerror(errno));
+      if (readError == EINTR) continue;   // the loop's first line ends it when a signal asked to stop
+      throw IoError("cannot read scene file '" + name + "': " + std::strerror(readError));
     }
     if (n == 0) break;
     // Up to the first byte past the file's limit, whose line is then the one reported.
