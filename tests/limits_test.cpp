@@ -140,7 +140,8 @@ TEST(Interrupt, DuringTheRenderLeavesTheOldImageAndNoTemporaryFile) {
   if (gpuContextOrSkip()) runs.emplace_back("vulkan", SIGINT);
   for (auto [backend, sig] : runs) {
     writeFile(dir + "/o.png", kPrecious);
-    Spawned p = spawnVkrt({"--backend", backend, "-o", dir + "/o.png", dir + "/slow.test"}, dir + "/log",
+    // A log per run: the first run's would show the second's wait before it began.
+    Spawned p = spawnVkrt({"--backend", backend, "-o", dir + "/o.png", dir + "/slow.test"}, dir + "/log-" + backend,
                           {"VKRT_TEST_WAIT_FOR_SIGNAL=render"});
     EXPECT_TRUE(waitingForSignal(p.logPath, "render")) << backend;
     ::kill(p.pid, sig);
