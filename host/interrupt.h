@@ -1,6 +1,7 @@
-// Ctrl-C and SIGTERM: the first one asks the render to stop at the next tile, band or image
-// row (Interrupted is thrown, the temporary output file removed, an existing output left as
-// it was); a second one ends the process at once, still removing the temporary file.
+// Ctrl-C (SIGINT), SIGTERM and SIGHUP: the first one asks the command to stop at the next
+// tile, band, image row or read of the scene file, or before the written file replaces the
+// old one (Interrupted is thrown, the temporary output file removed, an existing output left
+// as it was); a second one ends the process at once, still removing the temporary file.
 #pragma once
 
 #include <atomic>
@@ -17,7 +18,8 @@ class Interrupted : public std::runtime_error {
   int signal_;
 };
 
-// Installs the handlers for SIGINT and SIGTERM (vkrt's main does; a library user need not).
+// Installs the handlers for SIGINT, SIGTERM and SIGHUP, except for a signal ignored when the
+// process started (nohup): vkrt's main does, before any command; a library user need not.
 void installInterruptHandlers();
 
 // The signal received so far, or 0. Safe to poll from any thread.

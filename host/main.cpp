@@ -1,19 +1,22 @@
 // vkrt command line: parse arguments, call renderSceneFile() (once per scene; several scenes
 // share one RenderSession), turn exceptions into exit statuses (through reportError:
-// host/cli/exit_status.h).
+// host/cli/exit_status.h). Every command first names the files it reads and writes to one
+// RunFiles (host/cli/run_files.h), which refuses an output that is one of the run's own
+// files before anything is read, rendered or written.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <functional>
-#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/exit_status.h"
 #include "cli/options.h"
+#include "cli/run_files.h"
 #include "errors.h"
+#include "image/atomic_file.h"
 #include "gpu/context.h"
 #include "image/encode.h"
 #include "image/image_file.h"
@@ -28,6 +31,14 @@ namespace {
 
 using vkrt::kExitDiffers;
 using vkrt::kExitOk;
+
+// The exception being handled, or Interrupted when a signal has been received: a signal
+// that cuts a wait short (an image read from a FIFO: "Interrupted system call") is what
+// stopped the command, and its status is the signal's.
+std::exception_ptr failure() {
+  if (int signal = vkrt::pendingInterrupt()) return std::make_exception_ptr(vkrt::Interrupted(signal));
+  return std::current_exception();
+}
 
 // The scene's warnings, on stderr before the render starts; -q leaves them out.
 std::function<void(const std::vector<vkrt::Diagnostic>&)> warningPrinter(bool quiet) {
@@ -50,9 +61,17 @@ std::string samplesNote(const vkrt::RenderReport& r) {
          (r.timeUp ? " when the time was up" : "");
 }
 
-// The heatmap of --diff, when asked for.
+// The heatmap of --diff, when asked for (PNG, or PPM for a .ppm name).
 void writeHeatmap(const vkrt::Options& o, const vkrt::ImageDiff& diff) {
-  if (o.heatmapPath) vkrt::writePngAtomic(vkrt::differenceHeatmap(diff, o.heatmapScale), *o.heatmapPath);
+  if (o.heatmapPath) vkrt::writeImageAtomic(vkrt::differenceHeatmap(diff, o.heatmapScale), *o.heatmapPath);
+}
+
+// --diff FILE: an output of the run, checked (and its folder's writability) before any
+// image is read or rendered.
+void claimHeatmap(const vkrt::Options& o, vkrt::RunFiles& files) {
+  if (!o.heatmapPath) return;
+  files.addOutput(*o.heatmapPath, "the heatmap (--diff)");
+  vkrt::checkOutputWritable(*o.heatmapPath);
 }
 
 // The metrics, the heatmap (written, and named with its scale) and the failures, as text.
@@ -140,6 +159,9 @@ std::string reportJson(const vkrt::RenderReport& r) {
 // --compare: both backends in turn, nothing written; the times of each (the --stats
 // breakdown, on stderr) and their difference (stdout). Exit 5 when a threshold is exceeded.
 int compareBackends(const vkrt::Options& o) {
+  vkrt::RunFiles files;
+  files.addInput(o.request.scenePath, "the scene file");
+  claimHeatmap(o, files);
   vkrt::RenderReport reports[2];
   vkrt::Image images[2];
   const vkrt::Backend backends[2] = {vkrt::Backend::Vulkan, vkrt::Backend::Cpu};
@@ -185,12 +207,14 @@ double totalSeconds(const vkrt::RenderReport& r) {
 
 // Several scenes in one process, sharing the Vulkan context: one line per scene (on stderr,
 // as every log), then a summary; a failed scene does not stop the others, a signal does. The
-// exit status is the highest of the scenes' (worseExitStatus). Two scenes that would write
-// one file: the second fails (I/O error) and the first image stays.
+// exit status is the highest of the scenes' (worseExitStatus). A scene whose output is one
+// of the batch's scene files, or a file an earlier scene wrote, is refused (usage error,
+// nothing rendered for it): the files stay as they were.
 int renderBatch(const vkrt::Options& o) {
   auto start = std::chrono::steady_clock::now();
   vkrt::RenderSession session;
-  std::map<std::string, std::string> written;   // output path (absolute) -> the scene that wrote it
+  vkrt::RunFiles files;
+  for (const std::string& scenePath : o.scenes) files.addInput(scenePath, "the scene file");
   const std::size_t n = o.scenes.size();
   std::size_t rendered = 0, failed = 0, done = 0;
   int worst = kExitOk;
@@ -201,22 +225,18 @@ int renderBatch(const vkrt::Options& o) {
     request.scenePath = scenePath;
     request.onWarnings = warningPrinter(o.quiet);
     request.onOptionWarning = optionWarningPrinter(o.quiet);
-    request.onOutput = [&written](const std::string& path) {
-      auto it = written.find(std::filesystem::absolute(path).lexically_normal().string());
-      if (it != written.end())
-        throw vkrt::IoError("'" + path + "' was written by " + it->second +
-                            " earlier in this run (two scenes with one output name)");
-    };
+    const std::string role = "the output of " + scenePath;
+    request.onOutput = [&files, &role](const std::string& path) { files.checkOutput(path, role); };
     int status = kExitOk;
     vkrt::RenderReport report;
     try {
       vkrt::ProgressBar progress(!o.quiet);
       report = vkrt::renderSceneFile(request, progress, nullptr, &session);
-      written[std::filesystem::absolute(report.outputPath).lexically_normal().string()] = scenePath;
+      files.addOutput(report.outputPath, role);
       if (o.stats) printStats(request, report);
       warnNonFinite(o, report);
     } catch (...) {
-      status = vkrt::reportError(std::current_exception(), {scenePath, o.quiet}, stderr);
+      status = vkrt::reportError(failure(), {scenePath, o.quiet}, stderr);
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     worst = vkrt::worseExitStatus(worst, status);
@@ -241,6 +261,78 @@ int renderBatch(const vkrt::Options& o) {
   return worst;
 }
 
+// vkrt merge: the tiles are inputs, the merged image the output.
+int merge(const vkrt::Options& options) {
+  vkrt::RunFiles files;
+  for (const std::string& tile : options.mergeTiles) files.addInput(tile, "the tile");
+  files.addOutput(options.mergeOutput, "the merged image");
+  vkrt::checkOutputWritable(options.mergeOutput);
+  vkrt::MergeReport merged;
+  if (vkrt::areSampleBatches(options.mergeTiles)) {
+    vkrt::RadianceImage mean = vkrt::mergeSampleBatches(options.mergeTiles, &merged);
+    vkrt::writeImageAtomic(mean, options.mergeOutput, merged.samples.gamma);
+    if (!options.quiet)
+      std::fprintf(stderr, "vkrt: averaged %d batches (%llu samples per pixel) into %s (%dx%d)\n", merged.tiles,
+                   static_cast<unsigned long long>(merged.samples.total()), options.mergeOutput.c_str(), mean.width,
+                   mean.height);
+    return kExitOk;
+  }
+  const bool floatTiles = std::all_of(options.mergeTiles.begin(), options.mergeTiles.end(),
+                                      [](const std::string& path) { return vkrt::isPfmFile(path); });
+  int width = 0, height = 0;
+  if (floatTiles) {
+    vkrt::RadianceImage image = vkrt::mergeFloatCrops(options.mergeTiles, options.allowGaps, &merged);
+    vkrt::writeImageAtomic(image, options.mergeOutput, merged.samples.gamma);
+    width = image.width, height = image.height;
+  } else {
+    vkrt::Image image = vkrt::mergeCrops(options.mergeTiles, options.allowGaps, &merged);
+    vkrt::writeImageAtomic(image, options.mergeOutput);
+    width = image.width, height = image.height;
+  }
+  if (!options.quiet)
+    std::fprintf(stderr, "vkrt: merged %d tiles into %s (%dx%d)%s\n", merged.tiles, options.mergeOutput.c_str(),
+                 width, height,
+                 merged.gapPixels ? (", " + std::to_string(merged.gapPixels) + " pixels left black").c_str() : "");
+  return kExitOk;
+}
+
+// vkrt diff A B: both images are inputs, the heatmap (--diff) the output.
+int diff(const vkrt::Options& options) {
+  vkrt::RunFiles files;
+  files.addInput(options.diffA, "image A");
+  files.addInput(options.diffB, "image B");
+  claimHeatmap(options, files);
+  vkrt::Image a = vkrt::readImage(options.diffA);   // A first: its error, if both have one
+  vkrt::Image b = vkrt::readImage(options.diffB);
+  return reportComparison(options, a, b, options.diffA + " vs " + options.diffB);
+}
+
+// One scene: the scene file and the --check reference are inputs; the heatmap and the image
+// (its path known once the scene is parsed, checked before the render starts) outputs. The
+// reference is read before anything is rendered.
+int renderOne(vkrt::Options& options) {
+  vkrt::RunFiles files;
+  files.addInput(options.request.scenePath, "the scene file");
+  if (options.checkAgainst) files.addInput(*options.checkAgainst, "the reference image (--check)");
+  claimHeatmap(options, files);
+  std::optional<vkrt::Image> reference;
+  if (options.checkAgainst) reference = vkrt::readImage(*options.checkAgainst);
+  options.request.onOutput = [&files](const std::string& path) { files.checkOutput(path, "the image"); };
+  vkrt::ProgressBar progress(!options.quiet);
+  vkrt::Image image;
+  options.request.onWarnings = warningPrinter(options.quiet);
+  options.request.onOptionWarning = optionWarningPrinter(options.quiet);
+  vkrt::RenderReport report = vkrt::renderSceneFile(options.request, progress, reference ? &image : nullptr);
+  if (options.stats) printStats(options.request, report);
+  warnNonFinite(options, report);
+  if (!options.quiet)
+    std::fprintf(stderr, "vkrt: wrote %s (%dx%d%s) in %.2f s\n", report.outputPath.c_str(), report.width,
+                 report.height, samplesNote(report).c_str(), totalSeconds(report));
+  if (reference)
+    return reportComparison(options, image, *reference, report.outputPath + " vs " + *options.checkAgainst);
+  return kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -258,66 +350,23 @@ int main(int argc, char** argv) {
     std::printf("vkrt %s\n", VKRT_VERSION);
     return kExitOk;
   }
+  // Before any file is opened: a signal stops every command cleanly, its temporary file removed.
+  vkrt::installInterruptHandlers();
+  if (!options.quiet)
+    for (const std::string& w : options.warnings) std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str());
   try {
-    if (options.mergeCommand) {
-      vkrt::MergeReport merged;
-      if (vkrt::areSampleBatches(options.mergeTiles)) {
-        vkrt::RadianceImage mean = vkrt::mergeSampleBatches(options.mergeTiles, &merged);
-        vkrt::writeImageAtomic(mean, options.mergeOutput, merged.samples.gamma);
-        if (!options.quiet)
-          std::fprintf(stderr, "vkrt: averaged %d batches (%llu samples per pixel) into %s (%dx%d)\n", merged.tiles,
-                       static_cast<unsigned long long>(merged.samples.total()), options.mergeOutput.c_str(),
-                       mean.width, mean.height);
-        return kExitOk;
-      }
-      const bool floatTiles = std::all_of(options.mergeTiles.begin(), options.mergeTiles.end(),
-                                          [](const std::string& path) { return vkrt::isPfmFile(path); });
-      int width = 0, height = 0;
-      if (floatTiles) {
-        vkrt::RadianceImage image = vkrt::mergeFloatCrops(options.mergeTiles, options.allowGaps, &merged);
-        vkrt::writeImageAtomic(image, options.mergeOutput, merged.samples.gamma);
-        width = image.width, height = image.height;
-      } else {
-        vkrt::Image image = vkrt::mergeCrops(options.mergeTiles, options.allowGaps, &merged);
-        vkrt::writeImageAtomic(image, options.mergeOutput);
-        width = image.width, height = image.height;
-      }
-      if (!options.quiet)
-        std::fprintf(stderr, "vkrt: merged %d tiles into %s (%dx%d)%s\n", merged.tiles, options.mergeOutput.c_str(),
-                     width, height,
-                     merged.gapPixels ? (", " + std::to_string(merged.gapPixels) + " pixels left black").c_str() : "");
-      return kExitOk;
-    }
-    if (options.diffCommand)
-      return reportComparison(options, vkrt::readImage(options.diffA), vkrt::readImage(options.diffB),
-                              options.diffA + " vs " + options.diffB);
+    if (options.mergeCommand) return merge(options);
+    if (options.diffCommand) return diff(options);
     if (options.listDevices) {
       auto devices = vkrt::listDevices();
       for (std::size_t i = 0; i < devices.size(); ++i)
         std::printf("%zu: %s (%s)\n", i, devices[i].name.c_str(), devices[i].typeName());
       return kExitOk;
     }
-    if (!options.quiet)
-      for (const std::string& w : options.warnings) std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str());
-    vkrt::installInterruptHandlers();
     if (options.compare) return compareBackends(options);
     if (options.scenes.size() > 1) return renderBatch(options);
-    vkrt::ProgressBar progress(!options.quiet);
-    vkrt::Image image;
-    options.request.onWarnings = warningPrinter(options.quiet);
-    options.request.onOptionWarning = optionWarningPrinter(options.quiet);
-    vkrt::RenderReport report =
-        vkrt::renderSceneFile(options.request, progress, options.checkAgainst ? &image : nullptr);
-    if (options.stats) printStats(options.request, report);
-    warnNonFinite(options, report);
-    if (!options.quiet)
-      std::fprintf(stderr, "vkrt: wrote %s (%dx%d%s) in %.2f s\n", report.outputPath.c_str(), report.width,
-                   report.height, samplesNote(report).c_str(), totalSeconds(report));
-    if (options.checkAgainst)
-      return reportComparison(options, image, vkrt::readImage(*options.checkAgainst),
-                              report.outputPath + " vs " + *options.checkAgainst);
-    return kExitOk;
+    return renderOne(options);
   } catch (...) {
-    return vkrt::reportError(std::current_exception(), {options.request.scenePath, options.quiet}, stderr);
+    return vkrt::reportError(failure(), {options.request.scenePath, options.quiet}, stderr);
   }
 }

@@ -101,14 +101,16 @@ TEST(CliBatch, OutputDirectoryNamesEachImage) {
   }
 }
 
-// Two scenes that would write one file: the second fails (4) and the first image stays.
+// Two scenes that would write one file: the second is refused (a usage error, 1) and the
+// first image stays.
 TEST(CliBatch, TwoScenesWithOneOutputNameDoNotOverwriteEachOther) {
   std::string dir = freshDir("cli-batch/collision");
   writeFile(dir + "/a.test", kScene + "diffuse 0 0.5 0\nsphere 0 0 0 1\noutput " + dir + "/same.png\n");
   writeFile(dir + "/b.test", kScene + "output " + dir + "/./same.png\n");   // the same file, spelt otherwise
   RunResult r = runVkrt("--backend cpu " + dir + "/a.test " + dir + "/b.test");
-  EXPECT_EQ(r.exitCode, 4) << r.output;
-  EXPECT_TRUE(contains(r.output, "was written by " + dir + "/a.test earlier in this run")) << r.output;
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_TRUE(contains(r.output, "refusing to write the output of " + dir + "/b.test '" + dir +
+                                     "/./same.png': it is also the output of " + dir + "/a.test")) << r.output;
   EXPECT_GT(readImage(dir + "/same.png").pixel(20, 15)[1], 50);   // a's green sphere
 }
 

@@ -1,9 +1,15 @@
 // Exceptions -> messages and exit statuses, for main() and its tests.
 #include "cli/exit_status.h"
 
+#include <initializer_list>
 #include <new>
+#include <string>
+#include <utility>
+
+#include <sys/resource.h>
 
 #include "cli/options.h"
+#include "cli/run_files.h"
 #include "errors.h"
 #include "gpu/device_error.h"
 #include "interrupt.h"
@@ -11,10 +17,29 @@
 #include "scene/diagnostic.h"
 
 namespace vkrt {
+namespace {
+
+// " (this process may use at most N MB of address space: ulimit -v)" when such a limit is
+// set, else "" : the limit an allocation meets first, where there is one.
+std::string processMemoryLimit() {
+  std::string s;
+  for (auto [resource, name] : {std::pair{RLIMIT_AS, "address space: ulimit -v"}, std::pair{RLIMIT_DATA, "data: ulimit -d"}}) {
+    struct rlimit limit {};
+    if (::getrlimit(resource, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+      s += "; this process may use at most " + std::to_string(static_cast<unsigned long long>(limit.rlim_cur) >> 20) +
+           " MB of " + name;
+  }
+  return s;
+}
+
+}  // namespace
 
 int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE* err) {
   try {
     std::rethrow_exception(error);
+  } catch (const RefusedOutput& e) {   // the command line is well-formed: no usage text
+    std::fprintf(err, "vkrt: error: %s\n", e.what());
+    return kExitUsage;
   } catch (const UsageError& e) {
     std::fprintf(err, "vkrt: error: %s\n\n%s", e.what(), usageText());
     return kExitUsage;
@@ -35,12 +60,13 @@ int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE
     std::fprintf(err, "vkrt: error: out of memory: %s\n", e.what());
     return kExitOutOfMemory;
   } catch (const std::bad_alloc&) {
-    const char* what = context.scenePath.empty() ? "this command" : context.scenePath.c_str();
+    // How much was asked for is not known here: say what failed and the limits there are,
+    // not a need that the numbers cannot show.
+    const std::string what = context.scenePath.empty() ? "this command" : context.scenePath;
+    std::string limits = processMemoryLimit();
     if (unsigned long long mb = availableMemoryBytes() >> 20)
-      std::fprintf(err, "vkrt: error: out of memory: %s needs more than the %llu MB this machine has available\n",
-                   what, mb);
-    else
-      std::fprintf(err, "vkrt: error: out of memory: %s needs more memory than this machine has\n", what);
+      limits += "; the machine has " + std::to_string(mb) + " MB available";
+    std::fprintf(err, "vkrt: error: out of memory: an allocation for %s failed%s\n", what.c_str(), limits.c_str());
     return kExitOutOfMemory;
   } catch (const std::exception& e) {   // InternalError, and whatever else a bug lets through
     std::fprintf(err, "vkrt: internal error (a bug in vkrt): %s\n", e.what());

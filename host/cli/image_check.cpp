@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "cli/options.h"
+#include "scene/diagnostic.h"   // echoed
 
 namespace vkrt {
 
@@ -13,7 +14,7 @@ PixelThreshold parsePixelThreshold(const std::string& text) {
   PixelThreshold t;
   t.text = text;
   auto bad = [&] {
-    return UsageError("--max-pixels-over expects STEPS:COUNT or STEPS:PERCENT% (e.g. 2:0.1%), got '" + text + "'");
+    return UsageError("--max-pixels-over expects STEPS:COUNT or STEPS:PERCENT% (e.g. 2:0.1%), got '" + echoed(text) + "'");
   };
   auto colon = text.find(':');
   if (colon == std::string::npos) throw bad();

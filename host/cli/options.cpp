@@ -7,7 +7,8 @@
 
 #include "image/crop.h"
 #include "image/image_file.h"
-#include "scene/parse.h"   // kMaxImageEdge
+#include "scene/diagnostic.h"   // echoed, abbreviated
+#include "scene/parse.h"        // kMaxImageEdge
 
 namespace vkrt {
 
@@ -24,7 +25,10 @@ const char* usageText() {
          "options:\n"
          "  -o, --output FILE      write the image to FILE (overrides the scene's 'output');\n"
          "                         FILE.ppm writes binary PPM, FILE.pfm linear float (PFM, no\n"
-         "                         quantization or gamma), any other name PNG\n"
+         "                         quantization or gamma), any other name PNG. An existing FILE is\n"
+         "                         replaced whole, keeping its permissions; a symbolic link is\n"
+         "                         written through. Refused: '-', a file the run reads, a device,\n"
+         "                         FIFO or directory, a file with several hard links\n"
          "  -o, --output DIR/      write each image into DIR (a trailing '/'): under the file name\n"
          "                         of the scene's 'output', or the scene's stem + .png without one\n"
          "  --size WxH             render at W x H pixels instead of the scene's size (same camera)\n"
@@ -52,11 +56,14 @@ const char* usageText() {
          "  --no-cutoff            the same as --cutoff off\n"
          "  --threads N            worker threads for the CPU backend (default: all cores)\n"
          "  --stats                print a timing breakdown and ray counts on stderr\n"
-         "  --check REF.png        compare the rendered image with REF.png (exit 5 when it fails)\n"
+         "  --check REF.png        compare the rendered image with REF.png (exit 5 when it fails);\n"
+         "                         REF is read before the render (exit 4 when it cannot be)\n"
          "  --compare              render with both backends (nothing written) and print each\n"
          "                         one's times and the difference between their images\n"
-         "  --strict               every warning is an error (exit 2, nothing written): the scene's\n"
-         "                         unknown commands, repeated commands and the like, NaN pixels\n"
+         "  --strict               every warning is an error, nothing written: the scene's (exit 2:\n"
+         "                         unknown commands, repeated commands and the like, NaN pixels)\n"
+         "                         and the command line's (exit 1: --spp for a Whitted scene, an\n"
+         "                         output name not .png, .ppm or .pfm)\n"
          "\n"
          "comparison options (diff and --check):\n"
          "  --max-pixels-over S:L  fail when more than L pixels (a count, or a share with %,\n"
@@ -64,7 +71,8 @@ const char* usageText() {
          "  --max-diff N           fail when any channel differs by more than N/255\n"
          "                         (with neither, any difference fails)\n"
          "  --json                 print the metrics as one JSON object on stdout\n"
-         "  --diff FILE.png        write a heatmap of the differences, with its legend\n"
+         "  --diff FILE.png        write a heatmap of the differences, with its legend (PNG, or\n"
+         "                         PPM for FILE.ppm)\n"
          "  --diff-scale N         differences of N/255 or more are red in the heatmap (default 16)\n"
          "\n"
          "merge: puts crops (--crop) back together into their full image, each where its record\n"
@@ -83,15 +91,19 @@ const char* usageText() {
          "\n"
          "exit status:\n"
          "  0    ok (warnings, if any, on stderr)\n"
-         "  1    usage error (the command line)\n"
-         "  2    scene error: the scene file cannot be rendered as meant (with --strict: any warning)\n"
+         "  1    usage error: the command line (with --strict: its warnings too), or an output\n"
+         "       that is a file the run reads or writes already (nothing rendered or written)\n"
+         "  2    scene error: the scene file cannot be rendered as meant (with --strict: any of\n"
+         "       its warnings); a line over 1 MiB, a file over 1 GiB, a byte that is not text\n"
          "  3    device error: the Vulkan backend cannot render here (no driver or device, a failed\n"
          "       call, a scene beyond its limits); --backend cpu may\n"
-         "  4    I/O error: a file cannot be read or written\n"
+         "  4    I/O error: a file cannot be read or written (also an output refused by what it\n"
+         "       is: a directory, device, FIFO, a file with several hard links)\n"
          "  5    images differ beyond the thresholds (diff, --check, --compare)\n"
          "  6    out of memory (host or device), also when found before allocating\n"
          "  70   internal error: a bug in vkrt\n"
-         "  128+N  stopped by signal N (130: Ctrl-C, 143: SIGTERM); nothing written\n"
+         "  128+N  stopped by signal N (130: Ctrl-C, 143: SIGTERM, 129: SIGHUP); nothing written,\n"
+         "       no temporary file left\n"
          "  several scenes: the highest of their statuses (a signal stops the run)\n";
 }
 
@@ -103,7 +115,7 @@ int integerValue(const std::string& option, const std::string& v, int lo, int hi
   auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
   if (ec != std::errc() || end != v.data() + v.size() || n < lo || n > hi)
     throw UsageError(option + " expects an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                     ", got '" + v + "'");
+                     ", got '" + echoed(v) + "'");
   return n;
 }
 
@@ -121,7 +133,7 @@ void sizeValue(const std::string& v, int& width, int& height) {
   }
   if (x == std::string::npos || width == 0 || height == 0)
     throw UsageError("--size expects WIDTHxHEIGHT, each from 1 to " + std::to_string(kMaxImageEdge) +
-                     " (e.g. 320x240), got '" + v + "'");
+                     " (e.g. 320x240), got '" + echoed(v) + "'");
 }
 
 // --scale F: a finite number greater than 0.
@@ -129,7 +141,7 @@ double scaleValue(const std::string& v) {
   double f = 0;
   auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
   if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || !(f > 0))
-    throw UsageError("--scale expects a number greater than 0 (e.g. 0.5), got '" + v + "'");
+    throw UsageError("--scale expects a number greater than 0 (e.g. 0.5), got '" + echoed(v) + "'");
   return f;
 }
 
@@ -138,7 +150,7 @@ std::uint32_t seedValue(const std::string& v) {
   std::uint32_t n = 0;
   auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
   if (ec != std::errc() || end != v.data() + v.size())
-    throw UsageError("--seed expects a whole number from 0 to 4294967295, got '" + v + "'");
+    throw UsageError("--seed expects a whole number from 0 to 4294967295, got '" + echoed(v) + "'");
   return n;
 }
 
@@ -147,8 +159,15 @@ double timeValue(const std::string& v) {
   double f = 0;
   auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
   if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || !(f > 0) || f > 31536000.0)
-    throw UsageError("--time expects seconds, a number greater than 0 (e.g. 2.5), got '" + v + "'");
+    throw UsageError("--time expects seconds, a number greater than 0 (e.g. 2.5), got '" + echoed(v) + "'");
   return f;
+}
+
+// An output named '-': vkrt writes images into files only (its reports go to stdout).
+void refuseStandardOutput(const std::string& option, const std::string& path) {
+  if (path == "-")
+    throw UsageError(option + " -: vkrt writes images into files, not to standard output (where its reports go); "
+                     "name a file ('./-' for a file named '-')");
 }
 
 // vkrt merge [--allow-gaps] -o OUT.png TILE.png ...
@@ -166,10 +185,11 @@ Options parseMergeOptions(const std::vector<std::string>& args) {
       if (a.rfind("--output=", 0) == 0) {
         o.mergeOutput = a.substr(9);
       } else {
-        if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
+        if (i + 1 >= args.size()) throw UsageError("option " + echoed(a) + " needs a value");
         o.mergeOutput = args[++i];
       }
       if (o.mergeOutput.empty()) throw UsageError("option -o needs a non-empty file name");
+      refuseStandardOutput("-o", o.mergeOutput);
     } else if (a == "--allow-gaps") {
       o.allowGaps = true;
     } else if (a == "-q" || a == "--quiet") {
@@ -177,12 +197,15 @@ Options parseMergeOptions(const std::vector<std::string>& args) {
     } else if (a == "-h" || a == "--help") {
       o.help = true;
     } else {
-      throw UsageError("unknown merge option '" + a + "' (merge takes -o OUT.png, --allow-gaps, -q)");
+      throw UsageError("unknown merge option '" + echoed(a) + "' (merge takes -o OUT.png, --allow-gaps, -q)");
     }
   }
   if (o.help) return o;
   if (o.mergeOutput.empty()) throw UsageError("merge needs the output image: vkrt merge -o OUT.png TILE.png ...");
   if (o.mergeTiles.empty()) throw UsageError("merge needs at least one tile: vkrt merge -o OUT.png TILE.png ...");
+  if (!hasImageExtension(o.mergeOutput))
+    o.warnings.push_back("output file '" + abbreviated(o.mergeOutput) +
+                         "' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name");
   return o;
 }
 
@@ -203,7 +226,7 @@ Options parseOptions(const std::vector<std::string>& args) {
   for (std::size_t i = first; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const std::string& name) -> const std::string& {
-      if (i + 1 >= args.size()) throw UsageError("option " + name + " needs a value");
+      if (i + 1 >= args.size()) throw UsageError("option " + echoed(name) + " needs a value");
       return args[++i];
     };
     // --name=value is accepted as well as --name value.
@@ -227,6 +250,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     } else if (name == "-o" || name == "--output") {
       output = take(name);
       if (output->empty()) throw UsageError("option " + name + " needs a non-empty file name");
+      refuseStandardOutput(name, *output);
     } else if (name == "--size") {
       sizeValue(take(name), o.request.width, o.request.height);
     } else if (name == "--scale") {
@@ -236,7 +260,7 @@ Options parseOptions(const std::vector<std::string>& args) {
       o.request.crop = parseCropOption(v);
       if (!o.request.crop)
         throw UsageError("--crop expects X0,Y0,X1,Y1 (four whole numbers, the pixels [X0,X1) x [Y0,Y1)), got '" +
-                         v + "'");
+                         echoed(v) + "'");
     } else if (name == "--backend") {
       std::string b = take(name);
       if (b == "cpu")
@@ -244,7 +268,7 @@ Options parseOptions(const std::vector<std::string>& args) {
       else if (b == "vulkan")
         o.request.backend = Backend::Vulkan;
       else
-        throw UsageError("unknown backend '" + b + "' (expected: vulkan or cpu)");
+        throw UsageError("unknown backend '" + echoed(b) + "' (expected: vulkan or cpu)");
     } else if (name == "--device") {
       o.request.device = take(name);
       if (o.request.device.empty()) throw UsageError("--device needs an index or a name");
@@ -259,7 +283,7 @@ Options parseOptions(const std::vector<std::string>& args) {
       else if (r == "storage")
         o.request.reads = SceneReads::Storage;
       else
-        throw UsageError("unknown --reads '" + r + "' (expected: auto, texel or storage)");
+        throw UsageError("unknown --reads '" + echoed(r) + "' (expected: auto, texel or storage)");
     } else if (a == "--no-specialize") {   // for the benchmark and tests; not in --help
       o.request.specialize = false;
     } else if (name == "--spp") {
@@ -277,7 +301,7 @@ Options parseOptions(const std::vector<std::string>& args) {
       if (c == "auto") o.request.cutoff = Cutoff::Auto;
       else if (c == "on") o.request.cutoff = Cutoff::On;
       else if (c == "off") o.request.cutoff = Cutoff::Off;
-      else throw UsageError("unknown --cutoff '" + c + "' (expected: auto, on or off)");
+      else throw UsageError("unknown --cutoff '" + echoed(c) + "' (expected: auto, on or off)");
     } else if (a == "--validation") {
       o.request.validation = true;
     } else if (name == "--step-budget") {   // for tests of the loop budget; not in --help
@@ -296,6 +320,8 @@ Options parseOptions(const std::vector<std::string>& args) {
       o.json = true;
     } else if (name == "--diff") {
       o.heatmapPath = take(name);
+      if (o.heatmapPath->empty()) throw UsageError("option --diff needs a non-empty file name");
+      refuseStandardOutput(name, *o.heatmapPath);
     } else if (name == "--diff-scale") {
       o.heatmapScale = integerValue(name, take(name), 1, 255);
     } else if (a == "--strict") {
@@ -309,10 +335,20 @@ Options parseOptions(const std::vector<std::string>& args) {
     } else if (a == "--version") {
       o.version = true;
     } else {
-      throw UsageError("unknown option '" + a + "'");
+      throw UsageError("unknown option '" + echoed(a) + "'");
     }
   }
   if (const char* v = std::getenv("VKRT_VALIDATION"); v && std::string(v) == "1") o.request.validation = true;
+  if (o.heatmapPath) {
+    if (imageFormatFor(*o.heatmapPath) == ImageFormat::Pfm)
+      throw UsageError("--diff " + abbreviated(*o.heatmapPath) + ": the heatmap is an 8-bit image; name it .png or .ppm");
+    if (!hasImageExtension(*o.heatmapPath)) {
+      std::string w = "heatmap file '" + abbreviated(*o.heatmapPath) +
+                      "' is not named .png or .ppm: vkrt writes PNG, under that name";
+      if (o.request.strict) throw UsageError(w + " [--strict]");
+      o.warnings.push_back(w);
+    }
+  }
   if (o.diffCommand) {
     if (images.size() != 2) throw UsageError("diff needs two images: vkrt diff A.png B.png");
     o.diffA = images[0];
@@ -323,16 +359,19 @@ Options parseOptions(const std::vector<std::string>& args) {
   if (comparing && !o.checkAgainst && !o.compare)
     throw UsageError("--max-pixels-over, --max-diff, --json and --diff need --check REF.png or --compare (or vkrt diff)");
   if (o.compare && o.checkAgainst) throw UsageError("--compare and --check do not go together");
+  if (o.compare && output)
+    throw UsageError("--compare writes no image (it renders with both backends and compares them): -o " +
+                     abbreviated(*output) + " does not go with it");
   if (o.request.width > 0 && o.request.scale > 0) throw UsageError("--size and --scale do not go together");
   if (output && output->back() == '/') {
     o.request.outputDir = *output;
   } else if (output) {
     if (scenes.size() > 1)
-      throw UsageError("-o " + *output + " names one file, for " + std::to_string(scenes.size()) +
+      throw UsageError("-o " + abbreviated(*output) + " names one file, for " + std::to_string(scenes.size()) +
                        " scenes: give a folder (-o DIR/, with the '/') or leave -o out");
     o.request.output = *output;
     if (!hasImageExtension(*output)) {
-      std::string w = "output file '" + *output + "' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name";
+      std::string w = "output file '" + abbreviated(*output) + "' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name";
       if (o.request.strict) throw UsageError(w + " [--strict]");
       o.warnings.push_back(w);
     }

@@ -2,6 +2,7 @@
 // them; errors are thrown once, at the end, as one SceneError (SPEC section 8).
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -45,6 +46,22 @@ inline std::string escapedBytes(std::string_view text) {
     }
   }
   return s;
+}
+
+// A token as a message echoes it: escapedBytes() of at most its first kEchoedTokenBytes
+// bytes, and for a longer one "... (N bytes)" after them, so that one huge token (a
+// megabyte-long word, a long argument) never fills the terminal.
+inline constexpr std::size_t kEchoedTokenBytes = 200;
+// A path as a message names it: whole up to kEchoedPathBytes (PATH_MAX: any path the
+// system takes), else cut there with "... (N bytes)"; its bytes as they are.
+inline constexpr std::size_t kEchoedPathBytes = 4096;
+inline std::string abbreviated(std::string_view text, std::size_t limit = kEchoedPathBytes) {
+  if (text.size() <= limit) return std::string(text);
+  return std::string(text.substr(0, limit)) + "... (" + std::to_string(text.size()) + " bytes)";
+}
+inline std::string echoed(std::string_view text) {
+  if (text.size() <= kEchoedTokenBytes) return escapedBytes(text);
+  return escapedBytes(text.substr(0, kEchoedTokenBytes)) + "... (" + std::to_string(text.size()) + " bytes)";
 }
 
 // A scene that cannot be rendered. diagnostics() holds every problem found in the file, in

@@ -55,6 +55,38 @@ bool parseSimpleDecimal(const char* p, const char* end, double& value) {
   return true;
 }
 
+// For a decimal that from_chars found out of range: whether its magnitude is below 1 (it
+// underflows) rather than above (it overflows). The decimal exponent of its first non-zero
+// digit decides; an all-zero mantissa is never out of range.
+bool belowOne(const char* p, const char* end) {
+  if (p != end && (*p == '-' || *p == '+')) ++p;
+  long long position = 0;   // the power of ten of the first non-zero digit, before the exponent
+  bool found = false, point = false;
+  long long intDigits = 0, leadingFractionZeros = 0;
+  for (; p != end && *p != 'e' && *p != 'E'; ++p) {
+    if (*p == '.') {
+      point = true;
+    } else if (!found && *p == '0') {
+      if (point) ++leadingFractionZeros;
+    } else if (!found) {
+      found = true;
+      if (!point) ++intDigits;
+    } else if (!point) {
+      ++intDigits;
+    }
+  }
+  position = intDigits > 0 ? intDigits - 1 : -(leadingFractionZeros + 1);
+  long long exponent = 0;
+  bool negative = false;
+  if (p != end) {   // 'e'
+    ++p;
+    if (p != end && (*p == '-' || *p == '+')) negative = *p++ == '-';
+    for (; p != end; ++p)
+      if (exponent < 1000000000LL) exponent = exponent * 10 + (*p - '0');   // saturates: only the sign matters
+  }
+  return position + (negative ? -exponent : exponent) < 0;
+}
+
 }  // namespace
 
 NumberStatus parseNumber(std::string_view token, double& value) {
@@ -67,7 +99,8 @@ NumberStatus parseNumber(std::string_view token, double& value) {
   }
   if (first == last) return NumberStatus::NotANumber;
   auto [end, ec] = std::from_chars(first, last, value, std::chars_format::general);
-  if (ec == std::errc::result_out_of_range) return NumberStatus::NotFinite;
+  if (ec == std::errc::result_out_of_range)
+    return end == last && belowOne(first, last) ? NumberStatus::TooSmall : NumberStatus::NotFinite;
   if (ec != std::errc() || end != last) return NumberStatus::NotANumber;
   if (!std::isfinite(value)) return NumberStatus::NotFinite;
   return NumberStatus::Ok;

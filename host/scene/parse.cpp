@@ -12,12 +12,15 @@
 #include <memory>
 #include <optional>
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "errors.h"
 #include "image/image_file.h"
+#include "interrupt.h"
 #include "scene/linear_map.h"
 #include "scene/number.h"
 #include "scene/unit_vector.h"
@@ -69,8 +72,9 @@ std::optional<Command> commandNamedIgnoringCase(std::string_view name) {
   return std::nullopt;
 }
 
-// A token as messages quote it: in quotes, its non-printable bytes escaped.
-std::string quoted(std::string_view token) { return "'" + escapedBytes(token) + "'"; }
+// A token as messages quote it: in quotes, its non-printable bytes escaped, a long one cut
+// short (echoed()).
+std::string quoted(std::string_view token) { return "'" + echoed(token) + "'"; }
 
 // The kinds of warning (SPEC section 8); each kind is summarised after kMaxWarningsPerKind.
 enum class WarningKind {
@@ -390,6 +394,11 @@ class Parser {
         case NumberStatus::NotFinite:
           error("'" + std::string(cmd) + "' argument " + std::to_string(k + 1) +
                 ": expected a finite number, got " + quoted(args_[k]));
+          ok = false;
+          break;
+        case NumberStatus::TooSmall:
+          error("'" + std::string(cmd) + "' argument " + std::to_string(k + 1) + ": " + quoted(args_[k]) +
+                " is too small: below 4.9e-324, the smallest positive double, it would be 0 (write 0)");
           ok = false;
           break;
       }
@@ -924,21 +933,107 @@ SceneDesc parseScene(std::string_view text, const std::string& fileName) {
 
 SceneDesc parseSceneFile(const std::string& path) { return parseSceneFileWithWarnings(path).scene; }
 
-ParsedScene parseSceneFileWithWarnings(const std::string& path, const ParseOptions& options) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!f) throw IoError("cannot open scene file '" + path + "': " + std::strerror(errno));
-  // One read of the whole file into a buffer of its size (no regrowth, no copies).
-  std::string text;
+namespace {
+
+// Closes a file descriptor when it goes out of scope.
+struct FileDescriptor {
+  int fd = -1;
+  ~FileDescriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+SceneError readLimitError(const std::string& path, int line, std::string message) {
+  return SceneError({{path, line, std::move(message) + "; is this a scene file?", Severity::Error}});
+}
+
+// The text of the scene file `path`, read with read(2) in chunks of at most a mebibyte:
+//  - a signal that interrupts an open or a read (Ctrl-C while a FIFO waits for its writer)
+//    ends it as Interrupted (interrupt.h), where vkrt's handler caught it; any other
+//    interruption is retried;
+//  - reading stops at the first byte that is not text, kept as the last byte, so that the
+//    parser says where it is (a device like /dev/zero: at once);
+//  - a line longer than kMaxSceneLineBytes, or a file longer than kMaxSceneFileBytes, is a
+//    SceneError at that line, found as soon as the bytes past the limit are read (a regular
+//    file's size is checked before reading).
+std::string readSceneText(const std::string& path) {
+  const std::string name = abbreviated(path);
+  FileDescriptor file;
+  while ((file.fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC)) < 0) {
+    if (errno != EINTR) throw IoError("cannot open scene file '" + name + "': " + std::strerror(errno));
+    throwIfInterrupted();
+  }
   struct stat st {};
-  if (::fstat(::fileno(f.get()), &st) == 0 && S_ISREG(st.st_mode)) text.resize(static_cast<std::size_t>(st.st_size));
-  std::size_t got = std::fread(text.data(), 1, text.size(), f.get());
-  text.resize(got);
-  char buf[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, f.get())) > 0) text.append(buf, n);   // grew, or not a regular file
-  if (std::ferror(f.get()))
-    throw IoError("cannot read scene file '" + path + "': " + std::strerror(errno));
-  return parseSceneWithWarnings(text, path, options);
+  if (::fstat(file.fd, &st) != 0) throw IoError("cannot read scene file '" + name + "': " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw IoError("cannot read scene file '" + name + "': " + std::strerror(EISDIR));
+  std::string text;
+  if (S_ISREG(st.st_mode)) {
+    if (static_cast<unsigned long long>(st.st_size) > kMaxSceneFileBytes)
+      throw readLimitError(path, 0,
+                           "the file is " + std::to_string(st.st_size) + " bytes, more than the " +
+                               std::to_string(kMaxSceneFileBytes) + " (1 GiB) a scene file may hold");
+    text.reserve(static_cast<std::size_t>(st.st_size));   // one buffer of its size: no regrowth, no copies
+  }
+  constexpr std::size_t kChunk = std::size_t{1} << 20;
+  std::size_t scanned = 0, lineStart = 0;
+  int line = 1;
+  char probe[1 << 16];   // the read that finds the end of a buffer filled to its reserved size
+  for (;;) {
+    throwIfInterrupted();
+    const std::size_t size = text.size();
+    const std::size_t room = std::min(text.capacity() - size, kChunk);
+    ssize_t n = 0;
+    int readError = 0;
+    if (room > 0) {
+      text.resize(size + room);
+      n = ::read(file.fd, text.data() + size, room);
+      readError = errno;
+      text.resize(size + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
+    } else {
+      n = ::read(file.fd, probe, sizeof probe);
+      readError = errno;
+      if (n > 0) {
+        // A stream (or a file that grew): grow by doubling, never much past the limit.
+        std::size_t want = std::max(text.capacity() * 2, size + kChunk);
+        text.reserve(std::min(want, kMaxSceneFileBytes + kChunk));
+        text.append(probe, static_cast<std::size_t>(n));
+      }
+    }
+    if (n < 0) {
+      if (readError == EINTR) continue;   // the loop's first line ends it when a signal asked to stop
+      throw IoError("cannot read scene file '" + name + "': " + std::strerror(readError));
+    }
+    if (n == 0) break;
+    // Up to the first byte past the file's limit, whose line is then the one reported.
+    const std::size_t end = std::min(text.size(), kMaxSceneFileBytes);
+    bool longLine = false;
+    for (; scanned < end; ++scanned) {
+      const char c = text[scanned];
+      if (c == '\n') {
+        if ((longLine = scanned - lineStart > kMaxSceneLineBytes)) break;
+        ++line;
+        lineStart = scanned + 1;
+      } else if (byteClass(c) == kBinary) {
+        text.resize(scanned + 1);   // the parser reports it
+        return text;
+      }
+    }
+    if (longLine || scanned - lineStart > kMaxSceneLineBytes)
+      throw readLimitError(path, line,
+                           "the line is longer than " + std::to_string(kMaxSceneLineBytes) +
+                               " bytes (1 MiB), the most a line of a scene file may hold");
+    if (text.size() > kMaxSceneFileBytes)
+      throw readLimitError(path, line,
+                           "the file goes on past " + std::to_string(kMaxSceneFileBytes) +
+                               " bytes (1 GiB), the most a scene file may hold");
+  }
+  return text;
+}
+
+}  // namespace
+
+ParsedScene parseSceneFileWithWarnings(const std::string& path, const ParseOptions& options) {
+  return parseSceneWithWarnings(readSceneText(path), path, options);
 }
 
 }  // namespace vkrt

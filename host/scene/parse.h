@@ -2,6 +2,7 @@
 // the vertex lists live only inside the parser. Knows nothing of Vulkan or rendering.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,11 @@ namespace vkrt {
 
 // Largest image edge we accept, in pixels (and so the largest image: 16384 x 16384).
 inline constexpr int kMaxImageEdge = 16384;
+
+// The most a scene file's line, and the whole file, may hold: reading stops past either
+// (a SceneError at that line), and at the first byte that is not text.
+inline constexpr std::size_t kMaxSceneLineBytes = std::size_t{1} << 20;    // 1 MiB
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{1} << 30;    // 1 GiB
 
 // After this many warnings of one kind (unknown commands, repeated commands, ...) the rest
 // of that kind are summarised in one more: "... and N more of this kind".
@@ -35,7 +41,8 @@ struct ParsedScene {
 ParsedScene parseSceneWithWarnings(std::string_view text, const std::string& fileName,
                                    const ParseOptions& options = {});
 
-// Reads and parses a file. Throws IoError when it cannot be opened or read.
+// Reads and parses a file. Throws IoError when it cannot be opened or read, SceneError for
+// a line or a file past the limits above, Interrupted when a signal stops a read (a FIFO).
 ParsedScene parseSceneFileWithWarnings(const std::string& path, const ParseOptions& options = {});
 
 // The same, for callers with no use for warnings (tests, tools): the warnings are dropped.

@@ -1,0 +1,159 @@
+// Messages that say what happened: a number too small for a double, a folder on the way
+// that is a file, a huge token cut short, --strict's exit statuses as --help says them,
+// options that write nothing refused rather than ignored, PNG under another name warned of.
+#include <cstdio>
+#include <filesystem>
+
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include "cli/options.h"
+#include "scene/number.h"
+#include "test_support.h"
+
+using namespace vkrt;
+using namespace vkrt::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kScene = "size 20 15\ncamera 0 0 5 0 0 0 0 1 0 45\ndirectional 0 0 1 1 1 1\ndiffuse 0.5 0 0\n"
+                           "sphere 0 0 0 1\n";
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// Runs vkrt with `args` from the folder `dir`.
+RunResult runIn(const std::string& dir, const std::string& args) {
+  RunResult r;
+  std::FILE* p = ::popen(("cd '" + dir + "' && '" + std::string(VKRT_BINARY) + "' " + args + " 2>&1").c_str(), "r");
+  if (!p) return r;
+  char buf[4096];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
+  int status = ::pclose(p);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+}  // namespace
+
+// Below the smallest positive double a number is "too small", not "not finite"; the
+// subnormal range is accepted; above the largest, "not finite" (it would be infinite).
+TEST(Messages, ANumberTooSmallForADoubleSaysSo) {
+  double v = 1;
+  for (const char* s : {"1e-400", "-1e-400", "+1e-400", "0.001e-322", "2.4e-324", "1e-99999999999999999999"})
+    EXPECT_EQ(parseNumber(s, v), NumberStatus::TooSmall) << s;
+  for (const char* s : {"1e400", "-1e400", "1000e306", "1e99999999999999999999"})
+    EXPECT_EQ(parseNumber(s, v), NumberStatus::NotFinite) << s;
+  EXPECT_EQ(parseNumber("1e-310", v), NumberStatus::Ok);
+  EXPECT_EQ(v, 1e-310);
+  EXPECT_EQ(parseNumber("0e-400", v), NumberStatus::Ok);
+  EXPECT_EQ(v, 0.0);
+  std::string dir = freshDir("messages/too-small");
+  writeFile(dir + "/s.test", kScene + "sphere 0 0 0 1e-400\n");
+  RunResult r = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/s.test");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "s.test:6: error: 'sphere' argument 4: '1e-400' is too small")) << r.output;
+  EXPECT_FALSE(contains(r.output, "finite")) << r.output;
+}
+
+// -o FILE/x.png where FILE is a file: that FILE is a file, not that a folder is missing.
+TEST(Messages, AFileOnTheOutputsWayIsNamed) {
+  std::string dir = freshDir("messages/file-as-folder");
+  writeFile(dir + "/s.test", kScene);
+  writeFile(dir + "/file", "x");
+  RunResult direct = runVkrt("--backend cpu -o " + dir + "/file/x.png " + dir + "/s.test");
+  EXPECT_EQ(direct.exitCode, 4) << direct.output;
+  EXPECT_TRUE(contains(direct.output, "output directory '" + dir + "/file' is not a directory: it is a regular file"))
+      << direct.output;
+  RunResult deeper = runVkrt("--backend cpu -o " + dir + "/file/sub/x.png " + dir + "/s.test");
+  EXPECT_EQ(deeper.exitCode, 4) << deeper.output;
+  EXPECT_TRUE(contains(deeper.output, "'" + dir + "/file' is a regular file, not a directory")) << deeper.output;
+  EXPECT_FALSE(contains(direct.output + deeper.output, "does not exist"));
+}
+
+// A huge token is echoed cut short, with its length: in a scene (a 500 kB unknown command),
+// on the command line (a 100 kB value); a 10 MB one is a line past the limit, not echoed.
+TEST(Messages, HugeTokensAreCutShort) {
+  std::string dir = freshDir("messages/huge-token");
+  writeFile(dir + "/warn.test", kScene + std::string(500000, 'q') + " 1 2 3\n");
+  RunResult warned = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/warn.test");
+  EXPECT_EQ(warned.exitCode, 0) << warned.output.substr(0, 1000);
+  EXPECT_TRUE(contains(warned.output, "unknown command '" + std::string(200, 'q') + "... (500000 bytes)'"))
+      << warned.output.substr(0, 1000);
+  EXPECT_LT(warned.output.size(), 2000u) << warned.output.substr(0, 1000);
+  writeFile(dir + "/huge.test", kScene + std::string(10000000, 'q') + "\n");
+  RunResult huge = runVkrt("--backend cpu -o " + dir + "/o.png " + dir + "/huge.test");
+  EXPECT_EQ(huge.exitCode, 2) << huge.output.substr(0, 1000);
+  EXPECT_LT(huge.output.size(), 2000u) << huge.output.substr(0, 1000);
+  const std::size_t usage = std::string(usageText()).size();
+  for (const char* option : {"--size", "--backend", "--max-pixels-over"}) {
+    RunResult r = runVkrt(std::string(option) + " " + std::string(100000, '7') + " " + dir + "/warn.test");
+    EXPECT_EQ(r.exitCode, 1) << option;
+    EXPECT_TRUE(contains(r.output, "... (100000 bytes)")) << option << r.output.substr(0, 1000);
+    EXPECT_LT(r.output.size(), usage + 1000) << option;
+  }
+}
+
+// --strict turns the command line's warnings into usage errors (1) and the scene's into
+// scene errors (2), as --help says.
+TEST(Messages, StrictExitStatusesAreTheOnesHelpGives) {
+  std::string dir = freshDir("messages/strict");
+  writeFile(dir + "/s.test", kScene);
+  RunResult spp = runVkrt("--strict --spp 4 --backend cpu -o " + dir + "/o.png " + dir + "/s.test");
+  EXPECT_EQ(spp.exitCode, 1) << spp.output;
+  writeFile(dir + "/warn.test", kScene + "unknowncommand 1\n");
+  RunResult scene = runVkrt("--strict --backend cpu -o " + dir + "/o.png " + dir + "/warn.test");
+  EXPECT_EQ(scene.exitCode, 2) << scene.output;
+  EXPECT_FALSE(fileExists(dir + "/o.png"));
+  RunResult help = runVkrt("--help");
+  EXPECT_TRUE(contains(help.output, "and the command line's (exit 1: --spp for a Whitted scene")) << help.output;
+  EXPECT_TRUE(contains(help.output, "1    usage error: the command line (with --strict: its warnings too)"))
+      << help.output;
+}
+
+// Options that would write nothing, or somewhere else than asked, are usage errors:
+// --compare with -o (--compare writes no image), '-' as an output (standard output).
+TEST(Messages, OutputsThatWouldNotBeWrittenAreRefused) {
+  std::string dir = freshDir("messages/refused-outputs");
+  writeFile(dir + "/s.test", kScene);
+  RunResult compare = runIn(dir, "--compare -o x.png s.test");
+  EXPECT_EQ(compare.exitCode, 1) << compare.output;
+  EXPECT_TRUE(contains(compare.output, "--compare writes no image")) << compare.output;
+  RunResult compareDir = runIn(dir, "--compare -o out/ s.test");
+  EXPECT_EQ(compareDir.exitCode, 1) << compareDir.output;
+  for (const char* args : {"--backend cpu -o - s.test", "--backend cpu --output=- s.test", "merge -o - a.png",
+                           "diff a.png b.png --diff -", "--backend cpu s.test --check a.png --diff -"}) {
+    RunResult r = runIn(dir, args);
+    EXPECT_EQ(r.exitCode, 1) << args << "\n" << r.output;
+    EXPECT_TRUE(contains(r.output, "vkrt writes images into files, not to standard output")) << r.output;
+  }
+  RunResult dotSlash = runIn(dir, "-q --backend cpu -o ./- s.test");   // a file named '-', asked for so
+  EXPECT_EQ(dotSlash.exitCode, 0) << dotSlash.output;
+  EXPECT_TRUE(fileExists(dir + "/-"));
+  fs::remove(dir + "/-");
+  EXPECT_FALSE(fileExists(dir + "/x.png"));
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+// merge -o x.bmp says that it writes PNG under that name, as a render does; --diff x.pfm
+// (a float heatmap) is refused, --diff x.ppm writes PPM.
+TEST(Messages, AnImageUnderAnotherNameIsWarnedOf) {
+  std::string dir = freshDir("messages/names");
+  writeFile(dir + "/s.test", kScene);
+  ASSERT_EQ(runIn(dir, "-q --backend cpu --crop 0,0,20,15 -o t.png s.test").exitCode, 0);
+  RunResult merge = runIn(dir, "merge -o x.bmp t.png");
+  EXPECT_EQ(merge.exitCode, 0) << merge.output;
+  EXPECT_TRUE(contains(merge.output, "vkrt: warning: output file 'x.bmp' is not named .png, .ppm or .pfm: vkrt "
+                                     "writes PNG, under that name"))
+      << merge.output;
+  ASSERT_EQ(runIn(dir, "-q --backend cpu -o a.png s.test").exitCode, 0);
+  RunResult pfm = runIn(dir, "diff a.png t.png --diff h.pfm");
+  EXPECT_EQ(pfm.exitCode, 1) << pfm.output;
+  RunResult ppm = runIn(dir, "diff a.png t.png --diff h.ppm");
+  EXPECT_EQ(ppm.exitCode, 0) << ppm.output;
+  EXPECT_EQ(readFile(dir + "/h.ppm").rfind("P6\n", 0), 0u);
+  RunResult other = runIn(dir, "diff a.png t.png --diff h.img");
+  EXPECT_TRUE(contains(other.output, "heatmap file 'h.img' is not named .png or .ppm")) << other.output;
+}
