@@ -263,6 +263,9 @@ int main(int argc, char** argv) {
       vkrt::MergeReport merged;
       if (vkrt::areSampleBatches(options.mergeTiles)) {
         vkrt::RadianceImage mean = vkrt::mergeSampleBatches(options.mergeTiles, &merged);
+        if (!options.quiet)   // -q leaves warnings out, as a scene's
+          if (!options.quiet)
+        for (const std::string& w : merged.warnings) std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str());
         vkrt::writeImageAtomic(mean, options.mergeOutput, merged.samples.gamma);
         if (!options.quiet)
           std::fprintf(stderr, "vkrt: averaged %d batches (%llu samples per pixel) into %s (%dx%d)\n", merged.tiles,
@@ -282,6 +285,8 @@ int main(int argc, char** argv) {
         vkrt::writeImageAtomic(image, options.mergeOutput);
         width = image.width, height = image.height;
       }
+      if (!options.quiet)
+        for (const std::string& w : merged.warnings) std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str());
       if (!options.quiet)
         std::fprintf(stderr, "vkrt: merged %d tiles into %s (%dx%d)%s\n", merged.tiles, options.mergeOutput.c_str(),
                      width, height,

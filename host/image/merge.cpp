@@ -1,60 +1,131 @@
-// Merging crops: read each tile's record and pixels, check that the tiles make one image,
-// copy them into place. Merging sample batches: check that they are of one render, average.
+// Merging crops: read each tile's records, check that the tiles make one image of one render,
+// then read each tile's pixels and copy them into place. Merging sample batches: check that
+// they are of one render, average. Every record is validated before it sizes anything.
 #include "image/merge.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <limits>
+#include <optional>
 #include <type_traits>
 
 #include "errors.h"
 #include "image/crop.h"
 #include "image/pfm.h"
 #include "image/png.h"
+#include "image/render_identity.h"
 
 namespace vkrt {
 namespace {
 
-// A tile of either kind: 8-bit (Image) or linear float from a PFM (RadianceImage).
-template <class Pixels>
+using Records = std::vector<std::pair<std::string, std::string>>;
+
+std::optional<std::string> recordOf(const Records& text, const std::string& keyword) {
+  std::optional<std::string> value;
+  for (const auto& [k, v] : text)
+    if (k == keyword) value = v;
+  return value;
+}
+
+std::string gammaText(double gamma) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", gamma);
+  return buf;
+}
+
+// The render identities of the parts (`what`, `whats`: "tile", "tiles" or "batch", "batches"): each part that carries one
+// must carry the first one's (UsageError naming both files otherwise); a part without one
+// (written before vkrt recorded identities) is merged unchecked, with a warning. Returns the
+// identity when every part carries it, for the merged image.
+std::optional<std::string> checkIdentities(const std::vector<std::string>& paths, const std::vector<Records>& texts,
+                                           const std::string& what, const std::string& whats,
+                                           std::vector<std::string>& warnings) {
+  std::optional<std::string> first;
+  std::size_t firstIndex = 0;
+  bool all = true;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    std::optional<std::string> value = recordOf(texts[i], kRenderKeyword);
+    if (!value) {
+      all = false;
+      warnings.push_back(what + " '" + paths[i] + "' has no " + kRenderKeyword +
+                         " record (written by an older vkrt): merged without checking that it is of the same scene "
+                         "and settings");
+      continue;
+    }
+    if (!parseRenderIdentity(*value))
+      throw UsageError(what + " '" + paths[i] + "': malformed " + kRenderKeyword + " record '" + *value +
+                       "' (16 hex digits expected)");
+    if (!first) {
+      first = value;
+      firstIndex = i;
+    } else if (*value != *first) {
+      throw UsageError(whats + " of different renders: '" + paths[firstIndex] + "' and '" + paths[i] +
+                       "' differ in their scene file or settings (" + kRenderKeyword + " " + *first + " and " +
+                       *value + ")");
+    }
+  }
+  return all ? first : std::nullopt;
+}
+
+// A tile's records and size, read and checked before any pixel is: the crop record (its
+// fields in range), the image's size against the record's rectangle.
 struct Tile {
   std::string path;
   CropRecord record;
-  Pixels image;
+  Records text;
 };
 
-template <class Pixels>
-Tile<Pixels> readTile(const std::string& path) {
-  Tile<Pixels> tile{path, {}, {}};
-  std::optional<std::string> value;
-  for (const auto& [keyword, text] : readImageText(path))
-    if (keyword == kCropKeyword) value = text;
+Tile readTileRecords(const std::string& path, bool pfm) {
+  Tile tile{path, {}, readImageText(path)};   // IoError: unreadable, empty, cut short
+  int width = 0, height = 0;
+  if (pfm) {
+    RadianceImage info = readPfmInfo(path);
+    width = info.width;
+    height = info.height;
+  } else {
+    readImageSize(path, width, height);   // IoError: not an image stb_image reads
+  }
+  std::optional<std::string> value = recordOf(tile.text, kCropKeyword);
   if (!value)
-    throw UsageError("tile '" + path + "' has no " + kCropKeyword +
-                     " record: it is not an image written with --crop");
-  std::optional<CropRecord> record = parseCropRecord(*value);
-  if (!record) throw UsageError("tile '" + path + "': malformed " + kCropKeyword + " record '" + *value + "'");
+    throw UsageError("tile '" + path + "' has no " + kCropKeyword + " record: it is not an image written with --crop");
+  std::string why;
+  std::optional<CropRecord> record = parseCropRecord(*value, &why);
+  if (!record)
+    throw UsageError("tile '" + path + "': malformed " + kCropKeyword + " record '" + *value + "' (" + why + ")");
   tile.record = *record;
-  if constexpr (std::is_same_v<Pixels, RadianceImage>)
-    tile.image = readPfm(path);
-  else
-    tile.image = readImage(path);
-  if (tile.image.width != record->rect.width() || tile.image.height != record->rect.height())
-    throw UsageError("tile '" + path + "' is " + std::to_string(tile.image.width) + "x" +
-                     std::to_string(tile.image.height) + ", but its record says " + *value);
+  if (width != record->rect.width() || height != record->rect.height())
+    throw UsageError("tile '" + path + "' is " + std::to_string(width) + "x" + std::to_string(height) +
+                     ", but its record says " + *value);
   return tile;
 }
 
-// Reads the tiles, checks that they make one image, and copies each into place.
 template <class Pixels>
-Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, std::vector<Tile<Pixels>>& tiles,
-                  MergeReport* report) {
-  for (const std::string& path : tilePaths) tiles.push_back(readTile<Pixels>(path));
-  if (tiles.empty()) throw UsageError("merge needs at least one tile");
+Pixels readTilePixels(const Tile& tile) {
+  Pixels image;
+  if constexpr (std::is_same_v<Pixels, RadianceImage>)
+    image = readPfm(tile.path);
+  else
+    image = readImage(tile.path);
+  // The file was checked a moment ago; one changed since is refused, not copied out of bounds.
+  if (image.width != tile.record.rect.width() || image.height != tile.record.rect.height())
+    throw IoError("cannot read image '" + tile.path + "': it changed while being merged");
+  return image;
+}
+
+// Reads the tiles' records, checks that they make one image of one render, then reads each
+// tile's pixels (one tile at a time) and copies them into place. The merged image carries the
+// tiles' samples record (path-traced tiles) and their render identity, as a full render does.
+template <class Pixels>
+Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
+  if (tilePaths.empty()) throw UsageError("merge needs at least one tile");
+  constexpr bool pfm = std::is_same_v<Pixels, RadianceImage>;
+  std::vector<Tile> tiles;
+  for (const std::string& path : tilePaths) tiles.push_back(readTileRecords(path, pfm));
   const int fullWidth = tiles[0].record.fullWidth, fullHeight = tiles[0].record.fullHeight;
   std::uint64_t covered = 0;
   for (std::size_t i = 0; i < tiles.size(); ++i) {
-    const Tile<Pixels>& t = tiles[i];
+    const Tile& t = tiles[i];
     if (t.record.fullWidth != fullWidth || t.record.fullHeight != fullHeight)
       throw UsageError("tiles of different images: '" + tiles[0].path + "' is a crop of a " +
                        std::to_string(fullWidth) + "x" + std::to_string(fullHeight) + " image, '" + t.path +
@@ -68,6 +139,25 @@ Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, std
     }
     covered += static_cast<std::uint64_t>(t.record.rect.width()) * static_cast<std::uint64_t>(t.record.rect.height());
   }
+  std::vector<std::string> warnings;
+  std::vector<Records> texts;
+  for (const Tile& t : tiles) texts.push_back(t.text);
+  std::optional<std::string> identity = checkIdentities(tilePaths, texts, "tile", "tiles", warnings);
+  // The tiles of one path-traced render carry one samples record; it goes with the image.
+  std::optional<std::string> samples = recordOf(tiles.front().text, kSamplesKeyword);
+  for (const Tile& t : tiles) {
+    std::optional<std::string> value = recordOf(t.text, kSamplesKeyword);
+    if (value != samples)
+      throw UsageError("tiles of different renders: '" + tiles.front().path + "' holds " +
+                       (samples ? "the samples " + *samples : std::string("no samples record")) + ", '" + t.path +
+                       "' " + (value ? "the samples " + *value : std::string("no samples record")));
+  }
+  std::optional<SampleRecord> sampleRecord;
+  if (samples) {
+    sampleRecord = parseSampleRecord(*samples);
+    if (!sampleRecord)
+      throw UsageError("tile '" + tiles.front().path + "': malformed " + kSamplesKeyword + " record '" + *samples + "'");
+  }
   // The tiles do not overlap, so they cover every pixel exactly when their areas add up.
   const std::uint64_t gaps = static_cast<std::uint64_t>(fullWidth) * static_cast<std::uint64_t>(fullHeight) - covered;
   if (gaps > 0 && !allowGaps)
@@ -75,11 +165,23 @@ Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, std
                      std::to_string(fullHeight) + " image are in no tile (a tile missing?); --allow-gaps leaves "
                      "them black");
   Pixels merged(fullWidth, fullHeight);
-  for (const Tile<Pixels>& t : tiles)
-    for (int y = 0; y < t.image.height; ++y)
-      std::memcpy(merged.pixel(t.record.rect.x0, t.record.rect.y0 + y), t.image.pixel(0, y),
-                  static_cast<std::size_t>(t.image.width) * 3 * sizeof(*t.image.pixel(0, 0)));
-  if (report) *report = {static_cast<int>(tiles.size()), gaps, {}};
+  for (const Tile& t : tiles) {
+    const Pixels image = readTilePixels<Pixels>(t);
+    for (int y = 0; y < image.height; ++y)
+      std::memcpy(merged.pixel(t.record.rect.x0, t.record.rect.y0 + y), image.pixel(0, y),
+                  static_cast<std::size_t>(image.width) * 3 * sizeof(*image.pixel(0, 0)));
+  }
+  if (samples) {
+    if constexpr (pfm) merged.samples = sampleRecord->total();
+    merged.text.emplace_back(kSamplesKeyword, *samples);
+  }
+  if (identity && samples) merged.text.emplace_back(kRenderKeyword, *identity);
+  if (report) {
+    report->tiles = static_cast<int>(tiles.size());
+    report->gapPixels = gaps;
+    report->samples = sampleRecord ? *sampleRecord : SampleRecord{};
+    report->warnings = std::move(warnings);
+  }
   return merged;
 }
 
@@ -89,27 +191,16 @@ Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, Merg
   for (const std::string& path : tilePaths)
     if (isPfmFile(path))
       throw UsageError("tile '" + path + "' is a PFM file: merge tiles of one kind (all PFM, or all PNG or PPM)");
-  std::vector<Tile<Image>> tiles;
-  return placeTiles(tilePaths, allowGaps, tiles, report);
+  return placeTiles<Image>(tilePaths, allowGaps, report);
 }
 
-namespace {
-
-std::optional<std::string> recordOf(const std::vector<std::pair<std::string, std::string>>& text,
-                                    const std::string& keyword) {
-  std::optional<std::string> value;
-  for (const auto& [k, v] : text)
-    if (k == keyword) value = v;
-  return value;
+RadianceImage mergeFloatCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
+  for (const std::string& path : tilePaths)
+    if (!isPfmFile(path))
+      throw UsageError("tile '" + path + "' is not a PFM file, and '" + tilePaths.front() +
+                       "' is: merge tiles of one kind (all PFM, or all PNG or PPM)");
+  return placeTiles<RadianceImage>(tilePaths, allowGaps, report);
 }
-
-std::string gammaText(double gamma) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", gamma);
-  return buf;
-}
-
-}  // namespace
 
 bool areSampleBatches(const std::vector<std::string>& paths) {
   std::optional<std::optional<std::string>> place;   // the first file's crop record, or none
@@ -125,88 +216,96 @@ bool areSampleBatches(const std::vector<std::string>& paths) {
 
 RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeReport* report) {
   if (paths.empty()) throw UsageError("merge needs at least one batch");
-  RadianceImage mean;
-  mean.samples = 0;
+  // The records of every batch first, checked before any raster is read.
+  struct Batch {
+    std::string path;
+    int width = 0, height = 0;
+    SampleRecord record;
+    std::optional<std::string> crop;
+  };
+  std::vector<Batch> batches;
+  std::vector<Records> texts;
   SampleRecord merged;
-  std::string firstPath;
-  std::optional<std::string> firstCrop;
-  std::vector<std::pair<std::string, SampleRecord>> seen;
+  std::uint64_t total = 0;
   for (const std::string& path : paths) {
     if (!isPfmFile(path))
       throw UsageError("batch '" + path + "' is not a PFM file: sample batches are averaged from linear float "
                        "images; render each batch with -o NAME.pfm");
-    RadianceImage batch = readPfm(path);
-    std::optional<std::string> value = recordOf(batch.text, kSamplesKeyword);
+    RadianceImage info = readPfmInfo(path);   // IoError: unreadable or cut short
+    Batch batch{path, info.width, info.height, {}, recordOf(info.text, kCropKeyword)};
+    std::optional<std::string> value = recordOf(info.text, kSamplesKeyword);
     if (!value)
       throw UsageError("batch '" + path + "' has no " + kSamplesKeyword +
                        " record: it is not the image of a path-traced render");
     std::optional<SampleRecord> record = parseSampleRecord(*value);
     if (!record) throw UsageError("batch '" + path + "': malformed " + kSamplesKeyword + " record '" + *value + "'");
-    std::optional<std::string> crop = recordOf(batch.text, kCropKeyword);
-    if (seen.empty()) {
-      firstPath = path;
-      firstCrop = crop;
-      merged.gamma = record->gamma;
-    } else {
-      if (batch.width != mean.width || batch.height != mean.height)
-        throw UsageError("batches of different sizes: '" + firstPath + "' is " + std::to_string(mean.width) + "x" +
-                         std::to_string(mean.height) + ", '" + path + "' " + std::to_string(batch.width) + "x" +
-                         std::to_string(batch.height));
-      if (crop != firstCrop)
-        throw UsageError("batches of different places: '" + firstPath + "' is " +
-                         (firstCrop ? "the crop " + *firstCrop : std::string("the whole image")) + ", '" + path +
-                         "' " + (crop ? "the crop " + *crop : std::string("the whole image")));
-      if (record->gamma != merged.gamma)
-        throw UsageError("batches of different gammas: '" + firstPath + "' has gamma " + gammaText(merged.gamma) +
-                         ", '" + path + "' gamma " + gammaText(record->gamma));
+    batch.record = *record;
+    if (batch.width > kMaxRecordedImageEdge || batch.height > kMaxRecordedImageEdge)
+      throw UsageError("batch '" + path + "' is " + std::to_string(batch.width) + "x" + std::to_string(batch.height) +
+                       ", larger than " + std::to_string(kMaxRecordedImageEdge) + " on a side");
+    if (batch.crop) {
+      std::string why;
+      std::optional<CropRecord> crop = parseCropRecord(*batch.crop, &why);
+      if (!crop)
+        throw UsageError("batch '" + path + "': malformed " + kCropKeyword + " record '" + *batch.crop + "' (" + why +
+                         ")");
+      if (crop->rect.width() != batch.width || crop->rect.height() != batch.height)
+        throw UsageError("batch '" + path + "' is " + std::to_string(batch.width) + "x" +
+                         std::to_string(batch.height) + ", but its record says " + *batch.crop);
     }
-    for (const auto& [otherPath, other] : seen) {
-      std::string shared = sharedSample(other, *record);
+    if (!batches.empty()) {
+      const Batch& first = batches.front();
+      if (batch.width != first.width || batch.height != first.height)
+        throw UsageError("batches of different sizes: '" + first.path + "' is " + std::to_string(first.width) + "x" +
+                         std::to_string(first.height) + ", '" + path + "' " + std::to_string(batch.width) + "x" +
+                         std::to_string(batch.height));
+      if (batch.crop != first.crop)
+        throw UsageError("batches of different places: '" + first.path + "' is " +
+                         (first.crop ? "the crop " + *first.crop : std::string("the whole image")) + ", '" + path +
+                         "' " + (batch.crop ? "the crop " + *batch.crop : std::string("the whole image")));
+      if (batch.record.gamma != first.record.gamma)
+        throw UsageError("batches of different gammas: '" + first.path + "' has gamma " +
+                         gammaText(first.record.gamma) + ", '" + path + "' gamma " + gammaText(batch.record.gamma));
+    }
+    for (const Batch& other : batches) {
+      std::string shared = sharedSample(other.record, batch.record);
       if (!shared.empty())
-        throw UsageError("batches '" + otherPath + "' and '" + path + "' hold the same samples (" + shared +
+        throw UsageError("batches '" + other.path + "' and '" + path + "' hold the same samples (" + shared +
                          "): render each batch with its own --seed");
     }
-    seen.emplace_back(path, *record);
-    batch.samples = record->total();
-    batch.text.clear();
-    accumulateMean(mean, std::move(batch));
-    merged.ranges.insert(merged.ranges.end(), record->ranges.begin(), record->ranges.end());
+    if (batch.record.total() > std::numeric_limits<std::uint64_t>::max() - total)
+      throw UsageError("batch '" + path + "': the batches hold more than 2^64 samples per pixel in all");
+    total += batch.record.total();
+    merged.ranges.insert(merged.ranges.end(), batch.record.ranges.begin(), batch.record.ranges.end());
+    texts.push_back(std::move(info.text));
+    batches.push_back(std::move(batch));
   }
-  if (firstCrop) mean.text.emplace_back(kCropKeyword, *firstCrop);
+  std::vector<std::string> warnings;
+  std::optional<std::string> identity = checkIdentities(paths, texts, "batch", "batches", warnings);
+  merged.gamma = batches.front().record.gamma;
+
+  // The rasters, one at a time, into the running mean.
+  RadianceImage mean;
+  mean.samples = 0;
+  for (const Batch& b : batches) {
+    RadianceImage pixels = readPfm(b.path);
+    if (pixels.width != b.width || pixels.height != b.height)
+      throw IoError("cannot read image '" + b.path + "': it changed while being merged");
+    pixels.samples = b.record.total();
+    pixels.text.clear();
+    accumulateMean(mean, std::move(pixels));
+  }
+  mean.text.clear();
+  if (batches.front().crop) mean.text.emplace_back(kCropKeyword, *batches.front().crop);
   mean.text.emplace_back(kSamplesKeyword, formatSampleRecord(merged));
+  if (identity) mean.text.emplace_back(kRenderKeyword, *identity);
   if (report) {
     report->tiles = static_cast<int>(paths.size());
     report->gapPixels = 0;
     report->samples = merged;
+    report->warnings = std::move(warnings);
   }
   return mean;
-}
-
-RadianceImage mergeFloatCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
-  for (const std::string& path : tilePaths)
-    if (!isPfmFile(path))
-      throw UsageError("tile '" + path + "' is not a PFM file, and '" + tilePaths.front() +
-                       "' is: merge tiles of one kind (all PFM, or all PNG or PPM)");
-  std::vector<Tile<RadianceImage>> tiles;
-  RadianceImage merged = placeTiles(tilePaths, allowGaps, tiles, report);
-  // The tiles of one path-traced render carry one samples record; it goes with the image.
-  std::optional<std::string> first = recordOf(tiles.front().image.text, kSamplesKeyword);
-  for (const Tile<RadianceImage>& t : tiles) {
-    std::optional<std::string> value = recordOf(t.image.text, kSamplesKeyword);
-    if (value != first)
-      throw UsageError("tiles of different renders: '" + tiles.front().path + "' holds " +
-                       (first ? "the samples " + *first : std::string("no samples record")) + ", '" + t.path + "' " +
-                       (value ? "the samples " + *value : std::string("no samples record")));
-  }
-  if (first) {
-    std::optional<SampleRecord> record = parseSampleRecord(*first);
-    if (!record)
-      throw UsageError("tile '" + tiles.front().path + "': malformed " + kSamplesKeyword + " record '" + *first + "'");
-    merged.samples = record->total();
-    merged.text.emplace_back(kSamplesKeyword, *first);
-    if (report) report->samples = *record;
-  }
-  return merged;
 }
 
 }  // namespace vkrt
