@@ -61,7 +61,8 @@ TEST(RenderIdentity, RecordRoundTripsAndFnvIsTheStandardHash) {
   EXPECT_EQ(whole.value(), 0x85944171f73967e8ULL);
   EXPECT_EQ(formatRenderIdentity(0xaf63dc4c8601ec8cULL), "af63dc4c8601ec8c");
   EXPECT_EQ(parseRenderIdentity("af63dc4c8601ec8c"), 0xaf63dc4c8601ec8cULL);
-  for (const char* bad : {"", "af63dc4c8601ec8", "af63dc4c8601ec8c0", "af63dc4c8601ec8g", " f63dc4c8601ec8c"})
+  for (const char* bad :
+       {"", "af63dc4c8601ec8", "af63dc4c8601ec8c0", "af63dc4c8601ec8g", " f63dc4c8601ec8c", "AF63DC4C8601EC8C"})
     EXPECT_FALSE(parseRenderIdentity(bad)) << bad;
 }
 
@@ -91,8 +92,8 @@ TEST(MergeIdentity, TilesOfDifferentScenesOrSettingsOfOneSizeAreRefused) {
                 "tiles of different renders: '" + dir + "/a-top.png' and '" + dir +
                     "/b-bottom.png' differ in their scene file or settings (vkrt-render " + top + " and " + other + ")",
                 dir + "/never.png");
-  expectRefused(dir + "/a-top.png " + dir + "/a-depth2.png", 1, "tiles of different renders: '" + dir + "/a-top.png' and '" + dir + "/a-depth2.png'",
-                dir + "/never.png");
+  expectRefused(dir + "/a-top.png " + dir + "/a-depth2.png", 1,
+                "tiles of different renders: '" + dir + "/a-top.png' and '" + dir + "/a-depth2.png'", dir + "/never.png");
 }
 
 // Sample batches of two path-traced scenes of one size (and one gamma) are refused; batches of
@@ -119,7 +120,7 @@ TEST(MergeIdentity, BatchesOfDifferentScenesOfOneSizeAreRefused) {
 }
 
 // Parts written before the identity existed merge, with a warning naming each; a part whose
-// identity is not 16 hex digits is refused.
+// identity is not 16 hex digits, or that carries a record twice, is refused.
 TEST(MergeIdentity, PartsWithoutAnIdentityMergeWithAWarningAndMalformedOnesAreRefused) {
   std::string dir = freshDir("merge-identity/old");
   Image top = gradient(8, 4), bottom = gradient(8, 4);
@@ -139,6 +140,12 @@ TEST(MergeIdentity, PartsWithoutAnIdentityMergeWithAWarningAndMalformedOnesAreRe
   mergeCrops({dir + "/top.png", dir + "/bottom.png"}, false, &report);
   EXPECT_EQ(report.warnings.size(), 2u);
 
+  Image twice = bottom;
+  twice.text.emplace_back(kCropKeyword, "0,0,8,4 of 8 8");
+  writeImageAtomic(twice, dir + "/twice.png");
+  expectRefused(dir + "/top.png " + dir + "/twice.png", 1,
+                "tile '" + dir + "/twice.png' carries two vkrt-crop records ('0,4,8,8 of 8 8' and '0,0,8,4 of 8 8')",
+                dir + "/never.png");
   bottom.text.emplace_back(kRenderKeyword, "not-hex-digits!!");
   writeImageAtomic(bottom, dir + "/bad.png");
   expectRefused(dir + "/top.png " + dir + "/bad.png", 1,

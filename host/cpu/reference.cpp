@@ -114,7 +114,8 @@ RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuO
   // Bands of about bandPixels pixels, a multiple of the 16-row tiles: a million gives every
   // thread tiles enough to share, in 12 MB of floats.
   const std::size_t perRow = static_cast<std::size_t>(std::max(1, region.width()));
-  const int bandRows = static_cast<int>(std::clamp<std::size_t>((options.bandPixels / perRow + 15) / 16 * 16, 16, 1 << 16));
+  const int bandRows =
+      static_cast<int>(std::clamp<std::size_t>((options.bandPixels / perRow + 15) / 16 * 16, 16, 1 << 16));
   const std::uint64_t total = static_cast<std::uint64_t>(region.width()) * static_cast<std::uint64_t>(region.height());
   RayCounts all;
   RadianceImage band;
@@ -123,7 +124,8 @@ RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuO
     const PixelRect rows{region.x0, y0, region.x1, std::min(y0 + bandRows, region.y1)};
     if (band.height != rows.height()) band = RadianceImage(rows.width(), rows.height());
     band.samples = options.sampleCount;
-    const std::uint64_t before = static_cast<std::uint64_t>(y0 - region.y0) * static_cast<std::uint64_t>(region.width());
+    const std::uint64_t before =
+        static_cast<std::uint64_t>(y0 - region.y0) * static_cast<std::uint64_t>(region.width());
     std::function<void(std::uint64_t, std::uint64_t)> progress;
     if (options.progress)
       progress = [&](std::uint64_t done, std::uint64_t) { options.progress(before + done, total); };

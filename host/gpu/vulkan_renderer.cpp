@@ -203,7 +203,8 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   t.pipelineSeconds = secondsSince(t0);
 
   // The whole image, or (streaming to options.rows) one band's rows at a time.
-  RadianceImage image = options.rows ? RadianceImage() : RadianceImage(static_cast<int>(width), static_cast<int>(height));
+  RadianceImage image =
+      options.rows ? RadianceImage() : RadianceImage(static_cast<int>(width), static_cast<int>(height));
   image.samples = options.sampleCount;   // the Whitted model: the mean of identical samples
   RadianceImage band;
   band.samples = options.sampleCount;

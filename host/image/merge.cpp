@@ -28,16 +28,32 @@ std::optional<std::string> recordOf(const Records& text, const std::string& keyw
   return value;
 }
 
+// A part's record `keyword`, which it may carry at most once (UsageError naming the file
+// otherwise: a forged or doctored file, whose two values cannot both be right).
+std::optional<std::string> onlyRecord(const Records& text, const std::string& keyword, const std::string& what,
+                                      const std::string& path) {
+  std::optional<std::string> value;
+  for (const auto& [k, v] : text) {
+    if (k != keyword) continue;
+    if (value)
+      throw UsageError(what + " '" + path + "' carries two " + keyword + " records ('" + *value + "' and '" + v +
+                       "')");
+    value = v;
+  }
+  return value;
+}
+
 std::string gammaText(double gamma) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", gamma);
   return buf;
 }
 
-// The render identities of the parts (`what`, `whats`: "tile", "tiles" or "batch", "batches"): each part that carries one
-// must carry the first one's (UsageError naming both files otherwise); a part without one
-// (written before vkrt recorded identities) is merged unchecked, with a warning. Returns the
-// identity when every part carries it, for the merged image.
+// The render identities of the parts (`what`, `whats`: "tile", "tiles" or "batch",
+// "batches"): each part that carries one must carry the first one's (UsageError naming both
+// files otherwise); a part without one (written before vkrt recorded identities) is merged
+// unchecked, with a warning. Returns the identity when every part carries it, for the
+// merged image.
 std::optional<std::string> checkIdentities(const std::vector<std::string>& paths, const std::vector<Records>& texts,
                                            const std::string& what, const std::string& whats,
                                            std::vector<std::string>& warnings) {
@@ -45,7 +61,7 @@ std::optional<std::string> checkIdentities(const std::vector<std::string>& paths
   std::size_t firstIndex = 0;
   bool all = true;
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    std::optional<std::string> value = recordOf(texts[i], kRenderKeyword);
+    std::optional<std::string> value = onlyRecord(texts[i], kRenderKeyword, what, paths[i]);
     if (!value) {
       all = false;
       warnings.push_back(what + " '" + paths[i] + "' has no " + kRenderKeyword +
@@ -86,7 +102,7 @@ Tile readTileRecords(const std::string& path, bool pfm) {
   } else {
     readImageSize(path, width, height);   // IoError: not an image stb_image reads
   }
-  std::optional<std::string> value = recordOf(tile.text, kCropKeyword);
+  std::optional<std::string> value = onlyRecord(tile.text, kCropKeyword, "tile", path);
   if (!value)
     throw UsageError("tile '" + path + "' has no " + kCropKeyword + " record: it is not an image written with --crop");
   std::string why;
@@ -144,9 +160,9 @@ Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, Mer
   for (const Tile& t : tiles) texts.push_back(t.text);
   std::optional<std::string> identity = checkIdentities(tilePaths, texts, "tile", "tiles", warnings);
   // The tiles of one path-traced render carry one samples record; it goes with the image.
-  std::optional<std::string> samples = recordOf(tiles.front().text, kSamplesKeyword);
+  std::optional<std::string> samples = onlyRecord(tiles.front().text, kSamplesKeyword, "tile", tiles.front().path);
   for (const Tile& t : tiles) {
-    std::optional<std::string> value = recordOf(t.text, kSamplesKeyword);
+    std::optional<std::string> value = onlyRecord(t.text, kSamplesKeyword, "tile", t.path);
     if (value != samples)
       throw UsageError("tiles of different renders: '" + tiles.front().path + "' holds " +
                        (samples ? "the samples " + *samples : std::string("no samples record")) + ", '" + t.path +
@@ -232,8 +248,8 @@ RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeRep
       throw UsageError("batch '" + path + "' is not a PFM file: sample batches are averaged from linear float "
                        "images; render each batch with -o NAME.pfm");
     RadianceImage info = readPfmInfo(path);   // IoError: unreadable or cut short
-    Batch batch{path, info.width, info.height, {}, recordOf(info.text, kCropKeyword)};
-    std::optional<std::string> value = recordOf(info.text, kSamplesKeyword);
+    Batch batch{path, info.width, info.height, {}, onlyRecord(info.text, kCropKeyword, "batch", path)};
+    std::optional<std::string> value = onlyRecord(info.text, kSamplesKeyword, "batch", path);
     if (!value)
       throw UsageError("batch '" + path + "' has no " + kSamplesKeyword +
                        " record: it is not the image of a path-traced render");

@@ -25,7 +25,7 @@ std::optional<std::uint64_t> parseRenderIdentity(const std::string& value) {
   if (value.size() != 16) return std::nullopt;
   std::uint64_t v = 0;
   for (char c : value) {
-    int digit = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+    const int digit = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
     if (digit < 0) return std::nullopt;
     v = v << 4 | static_cast<std::uint64_t>(digit);
   }

@@ -28,7 +28,8 @@ class Fnv1a64 {
 // The record's value: 16 lower-case hex digits.
 std::string formatRenderIdentity(std::uint64_t identity);
 
-// The record's value back; nullopt unless it is exactly 16 hex digits.
+// The record's value back; nullopt unless it is exactly 16 lower-case hex digits (the one
+// spelling of a value, so that records compare as text).
 std::optional<std::uint64_t> parseRenderIdentity(const std::string& value);
 
 }  // namespace vkrt

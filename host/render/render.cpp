@@ -208,11 +208,12 @@ SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, Prog
   return plan;
 }
 
-// The memory a streamed render needs besides the scene (Whitted model, written to a file):
-// the Vulkan backend's band buffers, bounded by VulkanOptions::maxStateBytes (64 MB of
-// suspended states, and pixels and their float copy of at most half that again on any
-// device), or the CPU backend's band of about a million pixels (12 MB); the encoders' rows
-// and zlib's megabyte; 64 bytes a column for a band of up to 256 rows' worth of bookkeeping.
+// The memory a streamed render needs besides the scene (the Whitted model, written to a
+// file). Vulkan: the suspended states (VulkanOptions::maxStateBytes, 64 MB), and the band's
+// pixels and their float copy (28 bytes a pixel of a band sized to those states: about 55 MB
+// on lavapipe, less on a GPU; at least 8 rows, 224 bytes a column). CPU: a band of about a
+// million pixels (12 MB; at least 16 rows, 192 bytes a column). Both: the encoder's rows and
+// zlib's megabyte. 128 MB and 1 KB a column cover either.
 unsigned long long streamedRenderBytes(int width) {
   return (128ULL << 20) + 64ULL * static_cast<unsigned>(width) * 16;
 }
