@@ -273,18 +273,8 @@ int main(int argc, char** argv) {
                        mean.width, mean.height);
         return kExitOk;
       }
-      const bool floatTiles = std::all_of(options.mergeTiles.begin(), options.mergeTiles.end(),
-                                          [](const std::string& path) { return vkrt::isPfmFile(path); });
-      int width = 0, height = 0;
-      if (floatTiles) {
-        vkrt::RadianceImage image = vkrt::mergeFloatCrops(options.mergeTiles, options.allowGaps, &merged);
-        vkrt::writeImageAtomic(image, options.mergeOutput, merged.samples.gamma);
-        width = image.width, height = image.height;
-      } else {
-        vkrt::Image image = vkrt::mergeCrops(options.mergeTiles, options.allowGaps, &merged);
-        vkrt::writeImageAtomic(image, options.mergeOutput);
-        width = image.width, height = image.height;
-      }
+      vkrt::writeMergedCrops(options.mergeTiles, options.allowGaps, options.mergeOutput, &merged);
+      const int width = merged.width, height = merged.height;
       if (!options.quiet)
         for (const std::string& w : merged.warnings) std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str());
       if (!options.quiet)

@@ -13,6 +13,7 @@
 #include "gpu/vulkan_renderer.h"
 #include "image/encode.h"
 #include "image/image_file.h"
+#include "image/merge.h"
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/row_sink.h"
@@ -243,4 +244,80 @@ TEST(LargeImage, PfmRowsGoToTheirPlaceWithoutTheWholeImage) {
   EXPECT_EQ(img.pixel(0, 0)[0], 0.0f);         // black corners
   EXPECT_EQ(img.pixel(16383, 2047)[1], 0.0f);
   fs::remove(dir + "/o.pfm");
+}
+
+// `vkrt merge` of crops streams too: writeMergedCrops gives the bytes of the merge held whole
+// (8-bit tiles to PNG and PPM, PFM tiles to PFM and PNG), also with gaps and with tiles of
+// uneven heights that start and end at other rows; a .pfm of 8-bit tiles is refused.
+TEST(Streaming, MergeWritesTheBytesOfTheMergeHeldWhole) {
+  std::string dir = freshDir("streaming/merge");
+  const std::string scene = sourcePath("scenes/showcase.test");
+  // Uneven tiles: a tall one on the left, three of other heights on the right; one hole.
+  const PixelRect rects[] = {{0, 0, 20, 43}, {20, 0, 61, 7}, {20, 7, 40, 30}, {40, 7, 61, 43}, {20, 30, 40, 40}};
+  std::vector<std::string> png, pfm;
+  for (std::size_t i = 0; i < std::size(rects); ++i) {
+    const PixelRect& r = rects[i];
+    const std::string crop = std::to_string(r.x0) + "," + std::to_string(r.y0) + "," + std::to_string(r.x1) + "," +
+                             std::to_string(r.y1);
+    for (const char* ext : {".png", ".pfm"}) {
+      const std::string out = dir + "/tile" + std::to_string(i) + ext;
+      RunResult t = runVkrt("--backend cpu -q --size 61x43 --crop " + crop + " -o " + out + " " + scene);
+      ASSERT_EQ(t.exitCode, 0) << t.output;
+      (std::string(ext) == ".png" ? png : pfm).push_back(out);
+    }
+  }
+  for (bool gaps : {false, true}) {
+    std::vector<std::string> tiles8 = png, tilesF = pfm;
+    if (gaps) {   // a hole at 20,7,40,30: the tile below it starts while no tile ends there
+      tiles8.erase(tiles8.begin() + 2);
+      tilesF.erase(tilesF.begin() + 2);
+    }
+    Image whole8 = mergeCrops(tiles8, true);
+    RadianceImage wholeF = mergeFloatCrops(tilesF, true);
+    writeImageAtomic(whole8, dir + "/whole.png");
+    writeImageAtomic(whole8, dir + "/whole.ppm");
+    writeImageAtomic(wholeF, dir + "/whole.pfm", 1.0);
+    writeImageAtomic(wholeF, dir + "/whole-f.png", 1.0);
+    MergeReport report;
+    writeMergedCrops(tiles8, true, dir + "/streamed.png", &report);
+    EXPECT_EQ(report.width, 61);
+    EXPECT_EQ(report.height, 43);
+    EXPECT_EQ(report.gapPixels, gaps ? 20u * 3u + 20u * 23u : 20u * 3u);
+    writeMergedCrops(tiles8, true, dir + "/streamed.ppm");
+    writeMergedCrops(tilesF, true, dir + "/streamed.pfm");
+    writeMergedCrops(tilesF, true, dir + "/streamed-f.png");
+    EXPECT_EQ(readFile(dir + "/streamed.png"), readFile(dir + "/whole.png")) << gaps;
+    EXPECT_EQ(readFile(dir + "/streamed.ppm"), readFile(dir + "/whole.ppm")) << gaps;
+    EXPECT_EQ(readFile(dir + "/streamed.pfm"), readFile(dir + "/whole.pfm")) << gaps;
+    EXPECT_EQ(readFile(dir + "/streamed-f.png"), readFile(dir + "/whole-f.png")) << gaps;
+  }
+  EXPECT_THROW(writeMergedCrops(png, true, dir + "/never.pfm"), UsageError);
+  EXPECT_FALSE(fileExists(dir + "/never.pfm"));
+}
+
+// A merge of 16 PFM tiles of 16384x128 streams: each tile is read when the rows reach it and
+// dropped after, so the peak is a tile or two, not the 384 MB merged image.
+TEST(LargeImage, MergeOfTallPfmTilesStreamsWithoutTheWholeImage) {
+  std::string dir = freshDir("streaming/large-merge");
+  writeFile(dir + "/wide.test",
+            "size 16384 2048\ncamera 0 0 4 0 0 0 0 1 0 45\nambient 0.3 0.2 0.1\nsphere 0 0 0 1\n");
+  std::vector<std::string> args = {"merge", "-q", "-o", dir + "/merged.pfm"};
+  for (int i = 0; i < 16; ++i) {
+    const std::string tile = dir + "/tile" + std::to_string(i) + ".pfm";
+    RunResult t = runVkrt("--backend cpu -q --crop 0," + std::to_string(i * 128) + ",16384," +
+                          std::to_string(i * 128 + 128) + " -o " + tile + " " + dir + "/wide.test");
+    ASSERT_EQ(t.exitCode, 0) << t.output;
+    args.push_back(tile);
+  }
+  Finished r = waitVkrt(spawnVkrt(args, dir + "/log"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::printf("[ stats    ] merge of 16 tiles into 16384x2048 PFM: peak RSS %lld MB (float image 384 MB)\n",
+              r.peakRssKb / 1024);
+  EXPECT_LT(r.peakRssKb / 1024, 96);
+  RadianceImage img = readPfm(dir + "/merged.pfm");
+  ASSERT_EQ(img.height, 2048);
+  EXPECT_EQ(img.pixel(8192, 1024)[0], 0.3f);
+  EXPECT_EQ(img.pixel(0, 0)[0], 0.0f);
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".pfm") fs::remove(e.path());
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -15,6 +16,7 @@
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/render_identity.h"
+#include "image/row_sink.h"
 
 namespace vkrt {
 namespace {
@@ -129,14 +131,22 @@ Pixels readTilePixels(const Tile& tile) {
   return image;
 }
 
-// Reads the tiles' records, checks that they make one image of one render, then reads each
-// tile's pixels (one tile at a time) and copies them into place. The merged image carries the
-// tiles' samples record (path-traced tiles) and their render identity, as a full render does.
-template <class Pixels>
-Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
-  if (tilePaths.empty()) throw UsageError("merge needs at least one tile");
-  constexpr bool pfm = std::is_same_v<Pixels, RadianceImage>;
+// A set of tiles checked to make one image of one render, with what the merged image carries:
+// the tiles' samples record (path-traced tiles) and their render identity, as a full render.
+struct CheckedTiles {
   std::vector<Tile> tiles;
+  int fullWidth = 0, fullHeight = 0;
+  std::uint64_t gaps = 0;
+  std::optional<SampleRecord> samples;
+  Records text;
+  std::vector<std::string> warnings;
+};
+
+// Reads the tiles' records (no pixels) and checks them.
+CheckedTiles checkTiles(const std::vector<std::string>& tilePaths, bool allowGaps, bool pfm) {
+  if (tilePaths.empty()) throw UsageError("merge needs at least one tile");
+  CheckedTiles checked;
+  std::vector<Tile>& tiles = checked.tiles;
   for (const std::string& path : tilePaths) tiles.push_back(readTileRecords(path, pfm));
   const int fullWidth = tiles[0].record.fullWidth, fullHeight = tiles[0].record.fullHeight;
   std::uint64_t covered = 0;
@@ -155,10 +165,9 @@ Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, Mer
     }
     covered += static_cast<std::uint64_t>(t.record.rect.width()) * static_cast<std::uint64_t>(t.record.rect.height());
   }
-  std::vector<std::string> warnings;
   std::vector<Records> texts;
   for (const Tile& t : tiles) texts.push_back(t.text);
-  std::optional<std::string> identity = checkIdentities(tilePaths, texts, "tile", "tiles", warnings);
+  std::optional<std::string> identity = checkIdentities(tilePaths, texts, "tile", "tiles", checked.warnings);
   // The tiles of one path-traced render carry one samples record; it goes with the image.
   std::optional<std::string> samples = onlyRecord(tiles.front().text, kSamplesKeyword, "tile", tiles.front().path);
   for (const Tile& t : tiles) {
@@ -168,37 +177,88 @@ Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, Mer
                        (samples ? "the samples " + *samples : std::string("no samples record")) + ", '" + t.path +
                        "' " + (value ? "the samples " + *value : std::string("no samples record")));
   }
-  std::optional<SampleRecord> sampleRecord;
   if (samples) {
-    sampleRecord = parseSampleRecord(*samples);
-    if (!sampleRecord)
+    checked.samples = parseSampleRecord(*samples);
+    if (!checked.samples)
       throw UsageError("tile '" + tiles.front().path + "': malformed " + kSamplesKeyword + " record '" + *samples + "'");
+    checked.text.emplace_back(kSamplesKeyword, *samples);
+    if (identity) checked.text.emplace_back(kRenderKeyword, *identity);
   }
   // The tiles do not overlap, so they cover every pixel exactly when their areas add up.
-  const std::uint64_t gaps = static_cast<std::uint64_t>(fullWidth) * static_cast<std::uint64_t>(fullHeight) - covered;
-  if (gaps > 0 && !allowGaps)
-    throw UsageError(std::to_string(gaps) + " pixels of the " + std::to_string(fullWidth) + "x" +
+  checked.gaps = static_cast<std::uint64_t>(fullWidth) * static_cast<std::uint64_t>(fullHeight) - covered;
+  if (checked.gaps > 0 && !allowGaps)
+    throw UsageError(std::to_string(checked.gaps) + " pixels of the " + std::to_string(fullWidth) + "x" +
                      std::to_string(fullHeight) + " image are in no tile (a tile missing?); --allow-gaps leaves "
                      "them black");
-  Pixels merged(fullWidth, fullHeight);
-  for (const Tile& t : tiles) {
-    const Pixels image = readTilePixels<Pixels>(t);
-    for (int y = 0; y < image.height; ++y)
-      std::memcpy(merged.pixel(t.record.rect.x0, t.record.rect.y0 + y), image.pixel(0, y),
-                  static_cast<std::size_t>(image.width) * 3 * sizeof(*image.pixel(0, 0)));
+  checked.fullWidth = fullWidth;
+  checked.fullHeight = fullHeight;
+  return checked;
+}
+
+void fillReport(CheckedTiles& checked, MergeReport* report) {
+  if (!report) return;
+  report->tiles = static_cast<int>(checked.tiles.size());
+  report->gapPixels = checked.gaps;
+  report->samples = checked.samples ? *checked.samples : SampleRecord{};
+  report->warnings = std::move(checked.warnings);
+  report->width = checked.fullWidth;
+  report->height = checked.fullHeight;
+}
+
+// Copies rows [y0, y0 + band.height) of `tile`'s image (rows of the full image) into `band`.
+template <class Pixels>
+void copyRows(const Tile& tile, const Pixels& image, int y0, Pixels& band) {
+  const PixelRect& r = tile.record.rect;
+  const int from = std::max(y0, r.y0), to = std::min(y0 + band.height, r.y1);
+  for (int y = from; y < to; ++y)
+    std::memcpy(band.pixel(r.x0, y - y0), image.pixel(0, y - r.y0),
+                static_cast<std::size_t>(image.width) * 3 * sizeof(*image.pixel(0, 0)));
+}
+
+// The checked tiles, read one at a time and copied into the whole merged image.
+template <class Pixels>
+Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
+  constexpr bool pfm = std::is_same_v<Pixels, RadianceImage>;
+  CheckedTiles checked = checkTiles(tilePaths, allowGaps, pfm);
+  Pixels merged(checked.fullWidth, checked.fullHeight);
+  for (const Tile& t : checked.tiles) copyRows(t, readTilePixels<Pixels>(t), 0, merged);
+  if (checked.samples) {
+    if constexpr (pfm) merged.samples = checked.samples->total();
   }
-  if (samples) {
-    if constexpr (pfm) merged.samples = sampleRecord->total();
-    merged.text.emplace_back(kSamplesKeyword, *samples);
-  }
-  if (identity && samples) merged.text.emplace_back(kRenderKeyword, *identity);
-  if (report) {
-    report->tiles = static_cast<int>(tiles.size());
-    report->gapPixels = gaps;
-    report->samples = sampleRecord ? *sampleRecord : SampleRecord{};
-    report->warnings = std::move(warnings);
-  }
+  merged.text = checked.text;
+  fillReport(checked, report);
   return merged;
+}
+
+// The checked tiles as bands of rows, top to bottom, to `sink`: a tile is read when the rows
+// reach its top and dropped after its bottom, so memory is the tiles that share a row and a
+// band of at most kMergeBandRows rows, not the merged image.
+constexpr int kMergeBandRows = 64;
+
+template <class Pixels>
+void streamTiles(const CheckedTiles& checked, const std::function<void(int, const Pixels&)>& sink) {
+  std::vector<const Tile*> order;
+  for (const Tile& t : checked.tiles) order.push_back(&t);
+  std::sort(order.begin(), order.end(),
+            [](const Tile* a, const Tile* b) { return a->record.rect.y0 < b->record.rect.y0; });
+  std::vector<std::pair<const Tile*, Pixels>> active;
+  std::size_t next = 0;
+  Pixels band;
+  for (int y = 0; y < checked.fullHeight;) {
+    while (next < order.size() && order[next]->record.rect.y0 <= y) {
+      active.emplace_back(order[next], readTilePixels<Pixels>(*order[next]));
+      ++next;
+    }
+    // The band ends before the next tile starts and where an active one ends.
+    int end = std::min(checked.fullHeight, y + kMergeBandRows);
+    if (next < order.size()) end = std::min(end, order[next]->record.rect.y0);
+    for (const auto& [tile, image] : active) end = std::min(end, tile->record.rect.y1);
+    band = Pixels(checked.fullWidth, end - y);   // black where no tile is
+    for (const auto& [tile, image] : active) copyRows(*tile, image, y, band);
+    sink(y, band);
+    y = end;
+    std::erase_if(active, [y](const auto& a) { return a.first->record.rect.y1 <= y; });
+  }
 }
 
 }  // namespace
@@ -216,6 +276,25 @@ RadianceImage mergeFloatCrops(const std::vector<std::string>& tilePaths, bool al
       throw UsageError("tile '" + path + "' is not a PFM file, and '" + tilePaths.front() +
                        "' is: merge tiles of one kind (all PFM, or all PNG or PPM)");
   return placeTiles<RadianceImage>(tilePaths, allowGaps, report);
+}
+
+void writeMergedCrops(const std::vector<std::string>& tilePaths, bool allowGaps, const std::string& outputPath,
+                      MergeReport* report) {
+  // All PFM: float tiles; else 8-bit ones, and a PFM among them is refused (mergeCrops).
+  const bool pfm = !tilePaths.empty() && std::all_of(tilePaths.begin(), tilePaths.end(), isPfmFile);
+  for (const std::string& path : tilePaths)
+    if (!pfm && isPfmFile(path))
+      throw UsageError("tile '" + path + "' is a PFM file: merge tiles of one kind (all PFM, or all PNG or PPM)");
+  CheckedTiles checked = checkTiles(tilePaths, allowGaps, pfm);
+  if (pfm) {
+    const double gamma = checked.samples ? checked.samples->gamma : 1.0;
+    writeImageStreamed(outputPath, gamma, checked.fullWidth, checked.fullHeight, checked.text,
+                       [&](const RowSink& sink) { streamTiles<RadianceImage>(checked, sink); });
+  } else {
+    writeBytesStreamed(outputPath, checked.fullWidth, checked.fullHeight, checked.text,
+                       [&](const ByteRowSink& sink) { streamTiles<Image>(checked, sink); });
+  }
+  fillReport(checked, report);
 }
 
 bool areSampleBatches(const std::vector<std::string>& paths) {

@@ -19,6 +19,7 @@ struct MergeReport {
   SampleRecord samples;          // batches: the merged image's samples (and gamma)
   // Parts merged unchecked: those without a render identity (image/render_identity.h).
   std::vector<std::string> warnings;
+  int width = 0, height = 0;     // tiles: the merged image's size
 };
 
 // Reads every tile's records, checks them, then reads the tiles' pixels one at a time and
@@ -36,6 +37,15 @@ Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, Merg
 }  // namespace vkrt
 
 namespace vkrt {
+
+// mergeCrops or mergeFloatCrops (by the tiles' kind) written to `outputPath` in its format
+// (image/image_file.h; 8-bit tiles cannot make a .pfm: UsageError) without holding the merged
+// image: after the same checks, each tile is read when the rows reach it and dropped after
+// its last row, and bands of rows go to the file as they are assembled (image/row_sink.h).
+// Memory: the tiles that share a row, not the image. The same errors; nothing is written on
+// one.
+void writeMergedCrops(const std::vector<std::string>& tilePaths, bool allowGaps, const std::string& outputPath,
+                      MergeReport* report = nullptr);
 
 // True when the files are sample batches rather than crops: every one carries a vkrt-samples
 // record, and they lie at one place (the same crop record, or none). Throws IoError.

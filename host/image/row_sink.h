@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "image/image.h"
 #include "image/radiance_image.h"
 
 namespace vkrt {
@@ -25,5 +26,14 @@ using RowSink = std::function<void(int y0, const RadianceImage& band)>;
 void writeImageStreamed(const std::string& path, double gamma, int width, int height,
                         const std::vector<std::pair<std::string, std::string>>& records,
                         const std::function<void(const RowSink&)>& render);
+
+// The same for 8-bit rows (an image already quantized: merged 8-bit tiles), as they are.
+using ByteRowSink = std::function<void(int y0, const Image& band)>;
+
+// writeImageStreamed for 8-bit rows: PNG or PPM (a .pfm name is a UsageError, as
+// writeImageAtomic's for an Image, before anything is created).
+void writeBytesStreamed(const std::string& path, int width, int height,
+                        const std::vector<std::pair<std::string, std::string>>& records,
+                        const std::function<void(const ByteRowSink&)>& render);
 
 }  // namespace vkrt
