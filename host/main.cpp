@@ -268,8 +268,13 @@ int merge(const vkrt::Options& options) {
   files.addOutput(options.mergeOutput, "the merged image");
   vkrt::checkOutputWritable(options.mergeOutput);
   vkrt::MergeReport merged;
+  auto printWarnings = [&] {   // -q leaves warnings out, as a scene's
+    if (!options.quiet)
+      for (const std::string& w : merged.warnings) std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str());
+  };
   if (vkrt::areSampleBatches(options.mergeTiles)) {
     vkrt::RadianceImage mean = vkrt::mergeSampleBatches(options.mergeTiles, &merged);
+    printWarnings();
     vkrt::writeImageAtomic(mean, options.mergeOutput, merged.samples.gamma);
     if (!options.quiet)
       std::fprintf(stderr, "vkrt: averaged %d batches (%llu samples per pixel) into %s (%dx%d)\n", merged.tiles,
@@ -277,21 +282,11 @@ int merge(const vkrt::Options& options) {
                    mean.height);
     return kExitOk;
   }
-  const bool floatTiles = std::all_of(options.mergeTiles.begin(), options.mergeTiles.end(),
-                                      [](const std::string& path) { return vkrt::isPfmFile(path); });
-  int width = 0, height = 0;
-  if (floatTiles) {
-    vkrt::RadianceImage image = vkrt::mergeFloatCrops(options.mergeTiles, options.allowGaps, &merged);
-    vkrt::writeImageAtomic(image, options.mergeOutput, merged.samples.gamma);
-    width = image.width, height = image.height;
-  } else {
-    vkrt::Image image = vkrt::mergeCrops(options.mergeTiles, options.allowGaps, &merged);
-    vkrt::writeImageAtomic(image, options.mergeOutput);
-    width = image.width, height = image.height;
-  }
+  vkrt::writeMergedCrops(options.mergeTiles, options.allowGaps, options.mergeOutput, &merged);
+  printWarnings();
   if (!options.quiet)
     std::fprintf(stderr, "vkrt: merged %d tiles into %s (%dx%d)%s\n", merged.tiles, options.mergeOutput.c_str(),
-                 width, height,
+                 merged.width, merged.height,
                  merged.gapPixels ? (", " + std::to_string(merged.gapPixels) + " pixels left black").c_str() : "");
   return kExitOk;
 }

@@ -5,6 +5,7 @@
 
 #include "image/encode.h"
 #include "image/crop.h"
+#include "image/render_identity.h"
 #include "image/png.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
@@ -113,9 +114,11 @@ TEST(Crop, RecordRoundTripsThroughPngAndPpm) {
                           sourcePath("scenes/spheres.test"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     auto text = readImageText(dir + "/tile" + ext);
-    ASSERT_EQ(text.size(), 1u) << ext;
+    ASSERT_EQ(text.size(), 2u) << ext;
     EXPECT_EQ(text[0].first, "vkrt-crop");
     EXPECT_EQ(text[0].second, "3,4,10,9 of 64 48");
+    EXPECT_EQ(text[1].first, "vkrt-render");   // the render's identity (merge_identity_test.cpp)
+    EXPECT_TRUE(parseRenderIdentity(text[1].second)) << text[1].second;
     Image tile = readImage(dir + "/tile" + ext);
     EXPECT_EQ(tile.width, 7);
     EXPECT_EQ(tile.height, 5);

@@ -72,27 +72,40 @@ TEST(Limits, TenMillionVerticesParseAndRender) {
   EXPECT_LT(r.peakRssKb / 1024, 1024) << "10M vertices should need well under 1 GB";
 }
 
+// A Whitted render to a file streams its rows, so it needs its bands (about 144 MB at 16384
+// wide, whatever the height); a render held whole (a path integrator's running mean) needs
+// 15 bytes a pixel. Either is refused when the memory available is less, before allocating.
 TEST(Limits, AnImageLargerThanTheMemoryIsRefusedBeforeAllocating) {
   std::string dir = freshDir("limits/memory");
   writeFile(dir + "/big.test", "# a big one\nsize 16384 16384\ncamera 0 0 1 0 0 0 0 1 0 45\n");
-  writeFile(dir + "/o.png", kPrecious);
-  Finished r = waitVkrt(spawnVkrt({"--backend", "cpu", "-o", dir + "/o.png", dir + "/big.test"}, dir + "/log",
-                                  {"VKRT_TEST_MEMORY_AVAILABLE_MB=100"}));
-  EXPECT_EQ(r.exitCode, 6) << r.output;
-  EXPECT_NE(r.output.find("vkrt: error: out of memory: a 16384x16384 image (" + dir +
-                          "/big.test:2) needs 3840 MB, and this machine has 100 MB available"),
-            std::string::npos)
-      << r.output;
-  EXPECT_LT(r.peakRssKb / 1024, 200) << "refused, but only after allocating the image";
-  EXPECT_EQ(readFile(dir + "/o.png"), kPrecious);
-  EXPECT_TRUE(leftovers(dir).empty());
+  writeFile(dir + "/path.test", "# a big one\nsize 16384 16384\nintegrator pathtracer\ncamera 0 0 1 0 0 0 0 1 0 45\n");
+  const std::pair<std::string, std::string> cases[] = {
+      {"big.test", "/big.test:2) needs 144 MB (streamed in bands), and this machine has 100 MB available"},
+      {"path.test", "/path.test:2) needs 3840 MB, and this machine has 100 MB available"},
+  };
+  for (const auto& [scene, message] : cases) {
+    writeFile(dir + "/o.png", kPrecious);
+    Finished r = waitVkrt(spawnVkrt({"--backend", "cpu", "-o", dir + "/o.png", dir + "/" + scene}, dir + "/log",
+                                    {"VKRT_TEST_MEMORY_AVAILABLE_MB=100"}));
+    EXPECT_EQ(r.exitCode, 6) << r.output;
+    EXPECT_NE(r.output.find("vkrt: error: out of memory: a 16384x16384 image (" + dir + message), std::string::npos)
+        << r.output;
+    EXPECT_LT(r.peakRssKb / 1024, 200) << "refused, but only after allocating the image";
+    EXPECT_EQ(readFile(dir + "/o.png"), kPrecious);
+    EXPECT_TRUE(leftovers(dir).empty());
+  }
+  // With the memory a streamed render needs, it renders, however tall.
+  Finished tall = waitVkrt(spawnVkrt({"--backend", "cpu", "-q", "--size", "64x16384", "-o", dir + "/tall.png",
+                                      dir + "/big.test"},
+                                     dir + "/log", {"VKRT_TEST_MEMORY_AVAILABLE_MB=200"}));
+  EXPECT_EQ(tall.exitCode, 0) << tall.output;
 }
 
 // The largest size, on both backends: the picture is right (an ambient sphere in the middle,
-// black corners), and the peak memory is within the float image the renderers return (3072 MB
-// of linear RGB) and a quarter of it: the PNG is encoded row by row from the floats, with no
-// 8-bit copy, and the Vulkan backend's bands are bounded.
-TEST(LargeImage, Size16384RendersOnBothBackendsWithinTheFloatImageAndAQuarter) {
+// black corners), and the peak memory is far below the float image (3072 MB of linear RGB):
+// the renderers hand bands of rows to the PNG encoder as they finish them, so the peak is
+// the bands' (CPU: about 20 MB; lavapipe: about 150 MB with the driver), not the image's.
+TEST(LargeImage, Size16384RendersOnBothBackendsInBandsWellUnderAGigabyte) {
   std::string dir = freshDir("large-image");
   writeFile(dir + "/big.test", "size 16384 16384\ncamera 0 0 4 0 0 0 0 1 0 45\nambient 0.3 0.2 0.1\nsphere 0 0 0 1\n");
   const long long imageMb = 16384LL * 16384 * 3 * sizeof(float) / (1024 * 1024);
@@ -104,7 +117,7 @@ TEST(LargeImage, Size16384RendersOnBothBackendsWithinTheFloatImageAndAQuarter) {
     ASSERT_EQ(r.exitCode, 0) << backend << ": " << r.output;
     std::printf("[ stats    ] 16384x16384, %s: peak RSS %lld MB (float image %lld MB)\n", backend.c_str(),
                 r.peakRssKb / 1024, imageMb);
-    EXPECT_LE(r.peakRssKb / 1024, imageMb + imageMb / 4) << backend;
+    EXPECT_LE(r.peakRssKb / 1024, backend == "cpu" ? 64 : 384) << backend;
     Image img = readImage(out);
     ASSERT_EQ(img.width, 16384);
     const std::uint8_t* centre = img.pixel(8192, 8192);

@@ -101,17 +101,45 @@ class Tracer {
 RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options,
                               RayCounts* counts) {
   const PixelRect region = options.crop ? *options.crop : PixelRect{0, 0, scene.width, scene.height};
-  RadianceImage image(region.width(), region.height());
-  image.samples = options.sampleCount;   // the mean of identical samples is the one traced
   Tracer tracer(scene, bvh);
-  shadeTiles(
-      region, options.threads, 1,
-      [&](int x, int y, RayCounts& local) {
-        ++local.primary;
-        return tracer.trace(tracer.cameraRay(x, y), local);
-      },
-      image, options.progress, options.stop, counts);
-  return image;
+  auto shade = [&](int x, int y, RayCounts& local) {
+    ++local.primary;
+    return tracer.trace(tracer.cameraRay(x, y), local);
+  };
+  if (!options.rows) {
+    RadianceImage image(region.width(), region.height());
+    image.samples = options.sampleCount;   // the mean of identical samples is the one traced
+    shadeTiles(region, options.threads, 1, shade, image, options.progress, options.stop, counts);
+    return image;
+  }
+  // Bands of about bandPixels pixels, a multiple of the 16-row tiles: a million gives every
+  // thread tiles enough to share, in 12 MB of floats.
+  const std::size_t perRow = static_cast<std::size_t>(std::max(1, region.width()));
+  const int bandRows =
+      static_cast<int>(std::clamp<std::size_t>((options.bandPixels / perRow + 15) / 16 * 16, 16, 1 << 16));
+  const std::uint64_t total = static_cast<std::uint64_t>(region.width()) * static_cast<std::uint64_t>(region.height());
+  RayCounts all;
+  RadianceImage band;
+  for (int y0 = region.y0; y0 < region.y1; y0 += bandRows) {
+    if (options.stop && options.stop()) break;
+    const PixelRect rows{region.x0, y0, region.x1, std::min(y0 + bandRows, region.y1)};
+    if (band.height != rows.height()) band = RadianceImage(rows.width(), rows.height());
+    band.samples = options.sampleCount;
+    const std::uint64_t before =
+        static_cast<std::uint64_t>(y0 - region.y0) * static_cast<std::uint64_t>(region.width());
+    std::function<void(std::uint64_t, std::uint64_t)> progress;
+    if (options.progress)
+      progress = [&](std::uint64_t done, std::uint64_t) { options.progress(before + done, total); };
+    RayCounts bandCounts;
+    shadeTiles(rows, options.threads, 1, shade, band, progress, options.stop, &bandCounts);
+    all += bandCounts;
+    if (options.stop && options.stop()) break;   // the band may be incomplete
+    options.rows(y0 - region.y0, band);
+  }
+  if (counts) *counts = all;
+  RadianceImage empty;
+  empty.samples = options.sampleCount;
+  return empty;
 }
 
 }  // namespace vkrt

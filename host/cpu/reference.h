@@ -4,12 +4,14 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
 
 #include "image/crop.h"
 #include "image/radiance_image.h"
+#include "image/row_sink.h"
 #include "scene/bvh.h"
 #include "scene/scene_desc.h"
 
@@ -47,6 +49,11 @@ struct CpuOptions {
   std::uint32_t seed = 0;
   std::uint64_t firstSample = 0;
   std::uint32_t sampleCount = 1;
+  // When set, the image is rendered in bands of rows, each handed to `rows` when finished
+  // (image/row_sink.h) and not kept: memory grows with the width, not the image, and the
+  // image returned has no pixels. Rows are relative to the region (the crop's top is 0).
+  RowSink rows;
+  std::size_t bandPixels = 1u << 20;   // with `rows`: about this many pixels a band (12 MB of floats)
 };
 
 // The Whitted model of SPEC sections 3-7 (the path integrators plug in beside it, for

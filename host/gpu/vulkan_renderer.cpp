@@ -207,8 +207,12 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   }
   t.pipelineSeconds = secondsSince(t0);
 
-  RadianceImage image(static_cast<int>(width), static_cast<int>(height));
+  // The whole image, or (streaming to options.rows) one band's rows at a time.
+  RadianceImage image =
+      options.rows ? RadianceImage() : RadianceImage(static_cast<int>(width), static_cast<int>(height));
   image.samples = options.sampleCount;   // the Whitted model: the mean of identical samples
+  RadianceImage band;
+  band.samples = options.sampleCount;
   gpu::GpuPushConstants push = scene.push;
   RayCounts counted;
   for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
@@ -218,10 +222,12 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
 
     t0 = std::chrono::steady_clock::now();
     std::uint32_t rows = std::min(bandHeight, height - y0);
-    const auto* band = static_cast<const float*>(pixels.mapped());   // vec4 per pixel
+    const auto* mapped = static_cast<const float*>(pixels.mapped());   // vec4 per pixel
+    if (options.rows && band.height != static_cast<int>(rows))
+      band = RadianceImage(static_cast<int>(width), static_cast<int>(rows));
     for (std::uint32_t y = 0; y < rows; ++y) {
-      float* out = image.pixel(0, static_cast<int>(y0 + y));
-      const float* in = band + std::size_t{y} * width * 4;
+      float* out = options.rows ? band.pixel(0, static_cast<int>(y)) : image.pixel(0, static_cast<int>(y0 + y));
+      const float* in = mapped + std::size_t{y} * width * 4;
       for (std::uint32_t x = 0; x < width; ++x) {
         out[3 * x] = in[4 * x];
         out[3 * x + 1] = in[4 * x + 1];
@@ -229,6 +235,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
       }
     }
     t.readbackSeconds += secondsSince(t0);
+    if (options.rows) options.rows(static_cast<int>(y0), band);
     if (options.progress) options.progress(std::uint64_t{y0 + rows} * width, std::uint64_t{height} * width);
   }
   if (rays) {

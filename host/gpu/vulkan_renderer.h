@@ -12,6 +12,7 @@
 #include "gpu/context.h"
 #include "image/crop.h"
 #include "image/radiance_image.h"
+#include "image/row_sink.h"
 #include "scene/flatten.h"
 
 namespace vkrt {
@@ -46,6 +47,10 @@ struct VulkanOptions {
   std::uint32_t seed = 0;
   std::uint64_t firstSample = 0;
   std::uint32_t sampleCount = 1;
+  // When set, each band is handed to `rows` as it is read back (image/row_sink.h) and not
+  // kept: the image returned has no pixels, and memory is the band buffers'. Rows are
+  // relative to the region (the crop's top is 0).
+  RowSink rows;
 };
 
 struct VulkanTimings {

@@ -1,6 +1,8 @@
 // Crop rectangles, their record, and reading the text records of PNG, PPM and PFM files.
 #include "image/crop.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -68,21 +70,34 @@ std::string cropProblem(const PixelRect& r, int fullWidth, int fullHeight) {
   return "";
 }
 
-std::optional<CropRecord> parseCropRecord(const std::string& value) {
+std::optional<CropRecord> parseCropRecord(const std::string& value, std::string* why) {
+  auto fail = [why](const std::string& reason) -> std::optional<CropRecord> {
+    if (why) *why = reason;
+    return std::nullopt;
+  };
   std::vector<std::string> words = split(value, ' ');
-  if (words.size() != 4 || words[1] != "of") return std::nullopt;
+  if (words.size() != 4 || words[1] != "of") return fail("not \"X0,Y0,X1,Y1 of W H\"");
   std::optional<PixelRect> rect = parseCropOption(words[0]);
   CropRecord record;
   if (!rect || !parseCount(words[2], record.fullWidth) || !parseCount(words[3], record.fullHeight))
-    return std::nullopt;
+    return fail("not \"X0,Y0,X1,Y1 of W H\" with whole numbers");
+  if (record.fullWidth < 1 || record.fullHeight < 1 || record.fullWidth > kMaxRecordedImageEdge ||
+      record.fullHeight > kMaxRecordedImageEdge)
+    return fail("the full image is not from 1 to " + std::to_string(kMaxRecordedImageEdge) + " pixels on a side");
   record.rect = *rect;
-  if (!cropProblem(record.rect, record.fullWidth, record.fullHeight).empty()) return std::nullopt;
+  if (std::string problem = cropProblem(record.rect, record.fullWidth, record.fullHeight); !problem.empty())
+    return fail(problem);
   return record;
 }
 
 std::vector<std::pair<std::string, std::string>> readImageText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
+  auto cutShort = [&](const std::string& what) { return IoError("cannot read image '" + path + "': " + what); };
+  in.seekg(0, std::ios::end);
+  const auto fileSize = static_cast<std::uint64_t>(std::max<std::streamoff>(0, in.tellg()));
+  in.seekg(0);
+  if (fileSize == 0) throw cutShort("the file is empty");
   if (isPfmFile(path)) return readPfmText(path);
   std::vector<std::pair<std::string, std::string>> text;
   unsigned char signature[8] = {};
@@ -90,15 +105,22 @@ std::vector<std::pair<std::string, std::string>> readImageText(const std::string
   static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   if (in.gcount() == 8 && std::memcmp(signature, kPng, 8) == 0) {
     // Chunks: length, type, data, CRC. The text comes before IDAT in our files, but a PNG may
-    // put it anywhere before IEND; the image data is skipped, not read.
+    // put it anywhere before IEND; the image data is skipped, not read. A file that ends
+    // before IEND is cut short.
     unsigned char head[8];
-    while (in.read(reinterpret_cast<char*>(head), 8)) {
-      std::uint32_t length = bigEndian(head);
+    std::uint64_t at = 8;
+    for (;;) {
+      if (at + 8 > fileSize || !in.read(reinterpret_cast<char*>(head), 8))
+        throw cutShort("the PNG is truncated (it ends before its IEND chunk)");
+      const std::uint64_t length = bigEndian(head);
       std::string type(reinterpret_cast<char*>(head) + 4, 4);
-      if (type == "IEND" || length > 0x7fffffffu) break;
+      if (length > 0x7fffffffu) throw cutShort("the PNG is malformed (a chunk length beyond 2^31)");
+      at += 8 + length + 4;
+      if (at > fileSize) throw cutShort("the PNG is truncated (its " + type + " chunk is cut short)");
+      if (type == "IEND") break;
       if (type == "tEXt" && length <= (1u << 20)) {
         std::string data(length, '\0');
-        if (!in.read(data.data(), length)) break;
+        if (!in.read(data.data(), static_cast<std::streamsize>(length))) throw cutShort("the PNG is truncated");
         std::size_t nul = data.find('\0');
         if (nul != std::string::npos) text.emplace_back(data.substr(0, nul), data.substr(nul + 1));
         in.seekg(4, std::ios::cur);
@@ -107,11 +129,15 @@ std::vector<std::pair<std::string, std::string>> readImageText(const std::string
       }
     }
   } else if (in.gcount() >= 2 && signature[0] == 'P' && signature[1] == '6') {
-    // The header's comment lines, "# KEY VALUE", up to the maxval.
+    // The header's comment lines, "# KEY VALUE", up to the maxval; then the raster, which
+    // must be all there.
+    in.clear();
     in.seekg(2);
-    int numbers = 0;
-    while (numbers < 3 && in) {
+    std::uint64_t numbers[3] = {};
+    int count = 0;
+    while (count < 3) {
       int c = in.peek();
+      if (c == EOF) throw cutShort("the PPM header is truncated");
       if (c == '#') {
         std::string line;
         std::getline(in, line);
@@ -123,9 +149,15 @@ std::vector<std::pair<std::string, std::string>> readImageText(const std::string
       } else {
         std::string word;
         in >> word;
-        ++numbers;
+        if (word.empty() || word.size() > 9 || word.find_first_not_of("0123456789") != std::string::npos)
+          throw cutShort("the PPM header is malformed ('" + word + "')");
+        numbers[count++] = std::stoull(word);
       }
     }
+    in.get();   // the single whitespace byte after the maxval
+    const std::uint64_t raster = numbers[0] * numbers[1] * 3 * (numbers[2] > 255 ? 2 : 1);
+    const auto rasterStart = static_cast<std::uint64_t>(std::max<std::streamoff>(0, in.tellg()));
+    if (!in || rasterStart + raster > fileSize) throw cutShort("the PPM raster is truncated");
   }
   return text;
 }

@@ -25,14 +25,20 @@ struct CropRecord {
 // The keyword of the record: a PNG tEXt chunk, or a PPM header comment "# vkrt-crop VALUE".
 inline constexpr const char* kCropKeyword = "vkrt-crop";
 
+// The largest full image a record may describe, on either side: the renderer's image size
+// limit (scene/parse.h kMaxImageEdge; render.cpp asserts that they agree). Records beyond it
+// are malformed, so that `vkrt merge` never allocates an image no render could have made.
+inline constexpr int kMaxRecordedImageEdge = 16384;
+
 // "X0,Y0,X1,Y1"
 std::string formatPixelRect(const PixelRect& rect);
 
 // "X0,Y0,X1,Y1 of W H"
 std::string formatCropRecord(const CropRecord& record);
 
-// The record's value back; nullopt when malformed, empty or not inside W x H.
-std::optional<CropRecord> parseCropRecord(const std::string& value);
+// The record's value back; nullopt when malformed, empty, not inside W x H, or W or H beyond
+// kMaxRecordedImageEdge (then `why`, when given, says which).
+std::optional<CropRecord> parseCropRecord(const std::string& value, std::string* why = nullptr);
 
 // --crop X0,Y0,X1,Y1: four integers; nullopt when malformed (the bounds are checked later,
 // against the image size).
@@ -43,7 +49,8 @@ std::string cropProblem(const PixelRect& rect, int fullWidth, int fullHeight);
 
 // The text records of an image file: PNG tEXt chunks (keyword, text), or the "# KEY VALUE"
 // comment lines of a PPM header, or the trailer of a PFM (image/pfm.h). Throws IoError when
-// the file cannot be read; a file that is none of these gives none.
+// the file cannot be read, is empty, or is a PNG, PPM or PFM cut short (a PNG without its
+// IEND chunk, a raster shorter than its header says); a file of another kind gives none.
 std::vector<std::pair<std::string, std::string>> readImageText(const std::string& path);
 
 }  // namespace vkrt

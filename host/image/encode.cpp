@@ -12,6 +12,10 @@ std::uint8_t encodeChannel(float c, double gamma) {
   return static_cast<std::uint8_t>(std::floor(v * 255.0f));
 }
 
+void encodeRow(const float* in, std::size_t count, double gamma, std::uint8_t* out) {
+  for (std::size_t i = 0; i < count; ++i) out[i] = encodeChannel(in[i], gamma);
+}
+
 Image encodeImage(const RadianceImage& image, double gamma) {
   Image out(image.width, image.height);
   const std::size_t n = image.rgb.size();

@@ -2,6 +2,7 @@
 // after the `gamma` encoding of SPEC-PATHTRACING section 1. Knows nothing of rendering.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "image/image.h"
@@ -14,6 +15,9 @@ namespace vkrt {
 // (raytrace.comp, restCannotChangePixel): for gamma 1 a byte is floor(min(c, 1) * 255.0f).
 // The power (gamma != 1 only) is taken in double and rounded to float.
 std::uint8_t encodeChannel(float c, double gamma);
+
+// `count` channels through encodeChannel, from `in` to `out`.
+void encodeRow(const float* in, std::size_t count, double gamma, std::uint8_t* out);
 
 // Every pixel through encodeChannel; the records (text) are kept. gamma > 0.
 Image encodeImage(const RadianceImage& image, double gamma);

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <limits>
 
+#include <unistd.h>
+
 #include "errors.h"
 #include "image/atomic_file.h"
 #include "interrupt.h"
@@ -68,25 +70,60 @@ Header readHeader(std::istream& in, const std::string& path) {
 
 }  // namespace
 
-void writePfmAtomic(const RadianceImage& image, const std::string& path) {
+PfmRowWriter::PfmRowWriter(int fd, int width, int height,
+                           const std::vector<std::pair<std::string, std::string>>& records, const std::string& path)
+    : fd_(fd), width_(width), height_(height), path_(path), records_(records) {
   static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559);
+  std::string header = "PF\n" + std::to_string(width) + " " + std::to_string(height) + "\n-1.0\n";
+  writeAll(fd, reinterpret_cast<const std::uint8_t*>(header.data()), header.size(), path);
+  headerBytes_ = header.size();
+}
+
+void PfmRowWriter::writeAt(const std::uint8_t* data, std::size_t size, std::uint64_t offset) {
+  while (size > 0) {
+    ssize_t n = ::pwrite(fd_, data, size, static_cast<off_t>(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw IoError("cannot write '" + path_ + "': " + (n < 0 ? std::strerror(errno) : "no progress"));
+    data += n;
+    size -= static_cast<std::size_t>(n);
+    offset += static_cast<std::uint64_t>(n);
+  }
+}
+
+void PfmRowWriter::rows(int y0, const RadianceImage& band) {
+  if (band.width != width_ || y0 < 0 || band.height > height_ - y0)
+    throw InternalError("PfmRowWriter: rows " + std::to_string(y0) + "+" + std::to_string(band.height) + " of a " +
+                        std::to_string(width_) + "x" + std::to_string(height_) + " image");
+  const std::size_t rowFloats = static_cast<std::size_t>(width_) * 3;
+  row_.resize(rowFloats);
+  for (int y = 0; y < band.height; ++y) {
+    if ((y & 63) == 0) throwIfInterrupted();
+    std::memcpy(row_.data(), band.pixel(0, y), rowFloats * 4);
+    if constexpr (std::endian::native == std::endian::big)
+      for (std::uint32_t& v : row_) v = byteSwap(v);
+    // Image row y0 + y is file row height - 1 - (y0 + y): the raster is bottom row first.
+    const auto fileRow = static_cast<std::uint64_t>(height_ - 1 - (y0 + y));
+    writeAt(reinterpret_cast<const std::uint8_t*>(row_.data()), rowFloats * 4,
+            headerBytes_ + fileRow * rowFloats * 4);
+  }
+  written_ += static_cast<std::uint64_t>(band.height);
+}
+
+void PfmRowWriter::finish() {
+  if (written_ != static_cast<std::uint64_t>(height_))
+    throw InternalError("PfmRowWriter: " + std::to_string(written_) + " rows of " + std::to_string(height_));
+  if (records_.empty()) return;
+  std::string trailer = kTrailer;
+  for (const auto& [keyword, value] : records_) trailer += keyword + " " + value + "\n";
+  const std::uint64_t end = headerBytes_ + static_cast<std::uint64_t>(width_) * 12 * static_cast<std::uint64_t>(height_);
+  writeAt(reinterpret_cast<const std::uint8_t*>(trailer.data()), trailer.size(), end);
+}
+
+void writePfmAtomic(const RadianceImage& image, const std::string& path) {
   writeFileAtomic(path, ".pfm.tmp", [&](int fd) {
-    std::string header = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
-    writeAll(fd, reinterpret_cast<const std::uint8_t*>(header.data()), header.size(), path);
-    const std::size_t rowFloats = static_cast<std::size_t>(image.width) * 3;
-    std::vector<std::uint32_t> row(rowFloats);
-    for (int y = image.height - 1; y >= 0; --y) {   // bottom row first
-      if ((y & 63) == 0) throwIfInterrupted();
-      std::memcpy(row.data(), image.pixel(0, y), rowFloats * 4);
-      if constexpr (std::endian::native == std::endian::big)
-        for (std::uint32_t& v : row) v = byteSwap(v);
-      writeAll(fd, reinterpret_cast<const std::uint8_t*>(row.data()), rowFloats * 4, path);
-    }
-    if (!image.text.empty()) {
-      std::string trailer = kTrailer;
-      for (const auto& [keyword, value] : image.text) trailer += keyword + " " + value + "\n";
-      writeAll(fd, reinterpret_cast<const std::uint8_t*>(trailer.data()), trailer.size(), path);
-    }
+    PfmRowWriter pfm(fd, image.width, image.height, image.text, path);
+    pfm.rows(0, image);
+    pfm.finish();
   });
 }
 
@@ -99,6 +136,16 @@ RadianceImage readPfmParts(const std::string& path, bool pixels) {
   Header h = readHeader(in, path);
   RadianceImage image;
   const std::size_t values = static_cast<std::size_t>(h.width) * h.height * h.channels;
+  // The raster must be all there: checked before allocating (a header may claim 2^20 x 2^20).
+  const std::streamoff rasterStart = in.tellg();
+  in.seekg(0, std::ios::end);
+  const std::streamoff fileSize = in.tellg();
+  in.seekg(rasterStart);
+  if (rasterStart < 0 || fileSize < 0 ||
+      static_cast<std::uint64_t>(fileSize - rasterStart) < static_cast<std::uint64_t>(values) * 4)
+    throw IoError("cannot read image '" + path + "': the PFM raster is truncated (" +
+                  std::to_string(h.width) + "x" + std::to_string(h.height) + " pixels need " +
+                  std::to_string(static_cast<std::uint64_t>(values) * 4) + " bytes)");
   if (pixels) {
     image = RadianceImage(h.width, h.height);
     std::vector<std::uint32_t> row(static_cast<std::size_t>(h.width) * h.channels);
@@ -132,6 +179,8 @@ RadianceImage readPfmParts(const std::string& path, bool pixels) {
 }  // namespace
 
 RadianceImage readPfm(const std::string& path) { return readPfmParts(path, true); }
+
+RadianceImage readPfmInfo(const std::string& path) { return readPfmParts(path, false); }
 
 std::vector<std::pair<std::string, std::string>> readPfmText(const std::string& path) {
   return readPfmParts(path, false).text;

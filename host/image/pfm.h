@@ -9,6 +9,8 @@
 // it; a file without records has none and is plain PFM.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,13 +19,39 @@
 
 namespace vkrt {
 
+// A PFM written into an open (fixed-size, seekable) file as its rows come, top rows first:
+// the header at construction, each band at its place with pwrite (the raster is the bottom
+// row first, so the top band goes at the end), the records' trailer at finish(). Memory: a
+// row. Throws IoError, Interrupted, InternalError for rows outside the image or missing.
+class PfmRowWriter {
+ public:
+  PfmRowWriter(int fd, int width, int height, const std::vector<std::pair<std::string, std::string>>& records,
+               const std::string& path);
+  // Rows [y0, y0 + band.height) of the image (band.width == width).
+  void rows(int y0, const RadianceImage& band);
+  void finish();
+
+ private:
+  void writeAt(const std::uint8_t* data, std::size_t size, std::uint64_t offset);
+  int fd_, width_, height_;
+  std::string path_;
+  std::vector<std::pair<std::string, std::string>> records_;
+  std::uint64_t headerBytes_ = 0, written_ = 0;
+  std::vector<std::uint32_t> row_;
+};
+
 // Writes `image` (and its records) atomically. Throws IoError (and Interrupted).
 void writePfmAtomic(const RadianceImage& image, const std::string& path);
 
 // Reads a PFM: colour ("PF") or grey ("Pf", each value copied to the three channels), either
 // byte order, any scale; the trailer's records into `text`. `samples` is left at 1 (the
-// caller reads it from a record). Throws IoError for a file that cannot be read or is no PFM.
+// caller reads it from a record). Throws IoError for a file that cannot be read, is no PFM, or
+// is cut short (checked before the raster is allocated).
 RadianceImage readPfm(const std::string& path);
+
+// A PFM's size and records, without its pixels (`rgb` stays empty), after checking that the
+// raster is all there. Throws IoError.
+RadianceImage readPfmInfo(const std::string& path);
 
 // The records of a PFM's trailer (readImageText for .pfm files). Throws IoError.
 std::vector<std::pair<std::string, std::string>> readPfmText(const std::string& path);

@@ -1,5 +1,6 @@
-// PNG writing, streamed row by row through zlib (memory: the image plus about a megabyte, so
-// a 16384x16384 image needs no second copy; and a Ctrl-C is seen between rows), and reading
+// PNG writing, streamed row by row through zlib (memory: about a megabyte besides the rows
+// handed in, so a render's bands can be encoded as they come; and a Ctrl-C is seen between
+// rows), and reading
 // with stb_image. stb_image_write cannot stream: it builds the filtered image and the whole
 // compressed stream in memory, three times the image in all.
 #include "image/png.h"
@@ -7,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <zlib.h>
@@ -76,9 +78,18 @@ void filterRow(const std::uint8_t* row, const std::uint8_t* above, std::size_t b
   }
 }
 
-// `row(y, out)` fills out (width * 3 bytes) with row y, top first, each row once in order.
-void writePngStream(int fd, int width, int height, const std::vector<std::pair<std::string, std::string>>& records,
-                    const std::function<void(int, std::uint8_t*)>& row, const std::string& path) {
+}  // namespace
+
+struct PngRowEncoder::State {
+  z_stream z{};
+  bool started = false;
+  std::vector<std::uint8_t> compressed, filtered, trial, above;
+};
+
+PngRowEncoder::PngRowEncoder(int fd, int width, int height,
+                             const std::vector<std::pair<std::string, std::string>>& records, const std::string& path)
+    : fd_(fd), height_(height), rowBytes_(static_cast<std::size_t>(width) * 3), path_(path),
+      state_(std::make_unique<State>()) {
   static const std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   writeAll(fd, kSignature, sizeof kSignature, path);
   std::vector<std::uint8_t> header;
@@ -92,63 +103,68 @@ void writePngStream(int fd, int width, int height, const std::vector<std::pair<s
     text.insert(text.end(), value.begin(), value.end());
     writeChunk(fd, "tEXt", text.data(), text.size(), path);
   }
-
-  z_stream z{};
-  if (int rc = deflateInit(&z, 1); rc != Z_OK) {
+  if (int rc = deflateInit(&state_->z, 1); rc != Z_OK) {
     if (rc == Z_MEM_ERROR) throw OutOfMemory("no memory for the PNG compressor writing '" + path + "'");
     throw IoError("cannot write '" + path + "': zlib failed to start");
   }
-  std::vector<std::uint8_t> compressed(1u << 20);
-  const std::size_t rowBytes = static_cast<std::size_t>(width) * 3;
-  std::vector<std::uint8_t> filtered(rowBytes + 1), trial(rowBytes + 1), current(rowBytes), above(rowBytes);
-  auto pump = [&](int flush) {
-    do {
-      z.next_out = compressed.data();
-      z.avail_out = static_cast<uInt>(compressed.size());
-      int rc = deflate(&z, flush);
-      if (rc == Z_STREAM_ERROR) throw IoError("cannot write '" + path + "': zlib failed");
-      std::size_t produced = compressed.size() - z.avail_out;
-      if (produced > 0) writeChunk(fd, "IDAT", compressed.data(), produced, path);
-    } while (z.avail_out == 0);
-  };
-  try {
-    for (int y = 0; y < height; ++y) {
-      throwIfInterrupted();
-      row(y, current.data());
-      filterRow(current.data(), y > 0 ? above.data() : nullptr, rowBytes, filtered, trial);
-      current.swap(above);
-      z.next_in = filtered.data();
-      z.avail_in = static_cast<uInt>(filtered.size());
-      pump(Z_NO_FLUSH);
-    }
-    pump(Z_FINISH);
-  } catch (...) {
-    deflateEnd(&z);
-    throw;
-  }
-  deflateEnd(&z);
-  writeChunk(fd, "IEND", nullptr, 0, path);
+  state_->started = true;
+  state_->compressed.resize(1u << 20);
+  state_->filtered.resize(rowBytes_ + 1);
+  state_->trial.resize(rowBytes_ + 1);
+  state_->above.resize(rowBytes_);
 }
 
-}  // namespace
+PngRowEncoder::~PngRowEncoder() {
+  if (state_->started) deflateEnd(&state_->z);
+}
+
+void PngRowEncoder::pump(int flush) {
+  z_stream& z = state_->z;
+  do {
+    z.next_out = state_->compressed.data();
+    z.avail_out = static_cast<uInt>(state_->compressed.size());
+    int rc = deflate(&z, flush);
+    if (rc == Z_STREAM_ERROR) throw IoError("cannot write '" + path_ + "': zlib failed");
+    std::size_t produced = state_->compressed.size() - z.avail_out;
+    if (produced > 0) writeChunk(fd_, "IDAT", state_->compressed.data(), produced, path_);
+  } while (z.avail_out == 0);
+}
+
+void PngRowEncoder::row(const std::uint8_t* rgb) {
+  if (rows_ >= height_) throw InternalError("PngRowEncoder: more rows than the image's " + std::to_string(height_));
+  throwIfInterrupted();
+  filterRow(rgb, rows_ > 0 ? state_->above.data() : nullptr, rowBytes_, state_->filtered, state_->trial);
+  std::memcpy(state_->above.data(), rgb, rowBytes_);
+  state_->z.next_in = state_->filtered.data();
+  state_->z.avail_in = static_cast<uInt>(state_->filtered.size());
+  pump(Z_NO_FLUSH);
+  ++rows_;
+}
+
+void PngRowEncoder::finish() {
+  if (rows_ != height_)
+    throw InternalError("PngRowEncoder: " + std::to_string(rows_) + " rows of " + std::to_string(height_));
+  pump(Z_FINISH);
+  writeChunk(fd_, "IEND", nullptr, 0, path_);
+}
 
 void writePngAtomic(const Image& image, const std::string& path) {
-  const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3;
   writeFileAtomic(path, ".png.tmp", [&](int fd) {
-    writePngStream(fd, image.width, image.height, image.text,
-                   [&](int y, std::uint8_t* out) { std::memcpy(out, image.pixel(0, y), rowBytes); }, path);
+    PngRowEncoder png(fd, image.width, image.height, image.text, path);
+    for (int y = 0; y < image.height; ++y) png.row(image.pixel(0, y));
+    png.finish();
   });
 }
 
 void writePngAtomic(const RadianceImage& image, double gamma, const std::string& path) {
   writeFileAtomic(path, ".png.tmp", [&](int fd) {
-    writePngStream(fd, image.width, image.height, image.text,
-                   [&](int y, std::uint8_t* out) {
-                     const float* in = image.pixel(0, y);
-                     for (std::size_t i = 0, n = static_cast<std::size_t>(image.width) * 3; i < n; ++i)
-                       out[i] = encodeChannel(in[i], gamma);
-                   },
-                   path);
+    PngRowEncoder png(fd, image.width, image.height, image.text, path);
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(image.width) * 3);
+    for (int y = 0; y < image.height; ++y) {
+      encodeRow(image.pixel(0, y), bytes.size(), gamma, bytes.data());
+      png.row(bytes.data());
+    }
+    png.finish();
   });
 }
 
@@ -160,6 +176,16 @@ Image readImage(const std::string& path) {
   std::memcpy(img.rgb.data(), data, img.rgb.size());
   stbi_image_free(data);
   return img;
+}
+
+}  // namespace vkrt
+
+namespace vkrt {
+
+void readImageSize(const std::string& path, int& width, int& height) {
+  int channels = 0;
+  if (!stbi_info(path.c_str(), &width, &height, &channels))
+    throw IoError("cannot read image '" + path + "': " + stbi_failure_reason());
 }
 
 }  // namespace vkrt

@@ -10,12 +10,17 @@
 
 namespace vkrt {
 
+void writePpmHeader(int fd, int width, int height, const std::vector<std::pair<std::string, std::string>>& records,
+                    const std::string& path) {
+  std::string header = "P6\n";
+  for (const auto& [keyword, value] : records) header += "# " + keyword + " " + value + "\n";
+  header += std::to_string(width) + " " + std::to_string(height) + "\n255\n";
+  writeAll(fd, reinterpret_cast<const std::uint8_t*>(header.data()), header.size(), path);
+}
+
 void writePpmAtomic(const Image& image, const std::string& path) {
   writeFileAtomic(path, ".ppm.tmp", [&](int fd) {
-    std::string header = "P6\n";
-    for (const auto& [keyword, value] : image.text) header += "# " + keyword + " " + value + "\n";
-    header += std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
-    writeAll(fd, reinterpret_cast<const std::uint8_t*>(header.data()), header.size(), path);
+    writePpmHeader(fd, image.width, image.height, image.text, path);
     constexpr int kRowsPerWrite = 64;
     for (int y = 0; y < image.height; y += kRowsPerWrite) {
       throwIfInterrupted();

@@ -68,8 +68,13 @@ std::optional<SampleRecord> parseSampleRecord(const std::string& value) {
     r.seed = static_cast<std::uint32_t>(seed);
     record.ranges.push_back(r);
   }
-  std::uint64_t n = 0;
-  if (record.ranges.empty() || !parseWhole(total, UINT64_MAX, n) || n != record.total()) return std::nullopt;
+  // TOTAL is the sum of the counts, which must not wrap around.
+  std::uint64_t n = 0, sum = 0;
+  for (const SampleRange& r : record.ranges) {
+    if (r.count > UINT64_MAX - sum) return std::nullopt;
+    sum += r.count;
+  }
+  if (record.ranges.empty() || !parseWhole(total, UINT64_MAX, n) || n != sum) return std::nullopt;
   // The ranges of one record are disjoint: each pair once.
   for (std::size_t i = 0; i < record.ranges.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)

@@ -2,8 +2,11 @@
 // with a timer per stage.
 #include "render/render.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,6 +20,8 @@
 #include "gpu/vulkan_renderer.h"
 #include "image/encode.h"
 #include "image/image_file.h"
+#include "image/render_identity.h"
+#include "image/row_sink.h"
 #include "image/samples.h"
 #include "image/png.h"
 #include "interrupt.h"
@@ -27,6 +32,9 @@
 #include "timing.h"
 
 namespace vkrt {
+
+static_assert(kMaxRecordedImageEdge == kMaxImageEdge, "merge's record limit (image/crop.h) is the render's");
+
 namespace {
 
 // The sample count a render without --spp limit (--time alone) is planned as.
@@ -65,7 +73,8 @@ void setBatch(Options& o, const RenderRequest& request, const SamplePlan& plan, 
   o.stop = [] { return pendingInterrupt() != 0; };
 }
 
-// Renders the plan's samples in batches (render/progressive) and reports them.
+// Renders the plan's samples in batches (render/progressive) and reports them. (Only the
+// Whitted model streams its rows: it is one batch; a progressive mean is held whole.)
 RadianceImage renderBatches(const BatchRenderer& batches, const SamplePlan& plan, RenderReport& report) {
   ProgressiveReport done;
   RadianceImage image = renderProgressive(batches, plan.progressive, &done);
@@ -80,7 +89,7 @@ RadianceImage renderBatches(const BatchRenderer& batches, const SamplePlan& plan
 // integrators (scene.path.integrator != Integrator::Raytracer) are renderPathReference /
 // renderVulkanPath, each taking the batch's samples and the seed.
 RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress,
-                            RenderReport& report, const SamplePlan& plan) {
+                            RenderReport& report, const SamplePlan& plan, const RowSink* rows) {
   auto t0 = std::chrono::steady_clock::now();
   Bvh bvh = buildBvh(scene);
   report.buildSeconds = secondsSince(t0);
@@ -95,6 +104,7 @@ RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene
     if (scene.path.integrator == Integrator::Raytracer) {
       CpuOptions o;
       o.threads = request.threads;
+      if (rows) o.rows = *rows;
       setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
       image = renderReference(scene, bvh, o, &rays);
     } else {
@@ -114,7 +124,8 @@ RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene
 // Frees the scene's triangles and spheres once they are flattened: nothing after that reads them
 // (152 bytes a triangle, 150 MB for a million, held through the upload and render otherwise).
 RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, ProgressBar& progress,
-                               RenderReport& report, RenderSession& session, const SamplePlan& plan) {
+                               RenderReport& report, RenderSession& session, const SamplePlan& plan,
+                               const RowSink* rows) {
   auto t0 = std::chrono::steady_clock::now();
   // The device first: without one there is nothing to build for.
   bool made = false;
@@ -144,6 +155,7 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
       o.reads = request.reads;
       o.specialize = request.specialize;
       o.cutoff = request.cutoff;
+      if (rows) o.rows = *rows;
       setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
       image = renderVulkan(context, gpuScene, o, &rays, &timings);
     } else {
@@ -198,21 +210,54 @@ SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, Prog
   return plan;
 }
 
-// The image needs width * height * 15 bytes for as long as the render runs: 12 for the linear
-// float image the renderers return, 3 for the bytes it is encoded into for PNG or PPM (the
-// renderers and the writers add about a megabyte to that; the Vulkan backend's bands are
-// bounded; a progressive render's running mean is that float image, each batch one more).
-// Refuse before allocating when the machine does not have that much memory available, naming
-// the `size` line and both numbers, rather than dying half-way.
-void checkImageFitsInMemory(const SceneDesc& scene, int width, int height) {
+// The memory a streamed render needs besides the scene (the Whitted model, written to a
+// file). Vulkan: the suspended states (VulkanOptions::maxStateBytes, 64 MB), and the band's
+// pixels and their float copy (28 bytes a pixel of a band sized to those states: about 55 MB
+// on lavapipe, less on a GPU; at least 8 rows, 224 bytes a column). CPU: a band of about a
+// million pixels (12 MB; at least 16 rows, 192 bytes a column). Both: the encoder's rows and
+// zlib's megabyte. 128 MB and 1 KB a column cover either.
+unsigned long long streamedRenderBytes(int width) {
+  return (128ULL << 20) + 64ULL * static_cast<unsigned>(width) * 16;
+}
+
+// A render held whole needs width * height * 15 bytes for as long as the render runs: 12 for
+// the linear float image the renderers return, 3 for the bytes it is encoded into for PPM or
+// --check (a progressive render's running mean is that float image, each batch one more). A
+// streamed one needs streamedRenderBytes, whatever its height. Refuse before allocating when
+// the machine does not have that much memory available, naming the `size` line and both
+// numbers, rather than dying half-way.
+void checkImageFitsInMemory(const SceneDesc& scene, int width, int height, bool streamed) {
   const unsigned long long have = availableMemoryBytes();
   if (have == 0) return;   // unknown: let the allocation decide
-  const unsigned long long need = 15ULL * static_cast<unsigned>(width) * static_cast<unsigned>(height);
+  const unsigned long long need = streamed ? streamedRenderBytes(width)
+                                           : 15ULL * static_cast<unsigned>(width) * static_cast<unsigned>(height);
   if (need > have)
     throw OutOfMemory("a " + std::to_string(width) + "x" + std::to_string(height) + " image (" +
                       scene.sourcePath + ":" + std::to_string(scene.sizeLine) + ") needs " +
-                      std::to_string(need >> 20) + " MB, and this machine has " + std::to_string(have >> 20) +
-                      " MB available");
+                      std::to_string(need >> 20) + " MB" + (streamed ? " (streamed in bands)" : "") +
+                      ", and this machine has " + std::to_string(have >> 20) + " MB available");
+}
+
+// The render's identity (image/render_identity.h): the scene file's bytes and every setting
+// that changes the picture: the full image size (after --size or --scale), maxdepth (after
+// --maxdepth) and, for a path integrator, whether its camera samples pixel centres (spp 1:
+// gpu_types.h; --spp and --time decide). Left out: the crop (tiles of one render differ in
+// it), the seed and the samples (batches of one render differ in them; the samples record
+// keeps them apart), and what changes only rounding or speed (the backend and device,
+// threads, --reads, --step-budget, --no-specialize, --cutoff).
+std::uint64_t renderIdentity(const SceneDesc& scene, bool pathIntegrator) {
+  Fnv1a64 hash;
+  hash.add("vkrt-render 1\nsize " + std::to_string(scene.width) + " " + std::to_string(scene.height) +
+           "\nmaxdepth " + std::to_string(scene.maxDepth) + "\n");
+  if (pathIntegrator) hash.add(std::string("pixel-centres ") + (scene.path.spp == 1 ? "1" : "0") + "\n");
+  hash.add("scene\n");
+  std::ifstream in(scene.sourcePath, std::ios::binary);
+  if (!in) throw IoError("cannot read '" + scene.sourcePath + "' again: " + std::strerror(errno));
+  std::vector<char> chunk(1 << 16);
+  while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
+    hash.add(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  if (in.bad()) throw IoError("cannot read '" + scene.sourcePath + "' again: " + std::strerror(errno));
+  return hash.value();
 }
 
 // What a file receives is finite: a NaN channel (counted, and warned of) becomes 0 and an
@@ -221,6 +266,15 @@ void keepFinite(RadianceImage& image) {
   constexpr float kMax = std::numeric_limits<float>::max();
   for (float& c : image.rgb)
     if (!std::isfinite(c)) c = std::isnan(c) ? 0.0f : std::copysign(kMax, c);
+}
+
+// A streamed band as the file receives it: itself, or a finite copy when it has a NaN or an
+// infinity (rare: the copy is made only then).
+const RadianceImage& finiteBand(const RadianceImage& band, RadianceImage& copy) {
+  if (std::all_of(band.rgb.begin(), band.rgb.end(), [](float c) { return std::isfinite(c); })) return band;
+  copy = band;
+  keepFinite(copy);
+  return copy;
 }
 
 // --strict: pixels whose colour was NaN or infinite (the scene's extreme values) are an
@@ -319,16 +373,27 @@ std::string resolveOutput(const SceneDesc& scene, const RenderRequest& request) 
   return scene.output;
 }
 
-RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
-                                  bool checkOutput, RenderSession* session) {
-  RenderSession ownSession;   // for this render only, when not lent one
-  RenderSession& vulkan = session ? *session : ownSession;
+namespace {
+
+// A render once its scene is parsed and its settings checked.
+struct PreparedRender {
+  ParsedScene parsed;
+  SamplePlan plan;
+  bool streamed = false;                  // the rows go to the file as they are rendered
+  std::optional<std::uint64_t> identity;  // for the records of a crop or a path integrator's image
+};
+
+// Parses the scene, applies the overrides, resolves the output (when `checkOutput`), checks
+// the crop and the memory, fills the report's facts of the scene, and plans the samples. The
+// render streams when `mayStream` and the scene is the Whitted model's (one batch).
+void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderReport& report, bool checkOutput,
+                   bool mayStream, RenderSession& vulkan, PreparedRender& prepared) {
   if (request.backend == Backend::Vulkan) vulkan.prepare(request);
   auto t0 = std::chrono::steady_clock::now();
-  ParsedScene parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict});
-  SceneDesc& scene = parsed.scene;
+  prepared.parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict});
+  SceneDesc& scene = prepared.parsed.scene;
   report.parseSeconds = secondsSince(t0);
-  if (!parsed.warnings.empty() && request.onWarnings) request.onWarnings(parsed.warnings);
+  if (!prepared.parsed.warnings.empty() && request.onWarnings) request.onWarnings(prepared.parsed.warnings);
   if (request.maxDepth >= 0) scene.maxDepth = request.maxDepth;
   applySizeOverride(request, scene);
   if (checkOutput) {
@@ -341,51 +406,108 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
       throw UsageError("--crop " + formatPixelRect(*request.crop) + ": " + problem +
                        " (" + scene.sourcePath + ")");
   }
+  report.pathIntegrator = scene.path.integrator != Integrator::Raytracer;
+  prepared.streamed = mayStream && !report.pathIntegrator;
   // The image written: the whole, or the crop.
   report.width = request.crop ? request.crop->width() : scene.width;
   report.height = request.crop ? request.crop->height() : scene.height;
-  checkImageFitsInMemory(scene, report.width, report.height);
+  checkImageFitsInMemory(scene, report.width, report.height, prepared.streamed);
   report.maxDepth = scene.maxDepth;
   report.triangles = scene.triangles.size();
   report.spheres = scene.spheres.size();
   report.lights = scene.lights.size();
 
-  report.pathIntegrator = scene.path.integrator != Integrator::Raytracer;
   // The Whitted model ignores `gamma` (SPEC-PATHTRACING section 1): its bytes are SPEC
   // section 7's, and the shader's exactness cut-off reasons in those (gamma 1).
   report.gamma = report.pathIntegrator ? scene.path.gamma : 1.0;
-  SamplePlan plan = samplePlan(request, scene, progress);
+  prepared.plan = samplePlan(request, scene, progress);
+  const SamplePlan& plan = prepared.plan;
   // The render's total decides the camera rule (gpu_types.h: spp 1 samples pixel centres):
   // --spp N renders as a scene of spp N, and --time alone as one of unbounded spp.
   if (report.pathIntegrator)
     scene.path.spp = plan.progressive.spp > 0 && plan.progressive.spp < kMaxSamplesPerPixel
                          ? static_cast<int>(plan.progressive.spp)
                          : kMaxSamplesPerPixel;
+  if (request.crop || report.pathIntegrator) prepared.identity = renderIdentity(scene, report.pathIntegrator);
+}
 
-  RadianceImage image = request.backend == Backend::Cpu ? renderWithCpu(request, scene, progress, report, plan)
-                                                        : renderWithVulkan(request, scene, progress, report, vulkan, plan);
+// Renders a prepared scene; with `rows`, each band goes there as it is finished (the image
+// returned then has no pixels). Nothing may be written after a stop or a --strict failure.
+RadianceImage renderPrepared(const RenderRequest& request, PreparedRender& prepared, ProgressBar& progress,
+                             RenderReport& report, RenderSession& vulkan, const RowSink* rows) {
+  SceneDesc& scene = prepared.parsed.scene;
+  RadianceImage image = request.backend == Backend::Cpu
+                            ? renderWithCpu(request, scene, progress, report, prepared.plan, rows)
+                            : renderWithVulkan(request, scene, progress, report, vulkan, prepared.plan, rows);
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
   checkFinite(request, scene, report);
   keepFinite(image);
-  if (request.crop) image.text.emplace_back(kCropKeyword, formatCropRecord({*request.crop, scene.width, scene.height}));
-  // A path integrator's image says which samples it is the mean of, so that batches rendered
-  // apart (other seeds) can be averaged by `vkrt merge`. The Whitted model's is exact: none.
+  return image;
+}
+
+// The records the image carries: a crop's place; a path integrator's samples (so that
+// batches rendered apart, with other seeds, can be averaged by `vkrt merge`; the Whitted
+// model's image is exact: none); and with either, the render's identity, so that merge can
+// tell the parts of one render from those of another.
+std::vector<std::pair<std::string, std::string>> imageRecords(const RenderRequest& request,
+                                                              const PreparedRender& prepared,
+                                                              const RenderReport& report) {
+  const SceneDesc& scene = prepared.parsed.scene;
+  std::vector<std::pair<std::string, std::string>> text;
+  if (request.crop) text.emplace_back(kCropKeyword, formatCropRecord({*request.crop, scene.width, scene.height}));
   if (report.pathIntegrator)
-    image.text.emplace_back(kSamplesKeyword,
-                            formatSampleRecord({{{plan.seed, plan.progressive.firstSample, report.samples}},
-                                                scene.path.gamma}));
+    text.emplace_back(kSamplesKeyword,
+                      formatSampleRecord({{{prepared.plan.seed, prepared.plan.progressive.firstSample, report.samples}},
+                                          scene.path.gamma}));
+  if (prepared.identity) text.emplace_back(kRenderKeyword, formatRenderIdentity(*prepared.identity));
+  return text;
+}
+
+}  // namespace
+
+RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
+                                  bool checkOutput, RenderSession* session) {
+  RenderSession ownSession;   // for this render only, when not lent one
+  RenderSession& vulkan = session ? *session : ownSession;
+  PreparedRender prepared;
+  prepareRender(request, progress, report, checkOutput, false, vulkan, prepared);
+  RadianceImage image = renderPrepared(request, prepared, progress, report, vulkan, nullptr);
+  image.text = imageRecords(request, prepared, report);
   return image;
 }
 
 RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image,
                              RenderSession* session) {
   RenderReport report;
-  RadianceImage rendered = renderSceneInMemory(request, progress, report, true, session);
-  auto t0 = std::chrono::steady_clock::now();
-  writeImageAtomic(rendered, report.outputPath, report.gamma);
-  report.writeSeconds = secondsSince(t0);
-  if (image) *image = encodeImage(rendered, report.gamma);
+  RenderSession ownSession;
+  RenderSession& vulkan = session ? *session : ownSession;
+  PreparedRender prepared;
+  prepareRender(request, progress, report, true, image == nullptr, vulkan, prepared);
+  if (!prepared.streamed) {
+    RadianceImage rendered = renderPrepared(request, prepared, progress, report, vulkan, nullptr);
+    rendered.text = imageRecords(request, prepared, report);
+    auto t0 = std::chrono::steady_clock::now();
+    writeImageAtomic(rendered, report.outputPath, report.gamma);
+    report.writeSeconds = secondsSince(t0);
+    if (image) *image = encodeImage(rendered, report.gamma);
+    return report;
+  }
+  // Streamed: the file is open while the render runs, and each band is encoded as it comes;
+  // the time spent encoding is the write's, not the render's.
+  double encodeSeconds = 0;
+  writeImageStreamed(report.outputPath, report.gamma, report.width, report.height,
+                     imageRecords(request, prepared, report), [&](const RowSink& sink) {
+                       RowSink timed = [&](int y0, const RadianceImage& band) {
+                         auto t0 = std::chrono::steady_clock::now();
+                         RadianceImage copy;
+                         sink(y0, finiteBand(band, copy));
+                         encodeSeconds += secondsSince(t0);
+                       };
+                       renderPrepared(request, prepared, progress, report, vulkan, &timed);
+                     });
+  report.renderSeconds = std::max(0.0, report.renderSeconds - encodeSeconds);
+  report.writeSeconds = encodeSeconds;
   return report;
 }
 

@@ -116,8 +116,11 @@ class RenderSession {
 // DeviceError (Vulkan), OutOfMemory (also before allocating an image larger than the memory
 // available), UsageError (a --size or --scale beyond the largest image, a crop not inside the
 // image), InternalError,
-// Interrupted. The image is written as its name says (image/image_file.h: .ppm as PPM, else
-// PNG). `image`, when given, receives the rendered image (for --check). `session`, when
+// Interrupted. The image is written as its name says (image/image_file.h: .pfm as PFM, .ppm
+// as PPM, else PNG). A Whitted render is streamed: each band of rows is encoded into the
+// temporary file as the renderer finishes it (image/row_sink.h), so memory does not grow with
+// the image; a path integrator's (its running mean) is held whole. `image`, when given,
+// receives the rendered image (for --check; the render is then held whole too). `session`, when
 // given, lends the Vulkan context of earlier renders (without: one is made and destroyed).
 RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image = nullptr,
                              RenderSession* session = nullptr);

@@ -1,0 +1,122 @@
+// The streamed writers: one RowSink per format over an open temporary file.
+#include "image/row_sink.h"
+
+#include <cstdint>
+
+#include "errors.h"
+#include "image/atomic_file.h"
+#include "image/encode.h"
+#include "image/image_file.h"
+#include "image/pfm.h"
+#include "image/png.h"
+#include "image/ppm.h"
+#include "interrupt.h"
+
+namespace vkrt {
+
+namespace {
+
+// Checks that bands come in order, each row once, and that all came.
+class RowOrder {
+ public:
+  RowOrder(int width, int height) : width_(width), height_(height) {}
+  void take(int y0, int bandWidth, int bandHeight) {
+    if (y0 != next_ || bandWidth != width_ || bandHeight > height_ - y0)
+      throw InternalError("streamed image: rows " + std::to_string(y0) + "+" + std::to_string(bandHeight) +
+                          " after " + std::to_string(next_) + " of a " + std::to_string(width_) + "x" +
+                          std::to_string(height_) + " image");
+    next_ = y0 + bandHeight;
+  }
+  void complete() const {
+    if (next_ != height_)
+      throw InternalError("streamed image: " + std::to_string(next_) + " rows of " + std::to_string(height_));
+  }
+
+ private:
+  int width_, height_, next_ = 0;
+};
+
+}  // namespace
+
+void writeImageStreamed(const std::string& path, double gamma, int width, int height,
+                        const std::vector<std::pair<std::string, std::string>>& records,
+                        const std::function<void(const RowSink&)>& render) {
+  const std::size_t rowChannels = static_cast<std::size_t>(width) * 3;
+  // Rows must come in order, each once: the PNG and PPM encoders cannot seek back.
+  RowOrder order(width, height);
+  switch (imageFormatFor(path)) {
+    case ImageFormat::Png:
+      writeFileAtomic(path, ".png.tmp", [&](int fd) {
+        PngRowEncoder png(fd, width, height, records, path);
+        std::vector<std::uint8_t> bytes(rowChannels);
+        render([&](int y0, const RadianceImage& band) {
+          order.take(y0, band.width, band.height);
+          for (int y = 0; y < band.height; ++y) {
+            encodeRow(band.pixel(0, y), rowChannels, gamma, bytes.data());
+            png.row(bytes.data());
+          }
+        });
+        order.complete();
+        png.finish();
+      });
+      break;
+    case ImageFormat::Ppm:
+      writeFileAtomic(path, ".ppm.tmp", [&](int fd) {
+        writePpmHeader(fd, width, height, records, path);
+        std::vector<std::uint8_t> bytes;
+        render([&](int y0, const RadianceImage& band) {
+          order.take(y0, band.width, band.height);
+          bytes.resize(rowChannels * static_cast<std::size_t>(band.height));
+          encodeRow(band.rgb.data(), bytes.size(), gamma, bytes.data());
+          writeAll(fd, bytes.data(), bytes.size(), path);
+        });
+        order.complete();
+      });
+      break;
+    case ImageFormat::Pfm:
+      writeFileAtomic(path, ".pfm.tmp", [&](int fd) {
+        PfmRowWriter pfm(fd, width, height, records, path);
+        render([&](int y0, const RadianceImage& band) {
+          order.take(y0, band.width, band.height);
+          pfm.rows(y0, band);
+        });
+        order.complete();
+        pfm.finish();
+      });
+      break;
+  }
+}
+
+void writeBytesStreamed(const std::string& path, int width, int height,
+                        const std::vector<std::pair<std::string, std::string>>& records,
+                        const std::function<void(const ByteRowSink&)>& render) {
+  RowOrder order(width, height);
+  switch (imageFormatFor(path)) {
+    case ImageFormat::Pfm:
+      throw UsageError("'" + path + "': a .pfm holds linear radiance, and this image is 8-bit; write .png or .ppm");
+    case ImageFormat::Png:
+      writeFileAtomic(path, ".png.tmp", [&](int fd) {
+        PngRowEncoder png(fd, width, height, records, path);
+        render([&](int y0, const Image& band) {
+          order.take(y0, band.width, band.height);
+          for (int y = 0; y < band.height; ++y) png.row(band.pixel(0, y));
+        });
+        order.complete();
+        png.finish();
+      });
+      break;
+    case ImageFormat::Ppm:
+      writeFileAtomic(path, ".ppm.tmp", [&](int fd) {
+        writePpmHeader(fd, width, height, records, path);
+        render([&](int y0, const Image& band) {
+          order.take(y0, band.width, band.height);
+          throwIfInterrupted();
+          writeAll(fd, band.rgb.data(), band.rgb.size(), path);
+        });
+        order.complete();
+      });
+      break;
+  }
+}
+
+}  // namespace vkrt
