@@ -187,18 +187,11 @@ TEST(ExitStatus, OutOfMemoryIs6WheneverFound) {
   // itself when an allocation fails: this half runs in the plain build only.) A path
   // integrator holds its running mean whole (a Whitted render streams in bands and fits).
   writeFile(dir + "/big-path.test", "size 16384 16384\nintegrator pathtracer\ncamera 0 0 1 0 0 0 0 1 0 45\n");
-  std::string cmd = "ulimit -v 500000 && exec env VKRT_TEST_MEMORY_AVAILABLE_MB=100000 '" +
-                    vkrtBinary() + "' --backend cpu --threads 1 -o '" + dir + "/o.png' '" + dir +
-                    "/big-path.test' 2>&1";
-  std::FILE* p = ::popen(cmd.c_str(), "r");
-  ASSERT_NE(p, nullptr);
-  std::string output;
-  char buf[4096];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) output.append(buf, n);
-  int status = ::pclose(p);
-  ASSERT_TRUE(WIFEXITED(status)) << output;
-  EXPECT_EQ(WEXITSTATUS(status), 6) << output;
+  RunResult limited = runCommand("ulimit -v 500000 && exec env VKRT_TEST_MEMORY_AVAILABLE_MB=100000 '" +
+                                  vkrtBinary() + "' --backend cpu --threads 1 -o '" + dir + "/o.png' '" + dir +
+                                  "/big-path.test'");
+  const std::string& output = limited.output;
+  EXPECT_EQ(limited.exitCode, 6) << output;
   // What failed and the limit it met, not a need the numbers cannot show (the 100000 MB
   // "available" are not what the image needed).
   EXPECT_NE(output.find("vkrt: error: out of memory: an allocation for " + dir + "/big-path.test failed; this process "

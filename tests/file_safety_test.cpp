@@ -60,18 +60,10 @@ void writeBlackPng(const std::string& path) {
 
 // Runs `command` with sh (stdout and stderr together), from `dir`.
 RunResult runShell(const std::string& dir, const std::string& command) {
-  RunResult r;
-  std::FILE* p = ::popen(("cd '" + dir + "' && " + command + " 2>&1").c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
-  int status = ::pclose(p);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return r;
+  return runCommand("cd '" + dir + "' && " + command);
 }
 
-const std::string kVkrt = std::string("'") + VKRT_BINARY + "'";
+const std::string kVkrt = "'" + vkrtBinary() + "'";
 
 // "ulimit -v KB && ": caps vkrt's address space, so that a vkrt that reads without end
 // fails the test instead of taking the machine's memory. Not under AddressSanitizer, which

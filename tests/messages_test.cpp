@@ -25,15 +25,7 @@ bool contains(const std::string& s, const std::string& part) { return s.find(par
 
 // Runs vkrt with `args` from the folder `dir`.
 RunResult runIn(const std::string& dir, const std::string& args) {
-  RunResult r;
-  std::FILE* p = ::popen(("cd '" + dir + "' && '" + std::string(VKRT_BINARY) + "' " + args + " 2>&1").c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
-  int status = ::pclose(p);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return runCommand("cd '" + dir + "' && '" + vkrtBinary() + "' " + args);
 }
 
 }  // namespace

@@ -245,7 +245,11 @@ Finished waitVkrt(const Spawned& process) {
 }
 
 RunResult runVkrt(const std::string& args, const std::string& env) {
-  std::string cmd = (env.empty() ? "" : "env " + env + " ") + "'" + vkrtBinary() + "' " + args + " 2>&1";
+  return runCommand((env.empty() ? "" : "env " + env + " ") + "'" + vkrtBinary() + "' " + args);
+}
+
+RunResult runCommand(const std::string& commandLine) {
+  const std::string cmd = "{ " + commandLine + "; } 2>&1";
   RunResult r;
   FILE* p = ::popen(cmd.c_str(), "r");
   if (!p) return r;

@@ -101,6 +101,8 @@ struct RunResult {
 };
 // `env` is prepended to the command line (VAR=value ...).
 RunResult runVkrt(const std::string& args, const std::string& env = "");
+// Runs a shell command line (sh -c), stdout and stderr together.
+RunResult runCommand(const std::string& commandLine);
 
 // vkrt started in the background (stdout and stderr to `logPath`), for tests that signal it
 // or measure its peak memory.

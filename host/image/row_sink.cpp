@@ -41,50 +41,31 @@ class RowOrder {
 void writeImageStreamed(const std::string& path, double gamma, int width, int height,
                         const std::vector<std::pair<std::string, std::string>>& records,
                         const std::function<void(const RowSink&)>& render) {
-  const std::size_t rowChannels = static_cast<std::size_t>(width) * 3;
-  // Rows must come in order, each once: the PNG and PPM encoders cannot seek back.
-  RowOrder order(width, height);
-  switch (imageFormatFor(path)) {
-    case ImageFormat::Png:
-      writeFileAtomic(path, ".png.tmp", [&](int fd) {
-        PngRowEncoder png(fd, width, height, records, path);
-        std::vector<std::uint8_t> bytes(rowChannels);
-        render([&](int y0, const RadianceImage& band) {
-          order.take(y0, band.width, band.height);
-          for (int y = 0; y < band.height; ++y) {
-            encodeRow(band.pixel(0, y), rowChannels, gamma, bytes.data());
-            png.row(bytes.data());
-          }
-        });
-        order.complete();
-        png.finish();
+  if (imageFormatFor(path) != ImageFormat::Pfm) {
+    // PNG and PPM take bytes: each band is encoded (gamma, 8 bits) as it comes.
+    writeBytesStreamed(path, width, height, records, [&](const ByteRowSink& bytes) {
+      Image encoded;
+      render([&](int y0, const RadianceImage& band) {
+        encoded.width = band.width, encoded.height = band.height;
+        encoded.rgb.resize(band.rgb.size());
+        encodeRow(band.rgb.data(), band.rgb.size(), gamma, encoded.rgb.data());
+        bytes(y0, encoded);
       });
-      break;
-    case ImageFormat::Ppm:
-      writeFileAtomic(path, ".ppm.tmp", [&](int fd) {
-        writePpmHeader(fd, width, height, records, path);
-        std::vector<std::uint8_t> bytes;
-        render([&](int y0, const RadianceImage& band) {
-          order.take(y0, band.width, band.height);
-          bytes.resize(rowChannels * static_cast<std::size_t>(band.height));
-          encodeRow(band.rgb.data(), bytes.size(), gamma, bytes.data());
-          writeAll(fd, bytes.data(), bytes.size(), path);
-        });
-        order.complete();
-      });
-      break;
-    case ImageFormat::Pfm:
-      writeFileAtomic(path, ".pfm.tmp", [&](int fd) {
-        PfmRowWriter pfm(fd, width, height, records, path);
-        render([&](int y0, const RadianceImage& band) {
-          order.take(y0, band.width, band.height);
-          pfm.rows(y0, band);
-        });
-        order.complete();
-        pfm.finish();
-      });
-      break;
+    });
+    return;
   }
+  // Rows must come in order, each once (the byte encoders cannot seek back; the PFM writer
+  // places rows, but a band missing would leave a hole).
+  RowOrder order(width, height);
+  writeFileAtomic(path, ".pfm.tmp", [&](int fd) {
+    PfmRowWriter pfm(fd, width, height, records, path);
+    render([&](int y0, const RadianceImage& band) {
+      order.take(y0, band.width, band.height);
+      pfm.rows(y0, band);
+    });
+    order.complete();
+    pfm.finish();
+  });
 }
 
 void writeBytesStreamed(const std::string& path, int width, int height,
