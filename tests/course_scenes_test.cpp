@@ -36,7 +36,7 @@ Image renderCourse(const std::string& dir, const std::string& scene, const std::
 
 // SPEC section 7: with its conventions, scene4-7 match the reference but for a few pixels one
 // step off (float rounding at a step boundary) and the reference's two black pixels (0,479)
-// and (320,479). Tolerance (issue 2): at most 10 pixels per scene off by more than 2/255.
+// and (320,479). Tolerance: at most 10 pixels per scene off by more than 2/255.
 TEST_P(CourseScene, MatchesVerifiedReference) {
   auto dir = cse167Dir();
   if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse167 not found");

@@ -336,9 +336,9 @@ TEST(GpuCutoff, StopsPathsThatCannotChangeAByte) {
 }
 
 // Point lights without a constant attenuation term have no bound, and lights of one colour
-// have a zero channel: the bound of such a scene was once 0 * infinity = NaN, which max()
-// dropped, so the cut-off took every unbounded light for nothing and cut mirror paths that
-// mattered (thousands of pixels, up to 231/255). 200 such lights, mirror spheres on a floor,
+// have a zero channel: a bound computed as 0 * infinity = NaN, which max()
+// drops, would make the cut-off take every unbounded light for nothing and cut mirror paths that
+// matter (thousands of pixels, up to 231/255). 200 such lights, mirror spheres on a floor,
 // maxdepth 8; the same with a budget of 7 steps, which suspends nearly every pixel.
 TEST(GpuCutoff, UnboundedLightsWithZeroChannelsChangeNoPixel) {
   VKRT_REQUIRE_GPU(context);

@@ -1,4 +1,4 @@
-// Hardening (issue 5): inputs at and past the limits, huge images and their memory, and
+// Hardening: inputs at and past the limits, huge images and their memory, and
 // interruptions that must leave the user's files as they were.
 #include <chrono>
 #include <csignal>

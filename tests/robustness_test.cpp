@@ -1,4 +1,4 @@
-// Numerical robustness (README "Numerical robustness"): the same picture at every scale and
+// Numerical robustness (doc/robustness.md, "Numerical robustness"): the same picture at every scale and
 // place (metamorphic: a scene against itself scaled or moved), watertight triangles,
 // degenerate primitives, and the edge cases of the shading equation, on both backends.
 #include <cmath>

@@ -1,5 +1,5 @@
 // The exit statuses of `vkrt`, one meaning each, and the one place that turns an error into
-// its status and its message. Documented in `vkrt --help` and the README ("Usage").
+// its status and its message. Documented in `vkrt --help` and doc/usage.md.
 #pragma once
 
 #include <cstdio>

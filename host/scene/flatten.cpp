@@ -62,7 +62,7 @@ gpu::GpuPushConstants cameraConstants(const SceneDesc& scene, const dvec3& origi
 // bound is +infinity, and the shader never cuts a path by it. Unbounded are: a point light
 // whose attenuation divisor c0 + c1 r + c2 r^2 can come near 0 for some r >= 0 (c0 = 0, or a
 // negative coefficient), and sums beyond float. A zero factor stays an exact 0 (never
-// 0 * infinity, which is NaN and was once dropped by max(), leaving an unbounded light out).
+// 0 * infinity, which is NaN and which max() would drop, leaving an unbounded light out).
 void cutoffConstants(const SceneDesc& scene, gpu::GpuPushConstants& p) {
   const double kUnbounded = std::numeric_limits<double>::infinity();
   bool nonNegative = true;

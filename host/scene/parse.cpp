@@ -88,7 +88,7 @@ constexpr const char* kWarningKindNames[] = {
 static_assert(std::size(kWarningKindNames) == static_cast<std::size_t>(WarningKind::Count));
 constexpr std::size_t kWarningKinds = static_cast<std::size_t>(WarningKind::Count);
 
-// Values that render finite on both backends (README "Numerical robustness"): a colour or
+// Values that render finite on both backends (doc/robustness.md, "Numerical robustness"): a colour or
 // radiance channel beyond float32 (the Vulkan backend's precision) is clamped to the largest
 // float; a Phong exponent above kMaxPathShininess (path integrators: a lobe narrower than
 // float32 resolves, whose normalisation (s + 2) / 2 pi squared by MIS would overflow) and a

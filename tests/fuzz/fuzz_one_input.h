@@ -20,7 +20,7 @@ namespace vkrt::fuzz {
 // The most work one input may cost the CPU render, in ray-primitive tests: a pixel traces at
 // most maxdepth + 1 segments, each with a shadow ray per light, and a ray tests at worst every
 // primitive (when all of them lie across its path). This much takes about a second under the
-// sanitizers (measured with 1,000 copies of each of two facing mirrors: README "Fuzzing").
+// sanitizers (measured with 1,000 copies of each of two facing mirrors: doc/robustness.md, "Fuzzing").
 constexpr std::uint64_t kMaxWork = 30'000'000;
 
 // Parses; a valid scene of modest size then goes where vkrt takes it: flatten() (what the
