@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/exit_status.h"
+#include "counted.h"
 #include "cli/options.h"
 #include "cli/run_files.h"
 #include "errors.h"
@@ -57,7 +58,7 @@ std::function<void(const std::string&)> optionWarningPrinter(bool quiet) {
 // " (N samples)" after a path integrator's output, with "time up" when --time ended it.
 std::string samplesNote(const vkrt::RenderReport& r) {
   if (!r.pathIntegrator) return "";
-  return ", " + std::to_string(r.samples) + (r.samples == 1 ? " sample" : " samples") + " per pixel" +
+  return ", " + vkrt::counted(r.samples, "sample", "samples") + " per pixel" +
          (r.timeUp ? " when the time was up" : "");
 }
 
@@ -110,14 +111,31 @@ int reportComparison(const vkrt::Options& o, const vkrt::Image& actual, const vk
   return failures.empty() ? kExitOk : kExitDiffers;
 }
 
+// "3 lights (1 point, 2 quad)": the total, then each kind there is.
+std::string lightsText(const vkrt::RenderReport::Lights& l) {
+  std::string kinds;
+  auto add = [&](std::size_t n, const std::string& kind) {
+    if (n > 0) kinds += (kinds.empty() ? "" : ", ") + kind;
+  };
+  add(l.point, std::to_string(l.point) + " point");
+  add(l.directional, std::to_string(l.directional) + " directional");
+  add(l.quad, std::to_string(l.quad) + " quad");
+  add(l.emissiveTriangles, vkrt::counted(l.emissiveTriangles, "emissive triangle", "emissive triangles"));
+  add(l.emissiveSpheres, vkrt::counted(l.emissiveSpheres, "emissive sphere", "emissive spheres"));
+  return vkrt::counted(l.total(), "light", "lights") + (kinds.empty() ? "" : " (" + kinds + ")");
+}
+
 void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
   const double ms = 1e3;
-  std::fprintf(stderr, "vkrt: %s %dx%d maxdepth %d: %zu triangles, %zu spheres, %zu lights; backend %s",
-               req.scenePath.c_str(), r.width, r.height, r.maxDepth, r.triangles, r.spheres, r.lights,
+  std::fprintf(stderr, "vkrt: %s %dx%d maxdepth %d: %s, %s, %s; backend %s", req.scenePath.c_str(), r.width,
+               r.height, r.maxDepth, vkrt::counted(r.triangles, "triangle", "triangles").c_str(),
+               vkrt::counted(r.spheres, "sphere", "spheres").c_str(), lightsText(r.lights).c_str(),
                r.backend.c_str());
-  if (req.backend == vkrt::Backend::Cpu) std::fprintf(stderr, ", %d threads", r.threads);
+  if (req.backend == vkrt::Backend::Cpu)
+    std::fprintf(stderr, ", %s", vkrt::counted(r.threads, "thread", "threads").c_str());
   std::fprintf(stderr, "\n  parse   %9.1f ms\n", r.parseSeconds * ms);
-  std::fprintf(stderr, "  build   %9.1f ms  (BVH, %zu nodes)\n", r.buildSeconds * ms, r.bvhNodes);
+  std::fprintf(stderr, "  build   %9.1f ms  (BVH, %s)\n", r.buildSeconds * ms,
+               vkrt::counted(r.bvhNodes, "node", "nodes").c_str());
   std::fprintf(stderr, "  render  %9.1f ms\n", r.renderSeconds * ms);
   if (req.backend == vkrt::Backend::Vulkan) {
     const vkrt::VulkanTimings& v = r.vulkan;
@@ -128,8 +146,10 @@ void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
                  v.texelReads ? "texel-buffer" : "storage-buffer");
     std::fprintf(stderr, "    first dispatch (with JIT) %9.1f ms\n", v.firstDispatchSeconds * ms);
     std::fprintf(stderr, "    left out: %s\n", v.leftOut.empty() ? "nothing" : v.leftOut.c_str());
-    std::fprintf(stderr, "    dispatch  %9.1f ms  (%u bands, %u dispatches, %llu suspensions)\n",
-                 v.dispatchSeconds * ms, v.bands, v.dispatches, static_cast<unsigned long long>(v.suspensions));
+    std::fprintf(stderr, "    dispatch  %9.1f ms  (%s, %s, %s)\n", v.dispatchSeconds * ms,
+                 vkrt::counted(v.bands, "band", "bands").c_str(),
+                 vkrt::counted(v.dispatches, "dispatch", "dispatches").c_str(),
+                 vkrt::counted(v.suspensions, "suspension", "suspensions").c_str());
     std::fprintf(stderr, "    readback  %9.1f ms\n", v.readbackSeconds * ms);
   }
   std::fprintf(stderr, "  write   %9.1f ms\n", r.writeSeconds * ms);
@@ -156,8 +176,9 @@ std::string reportJson(const vkrt::RenderReport& r) {
   return buf;
 }
 
-// --compare: both backends in turn, nothing written; the times of each (the --stats
-// breakdown, on stderr) and their difference (stdout). Exit 5 when a threshold is exceeded.
+// --compare: both backends in turn, nothing written; the total time of each and their
+// difference (stdout), each one's breakdown (stderr) only with --stats. Exit 5 when a
+// threshold is exceeded.
 int compareBackends(const vkrt::Options& o) {
   vkrt::RunFiles files;
   files.addInput(o.request.scenePath, "the scene file");
@@ -172,7 +193,7 @@ int compareBackends(const vkrt::Options& o) {
     request.onOptionWarning = optionWarningPrinter(o.quiet || i > 0);
     vkrt::ProgressBar progress(!o.quiet && !o.json);
     images[i] = vkrt::encodeImage(vkrt::renderSceneInMemory(request, progress, reports[i], false), reports[i].gamma);
-    if (!o.json && !o.quiet) printStats(request, reports[i]);
+    if (o.stats && !o.json && !o.quiet) printStats(request, reports[i]);
   }
   vkrt::ImageDiff diff = vkrt::compare(images[0], images[1]);
   std::vector<std::string> failures = vkrt::failedThresholds(diff, o.thresholds);
@@ -196,9 +217,9 @@ int compareBackends(const vkrt::Options& o) {
 void warnNonFinite(const vkrt::Options& o, const vkrt::RenderReport& report) {
   if (report.rays.nonFinite > 0 && !o.quiet)
     std::fprintf(stderr,
-                 "vkrt: warning: %llu pixels had a NaN or infinite colour (written as 0, or 1 for +infinity); "
+                 "vkrt: warning: %s a NaN or infinite colour (written as 0, or 1 for +infinity); "
                  "the scene has extreme values\n",
-                 static_cast<unsigned long long>(report.rays.nonFinite));
+                 vkrt::counted(report.rays.nonFinite, "pixel had", "pixels had").c_str());
 }
 
 double totalSeconds(const vkrt::RenderReport& r) {
@@ -254,7 +275,8 @@ int renderBatch(const vkrt::Options& o) {
   }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!o.quiet || worst != kExitOk) {
-    std::fprintf(stderr, "vkrt: %zu scenes in %.2f s: %zu rendered, %zu failed", n, seconds, rendered, failed);
+    std::fprintf(stderr, "vkrt: %s in %.2f s: %zu rendered, %zu failed", vkrt::counted(n, "scene", "scenes").c_str(),
+                 seconds, rendered, failed);
     if (done < n) std::fprintf(stderr, ", %zu not rendered (stopped)", n - done);
     std::fprintf(stderr, "; exit status %d\n", worst);
   }
@@ -277,17 +299,19 @@ int merge(const vkrt::Options& options) {
     printWarnings();
     vkrt::writeImageAtomic(mean, options.mergeOutput, merged.samples.gamma);
     if (!options.quiet)
-      std::fprintf(stderr, "vkrt: averaged %d batches (%llu samples per pixel) into %s (%dx%d)\n", merged.tiles,
-                   static_cast<unsigned long long>(merged.samples.total()), options.mergeOutput.c_str(), mean.width,
-                   mean.height);
+      std::fprintf(stderr, "vkrt: averaged %s (%s per pixel) into %s (%dx%d)\n",
+                   vkrt::counted(merged.tiles, "batch", "batches").c_str(),
+                   vkrt::counted(merged.samples.total(), "sample", "samples").c_str(), options.mergeOutput.c_str(),
+                   mean.width, mean.height);
     return kExitOk;
   }
   vkrt::writeMergedCrops(options.mergeTiles, options.allowGaps, options.mergeOutput, &merged);
   printWarnings();
   if (!options.quiet)
-    std::fprintf(stderr, "vkrt: merged %d tiles into %s (%dx%d)%s\n", merged.tiles, options.mergeOutput.c_str(),
-                 merged.width, merged.height,
-                 merged.gapPixels ? (", " + std::to_string(merged.gapPixels) + " pixels left black").c_str() : "");
+    std::fprintf(stderr, "vkrt: merged %s into %s (%dx%d)%s\n", vkrt::counted(merged.tiles, "tile", "tiles").c_str(),
+                 options.mergeOutput.c_str(), merged.width, merged.height,
+                 merged.gapPixels ? (", " + vkrt::counted(merged.gapPixels, "pixel", "pixels") + " left black").c_str()
+                                  : "");
   return kExitOk;
 }
 

@@ -49,7 +49,7 @@ TEST(CliFloat, SampleOptionsOnAWhittedSceneWarnAndChangeNothing) {
   writeFile(dir + "/s.test", kScene);
   RunResult plain = runVkrt("--backend cpu -o " + dir + "/plain.png " + dir + "/s.test");
   ASSERT_EQ(plain.exitCode, 0) << plain.output;
-  EXPECT_EQ(plain.output.find("warning"), std::string::npos) << plain.output;
+  EXPECT_EQ(plain.output.find("warning:"), std::string::npos) << plain.output;
   RunResult r = runVkrt("--backend cpu --spp 8 --seed 3 --time 5 -o " + dir + "/o.png " + dir + "/s.test");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("vkrt: warning: --spp, --seed and --time do not apply to " + dir +
@@ -131,7 +131,7 @@ TEST(CliFloat, SceneOutputPfmIsWrittenAsPfmWithoutAWarning) {
   writeFile(dir + "/s.test", std::string(kScene) + "output " + dir + "/o.pfm\n");
   RunResult r = runVkrt("--backend cpu --strict " + dir + "/s.test");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("warning:"), std::string::npos) << r.output;
   EXPECT_TRUE(isPfmFile(dir + "/o.pfm"));
 }
 
@@ -146,7 +146,7 @@ TEST(CliFloat, PathSceneBatchesCarryTheirSamplesAndMerge) {
   RunResult a = runVkrt("--backend cpu --spp 4 --seed 3 -o " + dir + "/a.pfm " + dir + "/p.test");
   ASSERT_EQ(a.exitCode, 0) << a.output;
   EXPECT_NE(a.output.find("(8x6, 4 samples per pixel)"), std::string::npos) << a.output;
-  EXPECT_EQ(a.output.find("warning"), std::string::npos) << a.output;
+  EXPECT_EQ(a.output.find("warning:"), std::string::npos) << a.output;
   RunResult b = runVkrt("--backend cpu --seed 4 -o " + dir + "/b.pfm " + dir + "/p.test");   // the scene's spp 2
   ASSERT_EQ(b.exitCode, 0) << b.output;
   const auto aText = readPfm(dir + "/a.pfm").text;

@@ -69,7 +69,7 @@ TEST(Cli, OutputOptionOverridesAndStatsArePrinted) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_TRUE(fileExists(dir + "/o.png"));
   EXPECT_FALSE(fileExists("never.png"));
-  for (const char* key : {"parse", "build", "render", "write", "rays", "primary 1200", "1 threads"})
+  for (const char* key : {"parse", "build", "render", "write", "rays", "primary 1200", "1 thread"})
     EXPECT_NE(r.output.find(key), std::string::npos) << key << "\n" << r.output;
   RunResult eq = runVkrt("-q --output=" + dir + "/eq.png " + dir + "/s.test");
   EXPECT_EQ(eq.exitCode, 0) << eq.output;

@@ -69,10 +69,10 @@ TEST(ImageFile, CliWritesPpmWithThePngsPixels) {
   ASSERT_EQ(png.exitCode, 0) << png.output;
   RunResult ppm = runVkrt("--backend cpu -o " + dir + "/o.ppm " + dir + "/s.test");
   ASSERT_EQ(ppm.exitCode, 0) << ppm.output;
-  EXPECT_EQ(ppm.output.find("warning"), std::string::npos) << ppm.output;
+  EXPECT_EQ(ppm.output.find("warning:"), std::string::npos) << ppm.output;
   RunResult named = runVkrt("--backend cpu " + dir + "/named.test");
   ASSERT_EQ(named.exitCode, 0) << named.output;
-  EXPECT_EQ(named.output.find("warning"), std::string::npos) << named.output;
+  EXPECT_EQ(named.output.find("warning:"), std::string::npos) << named.output;
   Image reference = readImage(dir + "/o.png");
   for (const char* f : {"/o.ppm", "/named.PPM"}) {
     Image back = readP6(dir + f);

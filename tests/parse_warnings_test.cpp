@@ -226,7 +226,8 @@ TEST(ParseWarnings, OfThreeSizesTheLastCounts) {
 // Another course's keywords in other cases: each read as the keyword, each said once.
 TEST(ParseWarnings, KeywordsInAnyCase) {
   ParsedScene p = parseSceneWithWarnings(
-      kOk + "maxVerts 3\nVertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nDIFFUSE 1 0 0\nTri 0 1 2\n", "w.test");
+      kOk + "maxVerts 3\nVertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nDIFFUSE 1 0 0\nTri 0 1 2\npoint 0 0 5 1 1 1\n",
+      "w.test");
   ASSERT_EQ(p.scene.triangles.size(), 1u);
   EXPECT_EQ(p.scene.materials[p.scene.triangles[0].material].diffuse, dvec3(1, 0, 0));
   ASSERT_EQ(p.warnings.size(), static_cast<std::size_t>(kMaxWarningsPerKind + 1));   // 4 of one kind

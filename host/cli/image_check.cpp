@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "counted.h"
 #include "cli/options.h"
 #include "scene/diagnostic.h"   // echoed
 
@@ -51,15 +52,16 @@ std::vector<std::string> failedThresholds(const ImageDiff& diff, const CheckThre
   std::vector<std::string> failures;
   if (!thresholds.any()) {
     if (!diff.differing.empty())
-      failures.push_back(std::to_string(diff.differing.size()) + " pixels differ (no threshold given: any difference fails)");
+      failures.push_back(counted(diff.differing.size(), "pixel differs", "pixels differ") +
+                         " (no threshold given: any difference fails)");
     return failures;
   }
   for (const PixelThreshold& t : thresholds.pixelsOver) {
     long long over = diff.countOver(t.steps);
     double allowed = t.percent ? t.limit / 100.0 * static_cast<double>(diff.pixels) : t.limit;
     if (static_cast<double>(over) > allowed)
-      failures.push_back(std::to_string(over) + " pixels (" + format("%.4g%%", share(over, diff.pixels)) +
-                         ") differ by more than " + std::to_string(t.steps) + "/255; allowed: " +
+      failures.push_back(counted(over, "pixel", "pixels") + " (" + format("%.4g%%", share(over, diff.pixels)) +
+                         (over == 1 ? ") differs" : ") differ") + " by more than " + std::to_string(t.steps) + "/255; allowed: " +
                          (t.percent ? format("%.4g%%", t.limit) : format("%.0f", t.limit)) + " (--max-pixels-over " +
                          t.text + ")");
   }
@@ -75,9 +77,10 @@ std::string diffReportText(const ImageDiff& d) {
   return "  size        " + std::to_string(d.width) + "x" + std::to_string(d.height) + "\n" +
          "  RMSE        " + format("%.4f/255", d.rmse) + "\n" + "  PSNR        " + psnr + "\n" +
          "  max diff    " + std::to_string(d.maxChannelDiff) + "/255\n" + "  differing   " +
-         std::to_string(d.differing.size()) + format(" pixels (%.4g%%)", share(static_cast<long long>(d.differing.size()), d.pixels)) +
-         "\n" + "  over 1/255  " + std::to_string(over1) + format(" pixels (%.4g%%)", share(over1, d.pixels)) + "\n" +
-         "  over 2/255  " + std::to_string(over2) + format(" pixels (%.4g%%)", share(over2, d.pixels)) + "\n";
+         counted(d.differing.size(), "pixel", "pixels") +
+         format(" (%.4g%%)", share(static_cast<long long>(d.differing.size()), d.pixels)) + "\n" + "  over 1/255  " +
+         counted(over1, "pixel", "pixels") + format(" (%.4g%%)", share(over1, d.pixels)) + "\n" + "  over 2/255  " +
+         counted(over2, "pixel", "pixels") + format(" (%.4g%%)", share(over2, d.pixels)) + "\n";
 }
 
 std::string jsonQuoted(const std::string& s) {

@@ -11,6 +11,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "counted.h"
 #include "errors.h"
 #include "image/crop.h"
 #include "image/pfm.h"
@@ -187,8 +188,8 @@ CheckedTiles checkTiles(const std::vector<std::string>& tilePaths, bool allowGap
   // The tiles do not overlap, so they cover every pixel exactly when their areas add up.
   checked.gaps = static_cast<std::uint64_t>(fullWidth) * static_cast<std::uint64_t>(fullHeight) - covered;
   if (checked.gaps > 0 && !allowGaps)
-    throw UsageError(std::to_string(checked.gaps) + " pixels of the " + std::to_string(fullWidth) + "x" +
-                     std::to_string(fullHeight) + " image are in no tile (a tile missing?); --allow-gaps leaves "
+    throw UsageError(counted(checked.gaps, "pixel", "pixels") + " of the " + std::to_string(fullWidth) + "x" +
+                     std::to_string(fullHeight) + (checked.gaps == 1 ? " image is" : " image are") + " in no tile (a tile missing?); --allow-gaps leaves "
                      "them black");
   checked.fullWidth = fullWidth;
   checked.fullHeight = fullHeight;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "counted.h"
 #include "errors.h"
 #include "image/samples.h"
 
@@ -34,8 +35,9 @@ RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOp
       if (!options.progress || pixelsTotal == 0) return;
       double samplesNow = static_cast<double>(done) +
                           count * static_cast<double>(pixelsDone) / static_cast<double>(pixelsTotal);
-      std::string note = std::to_string(static_cast<std::uint64_t>(samplesNow)) +
-                         (options.spp ? "/" + std::to_string(options.spp) : std::string()) + " samples";
+      const auto samplesDone = static_cast<std::uint64_t>(samplesNow);
+      std::string note = options.spp ? std::to_string(samplesDone) + "/" + counted(options.spp, "sample", "samples")
+                                     : counted(samplesDone, "sample", "samples");
       double fraction = options.spp ? samplesNow / static_cast<double>(options.spp) : 0.0;
       if (timed) fraction = std::max(fraction, (now() - start) / options.timeLimitSeconds);
       constexpr std::uint64_t kScale = 1000000;

@@ -14,7 +14,9 @@
 #include <limits>
 #include <thread>
 
+#include "counted.h"
 #include "errors.h"
+#include "gpu_types.h"
 #include "cpu/path_reference.h"
 #include "gpu/vulkan_path_renderer.h"
 #include "gpu/vulkan_renderer.h"
@@ -26,6 +28,7 @@
 #include "image/png.h"
 #include "interrupt.h"
 #include "render/progressive.h"
+#include "scene/emitters.h"
 #include "scene/flatten.h"
 #include "scene/diagnostic.h"
 #include "scene/parse.h"
@@ -282,8 +285,8 @@ const RadianceImage& finiteBand(const RadianceImage& band, RadianceImage& copy) 
 void checkFinite(const RenderRequest& request, const SceneDesc& scene, const RenderReport& report) {
   if (request.strict && report.rays.nonFinite > 0)
     throw SceneError({{scene.sourcePath, 0,
-                       std::to_string(report.rays.nonFinite) +
-                           " pixels had a NaN or infinite colour: the scene has extreme values",
+                       counted(report.rays.nonFinite, "pixel", "pixels") +
+                           " had a NaN or infinite colour: the scene has extreme values",
                        Severity::Error}});
 }
 
@@ -375,6 +378,19 @@ std::string resolveOutput(const SceneDesc& scene, const RenderRequest& request) 
 
 namespace {
 
+// The lights of RenderReport::Lights. The Whitted model's are the point and directional
+// lights alone (the parser drops its quad lights); an emissive surface lights other surfaces
+// only under the path tracer (found by its paths, and sampled by next-event estimation).
+RenderReport::Lights countLights(const SceneDesc& scene) {
+  RenderReport::Lights n;
+  for (const Light& l : scene.lights) ++(l.type == LightType::Point ? n.point : n.directional);
+  n.quad = scene.quadLights.size();
+  if (scene.path.integrator == Integrator::PathTracer)
+    for (std::uint32_t prim : collectEmitters(scene).prims)
+      ++((prim & gpu::kPrimSphereBit) ? n.emissiveSpheres : n.emissiveTriangles);
+  return n;
+}
+
 // A render once its scene is parsed and its settings checked.
 struct PreparedRender {
   ParsedScene parsed;
@@ -415,7 +431,7 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   report.maxDepth = scene.maxDepth;
   report.triangles = scene.triangles.size();
   report.spheres = scene.spheres.size();
-  report.lights = scene.lights.size();
+  report.lights = countLights(scene);
 
   // The Whitted model ignores `gamma` (SPEC-PATHTRACING section 1): its bytes are SPEC
   // section 7's, and the shader's exactness cut-off reasons in those (gamma 1).

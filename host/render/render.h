@@ -74,7 +74,14 @@ struct RenderReport {
   std::string outputPath;
   std::string backend;                 // "cpu" or "vulkan (DEVICE NAME)"
   int width = 0, height = 0, maxDepth = 0, threads = 0;
-  std::size_t triangles = 0, spheres = 0, lights = 0, bvhNodes = 0;
+  std::size_t triangles = 0, spheres = 0, bvhNodes = 0;
+  // The lights the integrator uses: point and directional lights; quad lights (the path
+  // integrators'; the Whitted model ignores them); and for `pathtracer` the emissive
+  // triangles and spheres, which light the scene there too (scene/emitters.h).
+  struct Lights {
+    std::size_t point = 0, directional = 0, quad = 0, emissiveTriangles = 0, emissiveSpheres = 0;
+    std::size_t total() const { return point + directional + quad + emissiveTriangles + emissiveSpheres; }
+  } lights;
   double parseSeconds = 0, buildSeconds = 0, renderSeconds = 0, writeSeconds = 0;
   // Vulkan only: context creation, then the renderer's own breakdown (parts of renderSeconds).
   double instanceSeconds = 0, deviceSeconds = 0;

@@ -18,6 +18,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "counted.h"
 #include "errors.h"
 #include "image/image_file.h"
 #include "interrupt.h"
@@ -79,12 +80,15 @@ std::string quoted(std::string_view token) { return "'" + echoed(token) + "'"; }
 // The kinds of warning (SPEC section 8); each kind is summarised after kMaxWarningsPerKind.
 enum class WarningKind {
   UnknownCommand, KeywordCase, ExtraArguments, Repeated, BeforeSize, OutputName, NotForIntegrator, EndlessPaths,
-  Clamped, Count
+  Clamped,
+  NoLights,
+  Count
 };
 constexpr const char* kWarningKindNames[] = {
     "unknown commands", "keywords in another case", "extra arguments", "repeated commands",
     "commands before 'size'", "output names", "commands the integrator does not use", "paths without an end",
-    "values clamped"};
+    "values clamped",
+    "scenes without lights"};
 static_assert(std::size(kWarningKindNames) == static_cast<std::size_t>(WarningKind::Count));
 constexpr std::size_t kWarningKinds = static_cast<std::size_t>(WarningKind::Count);
 
@@ -367,7 +371,7 @@ class Parser {
     if (argCount_ <= n) return;
     const int extra = argCount_ - n;
     std::string takes = n == 0 ? "takes no arguments"
-                               : "takes " + std::to_string(n) + " argument" + (n == 1 ? "" : "s") + " (" + usage + ")";
+                               : "takes " + counted(n, "argument", "arguments") + " (" + usage + ")";
     std::string ignored = extra == 1 ? std::string("the extra one is ignored")
                                      : "the extra " + std::to_string(extra) + " are ignored";
     warn(WarningKind::ExtraArguments,
@@ -377,8 +381,8 @@ class Parser {
   // Checks the argument count and parses the first `n` arguments as finite numbers.
   bool numbers(std::string_view cmd, int n, const char* usage, double* out) {
     if (argCount_ < n) {
-      error("'" + std::string(cmd) + "' expects " + std::to_string(n) + " argument" + (n == 1 ? "" : "s") +
-            " (" + usage + "), got " + std::to_string(argCount_));
+      error("'" + std::string(cmd) + "' expects " + counted(n, "argument", "arguments") + " (" + usage + "), got " +
+            std::to_string(argCount_));
       return false;
     }
     ignoreExtraArguments(cmd, n, usage);
@@ -491,6 +495,8 @@ class Parser {
   }
 
   std::uint32_t currentMaterial() {
+    if (shadedSurfaceLine_ == 0 && (material_.diffuse != dvec3(0.0) || material_.specular != dvec3(0.0)))
+      shadedSurfaceLine_ = line_;
     if (scene_.materials.empty() || !(scene_.materials.back() == material_))
       scene_.materials.push_back(material_);
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
@@ -873,6 +879,26 @@ class Parser {
     }
   }
 
+  // A Whitted scene with no point or directional light shows only ambient and emission. Said
+  // when a light would change the image: some surface has a diffuse or specular colour (the
+  // course's scene2 and scene3 colour theirs with ambient alone, as their authors meant). At
+  // the `size` line, as the scene's other whole-file diagnostics; quad lights are no light here.
+  void warnIfUnlit() {
+    if (!sawSize_ || scene_.path.integrator != Integrator::Raytracer || !scene_.lights.empty() ||
+        shadedSurfaceLine_ == 0)
+      return;
+    const std::string ignoredQuads =
+        pendingQuadLights_.empty()
+            ? ""
+            : " (its " + counted(pendingQuadLights_.size(), "quad light is", "quad lights are") +
+                  " ignored: the Whitted model has no area lights; use 'point' or 'directional', or a path "
+                  "integrator)";
+    warnAt(firstSizeLine_, WarningKind::NoLights,
+           "the scene has no lights: only ambient and emission light it" + ignoredQuads +
+               "; the diffuse and specular colours of its surfaces (the first at line " +
+               std::to_string(shadedSurfaceLine_) + ") stay dark");
+  }
+
   // ---- end of file ------------------------------------------------------------------------
   void finish() {
     int last = line_ > 0 ? line_ : 1;
@@ -884,6 +910,7 @@ class Parser {
              "'" + std::string(beforeSizeCommand_) + "' before 'size' (line " + std::to_string(firstSizeLine_) +
                  "): accepted, though the format puts 'size' first");
     applyIntegrator();
+    warnIfUnlit();
     // Unbalanced pushTransforms at the end are valid (SPEC section 8).
   }
 
@@ -900,6 +927,7 @@ class Parser {
   int cameraLine_ = 0, maxDepthLine_ = 0;   // 0: not seen yet (the scene keeps the others)
   std::vector<int> steepShininessLines_;      // `shininess` lines above kMaxPathShininess
   int beforeSizeLine_ = 0;                  // the first command before `size`
+  int shadedSurfaceLine_ = 0;               // the first object with a diffuse or specular colour
   int integratorLine_ = 0, lightSamplesLine_ = 0;
   int lightStratifyLine_ = 0;               // of the last `lightstratify`, when it said `on`
   int unlimitedDepthLine_ = 0;              // of the last `maxdepth`, when it said -1
