@@ -2,13 +2,16 @@
 // that uses it: a subcommand, an option, a scene command; an image given as a scene; usage
 // errors in two lines, the usage text only for --help.
 #include <algorithm>
+#include <set>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "cli/image_argument.h"
 #include "cli/options.h"
+#include "errors.h"
 #include "image/image_file.h"
 #include "image/pfm.h"
 #include "scene/parse.h"
@@ -135,6 +138,30 @@ TEST(Suggest, UnknownOptionNamesTheNearestLongOption) {
   EXPECT_TRUE(contains(merge.output, "unknown merge option '--alow-gaps' (merge takes -o OUT.png, --allow-gaps, -q); "
                                      "did you mean '--allow-gaps'?"))
       << merge.output;
+}
+
+// Every long option of --help is suggested for itself with its last letter missing: the
+// list of names the suggestions come from keeps up with the options.
+TEST(Suggest, EveryLongOptionOfHelpIsSuggested) {
+  const std::string help = usageText();
+  std::set<std::string> options;
+  for (std::size_t at = help.find("--"); at != std::string::npos; at = help.find("--", at + 2)) {
+    std::size_t end = at + 2;
+    while (end < help.size() && ((help[end] >= 'a' && help[end] <= 'z') || help[end] == '-')) ++end;
+    if (end > at + 2) options.insert(help.substr(at, end - at));
+  }
+  ASSERT_GT(options.size(), 25u);
+  for (const std::string& option : options) {
+    const std::string typo = option.substr(0, option.size() - 1);
+    std::vector<std::string> args = option == "--allow-gaps" ? std::vector<std::string>{"merge", typo}
+                                                             : std::vector<std::string>{typo, "x.test"};
+    try {
+      parseOptions(args);
+      ADD_FAILURE() << typo << ": no error";
+    } catch (const UsageError& e) {
+      EXPECT_TRUE(contains(e.what(), "did you mean '" + option + "'?")) << e.what();
+    }
+  }
 }
 
 // `sphre 0 0 0 1` is skipped with a warning (the picture renders without the sphere): the

@@ -36,7 +36,7 @@ std::string processMemoryLimit() {
 int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE* err) {
   try {
     std::rethrow_exception(error);
-  } catch (const RefusedOutput& e) {   // the command line is well-formed: no usage text
+  } catch (const RefusedOutput& e) {   // the command line is well-formed: no pointer to --help
     std::fprintf(err, "vkrt: error: %s\n", e.what());
     return kExitUsage;
   } catch (const UsageError& e) {   // one line, and where the whole usage is (not the text itself)
