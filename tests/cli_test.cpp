@@ -223,7 +223,8 @@ std::pair<int, std::string> reported(std::exception_ptr error, bool quiet = fals
 // on purpose (a bug, the device's memory) are checked here.
 TEST(ExitStatus, EachKindOfErrorHasOneStatus) {
   using std::make_exception_ptr;
-  EXPECT_EQ(reported(make_exception_ptr(UsageError("bad option"))).first, 1);
+  EXPECT_EQ(reported(make_exception_ptr(UsageError("bad option"))),
+            std::make_pair(1, std::string("vkrt: error: bad option\nsee 'vkrt --help'\n")));   // not the usage text
   auto scene = reported(make_exception_ptr(SceneError(
       {{"s.test", 3, "unknown command 'x' (line skipped)", Severity::Warning}, {"s.test", 4, "rotate axis"}})));
   EXPECT_EQ(scene.first, 2);

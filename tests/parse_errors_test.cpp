@@ -67,7 +67,8 @@ std::vector<BadInput> badInputs() {
       {"OutputDirectoryNotWritable", kOk + "output /proc/vkrt-test.png\n", 3,
        "output directory '/proc' is not writable"},
       {"NotText", std::string("size 64 48\ncam\0era\n", 19), 2, "file is not text (byte 0x00 in column 4)"},
-      {"BinaryGarbage", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16), 2, "file is not text (byte 0x1A in column 1)"},
+      // Binary bytes of no image format (a PNG given as a scene is a usage error: suggest_test).
+      {"BinaryGarbage", std::string("\x89XYZ\r\n\x1a\n\0\0\0\rIHDR", 16), 2, "file is not text (byte 0x1A in column 1)"},
       {"NegativeShininess", kOk + "shininess -2\n", 3, "shininess must not be negative"},
       {"ZeroDirectional", kOk + "directional 0 0 0 1 1 1\n", 3, "directional light direction must not be zero"},
       {"DirectionalUnderZeroScale", kOk + "scale 0 0 0\ndirectional 0 0 1 1 1 1\n", 4,

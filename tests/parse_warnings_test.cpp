@@ -280,7 +280,7 @@ TEST(ParseWarnings, MessagesEscapeNonPrintableBytes) {
   ParsedScene p = parseSceneWithWarnings(kOk + "\xEF\xBB\xBFsphere 0 0 0 1\ncam\xC3\xA9ra 1\n", "w.test");
   ASSERT_EQ(p.warnings.size(), 2u);
   EXPECT_EQ(p.warnings[0].message, "unknown command '\\xEF\\xBB\\xBFsphere' (line skipped)");
-  EXPECT_EQ(p.warnings[1].message, "unknown command 'cam\\xC3\\xA9ra' (line skipped)");
+  EXPECT_EQ(p.warnings[1].message, "unknown command 'cam\\xC3\\xA9ra' (line skipped); did you mean 'camera'?");
   try {
     parseScene(kOk + "vertex 1 \xFF\xFE 0\n", "e.test");
     FAIL() << "no error";

@@ -8,7 +8,6 @@
 
 #include <sys/resource.h>
 
-#include "cli/options.h"
 #include "cli/run_files.h"
 #include "errors.h"
 #include "gpu/device_error.h"
@@ -37,11 +36,11 @@ std::string processMemoryLimit() {
 int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE* err) {
   try {
     std::rethrow_exception(error);
-  } catch (const RefusedOutput& e) {   // the command line is well-formed: no usage text
+  } catch (const RefusedOutput& e) {   // the command line is well-formed: no pointer to --help
     std::fprintf(err, "vkrt: error: %s\n", e.what());
     return kExitUsage;
-  } catch (const UsageError& e) {
-    std::fprintf(err, "vkrt: error: %s\n\n%s", e.what(), usageText());
+  } catch (const UsageError& e) {   // one line, and where the whole usage is (not the text itself)
+    std::fprintf(err, "vkrt: error: %s\nsee 'vkrt --help'\n", e.what());
     return kExitUsage;
   } catch (const Interrupted& e) {
     std::fprintf(err, "\nvkrt: interrupted; nothing written\n");

@@ -1,14 +1,21 @@
 // Command-line parsing for `vkrt`.
 #include "cli/options.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <span>
+#include <string_view>
 
+#include <sys/stat.h>
+
+#include "cli/image_argument.h"
 #include "image/crop.h"
 #include "image/image_file.h"
 #include "scene/diagnostic.h"   // echoed, abbreviated
 #include "scene/parse.h"        // kMaxImageEdge
+#include "suggest.h"
 
 namespace vkrt {
 
@@ -109,6 +116,50 @@ const char* usageText() {
 
 namespace {
 
+// The subcommands, and the long options of --help (without their dashes), for "did you
+// mean" after a typo.
+constexpr std::string_view kSubcommands[] = {"diff", "merge"};
+constexpr std::string_view kLongOptions[] = {
+    "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "maxdepth",
+    "spp", "seed", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
+    "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version"};
+constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "quiet", "help"};
+
+// "unknown option '--bakcend'; did you mean '--backend'?": the option without its dashes
+// (and without =VALUE) against the long options.
+std::string unknownOption(const std::string& what, const std::string& option, const std::string& note,
+                          std::span<const std::string_view> known) {
+  std::string_view name = option;
+  name = name.substr(0, name.find('='));
+  name.remove_prefix(std::min(name.find_first_not_of('-'), name.size()));
+  return "unknown " + what + " '" + echoed(option) + "'" + (note.empty() ? "" : " " + note) +
+         didYouMean(name, known, "--");
+}
+
+bool exists(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0;
+}
+
+// `vkrt dif a.png b.png`: a first argument near a subcommand, and no file of that name, is a
+// mistyped subcommand (not a scene file that cannot be opened).
+void refuseMistypedSubcommand(const std::vector<std::string>& args) {
+  if (args.empty() || args[0].empty() || args[0][0] == '-' || exists(args[0])) return;
+  for (std::string_view command : kSubcommands)
+    if (args[0] == command) return;
+  if (std::optional<std::string_view> match = closestMatch(args[0], kSubcommands))
+    throw UsageError("unknown command '" + echoed(args[0]) + "'; did you mean '" + std::string(*match) + "'?");
+}
+
+// An image given as a scene: said in one line, before anything reads it as one.
+void refuseImagesAsScenes(const std::vector<std::string>& scenes) {
+  for (const std::string& scene : scenes)
+    if (std::optional<std::string> kind = imageKind(scene))
+      throw UsageError(abbreviated(scene) + " is a " + *kind +
+                       " image, not a scene file (to compare images: vkrt diff A B; to merge tiles: "
+                       "vkrt merge -o OUT TILE ...)");
+}
+
 // An integer option value in [lo, hi].
 int integerValue(const std::string& option, const std::string& v, int lo, int hi) {
   int n = 0;
@@ -197,7 +248,8 @@ Options parseMergeOptions(const std::vector<std::string>& args) {
     } else if (a == "-h" || a == "--help") {
       o.help = true;
     } else {
-      throw UsageError("unknown merge option '" + echoed(a) + "' (merge takes -o OUT.png, --allow-gaps, -q)");
+      throw UsageError(
+          unknownOption("merge option", a, "(merge takes -o OUT.png, --allow-gaps, -q)", kMergeLongOptions));
     }
   }
   if (o.help) return o;
@@ -223,6 +275,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     first = 1;
   }
   if (!args.empty() && args[0] == "merge") return parseMergeOptions(args);
+  refuseMistypedSubcommand(args);
   for (std::size_t i = first; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const std::string& name) -> const std::string& {
@@ -335,7 +388,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     } else if (a == "--version") {
       o.version = true;
     } else {
-      throw UsageError("unknown option '" + echoed(a) + "'");
+      throw UsageError(unknownOption("option", a, "", kLongOptions));
     }
   }
   if (const char* v = std::getenv("VKRT_VALIDATION"); v && std::string(v) == "1") o.request.validation = true;
@@ -355,6 +408,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     o.diffB = images[1];
     return o;
   }
+  refuseImagesAsScenes(scenes);
   bool comparing = o.thresholds.any() || o.json || o.heatmapPath;
   if (comparing && !o.checkAgainst && !o.compare)
     throw UsageError("--max-pixels-over, --max-diff, --json and --diff need --check REF.png or --compare (or vkrt diff)");

@@ -45,6 +45,7 @@ struct Options {
 // Throws UsageError.
 Options parseOptions(const std::vector<std::string>& args);
 
+// The whole usage, for --help (a usage error prints its one line and points here).
 const char* usageText();
 
 }  // namespace vkrt

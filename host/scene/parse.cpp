@@ -25,6 +25,7 @@
 #include "scene/linear_map.h"
 #include "scene/number.h"
 #include "scene/unit_vector.h"
+#include "suggest.h"
 
 namespace vkrt {
 namespace {
@@ -297,12 +298,15 @@ class Parser {
   }
 
   // Commands of other courses' extensions are skipped, and a known keyword in another case
-  // is read as that keyword, each with a warning (SPEC section 8).
+  // is read as that keyword, each with a warning (SPEC section 8). The warning for an unknown
+  // command names the nearest command when one is near enough to be a typo (`sphre`).
   void dispatch(std::string_view name) {
     std::optional<Command> cmd = commandNamed(name);
     if (!cmd) {
       cmd = commandNamedIgnoringCase(name);
-      if (!cmd) return warn(WarningKind::UnknownCommand, "unknown command " + quoted(name) + " (line skipped)");
+      if (!cmd)
+        return warn(WarningKind::UnknownCommand,
+                    "unknown command " + quoted(name) + " (line skipped)" + didYouMean(name, kCommandNames));
       warn(WarningKind::KeywordCase, quoted(name) + " read as '" + std::string(nameOf(*cmd)) +
                                          "' (keywords are case-sensitive)");
     }

@@ -1,0 +1,48 @@
+// What kind of image a file is, from its first bytes or its name (host/cli/image_argument.h).
+#include "cli/image_argument.h"
+
+#include <cstring>
+#include <fstream>
+#include <utility>
+#include <string_view>
+
+#include <sys/stat.h>
+
+namespace vkrt {
+namespace {
+
+bool blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+bool endsWithIgnoringCase(const std::string& s, std::string_view suffix) {
+  if (s.size() < suffix.size()) return false;
+  for (std::size_t i = 0; i < suffix.size(); ++i) {
+    char c = s[s.size() - suffix.size() + i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != suffix[i]) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<std::string> imageKind(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
+    std::ifstream in(path, std::ios::binary);
+    char head[8] = {};
+    if (in.read(head, sizeof head) || in.gcount() > 0) {
+      const std::size_t n = static_cast<std::size_t>(in.gcount());
+      if (n == 8 && std::memcmp(head, "\x89PNG\r\n\x1a\n", 8) == 0) return "PNG";
+      if (n >= 3 && std::memcmp(head, "\xFF\xD8\xFF", 3) == 0) return "JPEG";
+      if (n >= 3 && head[0] == 'P' && (head[1] == '6' || head[1] == '3') && blank(head[2])) return "PPM";
+      if (n >= 3 && head[0] == 'P' && (head[1] == 'F' || head[1] == 'f') && blank(head[2])) return "PFM";
+      return std::nullopt;   // read, and not an image: a scene, or the parser says what is wrong
+    }
+  }
+  for (auto [suffix, kind] : {std::pair{".png", "PNG"}, std::pair{".ppm", "PPM"}, std::pair{".pfm", "PFM"},
+                              std::pair{".jpg", "JPEG"}, std::pair{".jpeg", "JPEG"}})
+    if (endsWithIgnoringCase(path, suffix)) return kind;
+  return std::nullopt;
+}
+
+}  // namespace vkrt
