@@ -253,13 +253,9 @@ std::uint64_t renderIdentity(const SceneDesc& scene, bool pathIntegrator) {
   hash.add("vkrt-render 1\nsize " + std::to_string(scene.width) + " " + std::to_string(scene.height) +
            "\nmaxdepth " + std::to_string(scene.maxDepth) + "\n");
   if (pathIntegrator) hash.add(std::string("pixel-centres ") + (scene.path.spp == 1 ? "1" : "0") + "\n");
-  hash.add("scene\n");
-  std::ifstream in(scene.sourcePath, std::ios::binary);
-  if (!in) throw IoError("cannot read '" + scene.sourcePath + "' again: " + std::strerror(errno));
-  std::vector<char> chunk(1 << 16);
-  while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
-    hash.add(chunk.data(), static_cast<std::size_t>(in.gcount()));
-  if (in.bad()) throw IoError("cannot read '" + scene.sourcePath + "' again: " + std::strerror(errno));
+  // The scene's text as it was parsed (hashed by the parser: the file is not read again, and a
+  // scene read from a pipe has its identity too).
+  hash.add("scene " + formatRenderIdentity(scene.sourceHash) + "\n");
   return hash.value();
 }
 

@@ -21,6 +21,7 @@
 #include "counted.h"
 #include "errors.h"
 #include "image/image_file.h"
+#include "image/render_identity.h"
 #include "interrupt.h"
 #include "scene/linear_map.h"
 #include "scene/number.h"
@@ -956,7 +957,11 @@ class Parser {
 }  // namespace
 
 ParsedScene parseSceneWithWarnings(std::string_view text, const std::string& fileName, const ParseOptions& options) {
-  return Parser(text, fileName, options).run();
+  ParsedScene parsed = Parser(text, fileName, options).run();
+  Fnv1a64 hash;
+  hash.add(text);
+  parsed.scene.sourceHash = hash.value();
+  return parsed;
 }
 
 SceneDesc parseScene(std::string_view text, const std::string& fileName) {

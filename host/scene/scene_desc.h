@@ -87,6 +87,7 @@ struct Camera {
 
 struct SceneDesc {
   std::string sourcePath;        // the file as named by the user (for messages)
+  std::uint64_t sourceHash = 0;  // 64-bit FNV-1a of the text as parsed (a render's identity starts from it)
   int width = 0, height = 0;
   int sizeLine = 0;              // line of the `size` command
   // Raytracer: primary hit plus up to maxDepth mirror reflections. Path integrators: light
