@@ -127,8 +127,8 @@ float hitSphere(uint index, vec3 origin, vec3 dir, float tMin, float tMax) {
 float hitPrimitive(uint ref, vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, out vec2 b) {
   b = vec2(0.0);
   if (!kHasSpheres) return hitTriangle(ref, origin, dir, sh, tMin, tMax, b);
-  if (!kHasTriangles) return hitSphere(ref & ~kPrimSphereBit, origin, dir, tMin, tMax);
-  return (ref & kPrimSphereBit) != 0u ? hitSphere(ref & ~kPrimSphereBit, origin, dir, tMin, tMax)
+  if (!kHasTriangles) return hitSphere(primIndex(ref), origin, dir, tMin, tMax);
+  return primKind(ref) == kPrimSphere ? hitSphere(primIndex(ref), origin, dir, tMin, tMax)
                                       : hitTriangle(ref, origin, dir, sh, tMin, tMax, b);
 }
 
@@ -174,8 +174,8 @@ bool nextIsInterior() { return sp > 0u && (stack[sp - 1u] & kStackLeafBit) == 0u
 // secondary-ray offsets of p (setSecondaryOffsets).
 void surfaceAt(uint prim, vec3 origin, vec3 dir, float t, vec2 b, vec3 p, vec3 camera, out vec3 normal,
                out uint material) {
-  if (kHasSpheres && (!kHasTriangles || (prim & kPrimSphereBit) != 0u)) {
-    GpuSphere s = loadSphere(prim & ~kPrimSphereBit);
+  if (kHasSpheres && (!kHasTriangles || primKind(prim) == kPrimSphere)) {
+    GpuSphere s = loadSphere(primIndex(prim));
     vec3 pObject = (s.objectFromWorld * vec4(origin, 1.0)).xyz + t * (s.objectFromWorld * vec4(dir, 0.0)).xyz;
     normal = normalize(transpose(mat3(s.objectFromWorld)) * (pObject - s.centerRadius.xyz));
     material = s.materialIndex;

@@ -254,8 +254,8 @@ float sphereDensityFactor(GpuSphere s, vec3 nObject, out vec3 normal) {
 float emitterHitPdf(GpuMaterial m) {
   vec3 normal;
   float factor = 1.0;
-  if (kHasSpheres && (!kHasTriangles || (hitPrim & kPrimSphereBit) != 0u)) {
-    GpuSphere s = loadSphere(hitPrim & ~kPrimSphereBit);
+  if (kHasSpheres && (!kHasTriangles || primKind(hitPrim) == kPrimSphere)) {
+    GpuSphere s = loadSphere(primIndex(hitPrim));
     vec3 pObject = (s.objectFromWorld * vec4(hitPoint, 1.0)).xyz - s.centerRadius.xyz;
     factor = sphereDensityFactor(s, normalize(pObject), normal);
   } else {
@@ -472,8 +472,8 @@ void emitterSample(uint k, GpuMaterial m, inout uint step) {
   vec3 x, normal;
   float factor = 1.0, primitiveOffset;
   uint material;
-  if (kHasSpheres && (!kHasTriangles || (prim & kPrimSphereBit) != 0u)) {
-    GpuSphere sp = loadSphere(prim & ~kPrimSphereBit);
+  if (kHasSpheres && (!kHasTriangles || primKind(prim) == kPrimSphere)) {
+    GpuSphere sp = loadSphere(primIndex(prim));
     float z = 1.0 - 2.0 * s, r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * t;
     vec3 nObject = vec3(r * cos(phi), r * sin(phi), z);
     vec3 pObject = sp.centerRadius.xyz + sp.centerRadius.w * nObject;
@@ -584,7 +584,7 @@ bool testAll(vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, bool shado
       float t = hitSphere(i, origin, dir, tMin, nearest);
       bool hit = t > 0.0;
       nearest = hit ? t : nearest;
-      prim = hit ? i | kPrimSphereBit : prim;
+      prim = hit ? primRef(kPrimSphere, i) : prim;
       bary = hit ? vec2(0.0) : bary;
     }
   }

@@ -131,9 +131,9 @@ int checkTree(const SceneDesc& s, const Bvh& bvh) {
       std::uint32_t ref = bvh.primRefs[n.leftOrFirst + i];
       dvec3 lo, hi;
       std::size_t index;
-      if (ref & gpu::kPrimSphereBit) {
-        index = s.triangles.size() + (ref & ~gpu::kPrimSphereBit);
-        sphereBounds(s.spheres[ref & ~gpu::kPrimSphereBit], lo, hi);
+      if (gpu::primKind(ref) == gpu::kPrimSphere) {
+        index = s.triangles.size() + (gpu::primIndex(ref));
+        sphereBounds(s.spheres[gpu::primIndex(ref)], lo, hi);
       } else {
         index = ref;
         lo = glm::min(s.triangles[ref].p[0], glm::min(s.triangles[ref].p[1], s.triangles[ref].p[2]));
@@ -326,7 +326,7 @@ TEST(Flatten, EmitterTableWeighsAreaTimesEmission) {
   ASSERT_EQ(g.emitters.size(), 2u);
   EXPECT_EQ(g.path.emitterCount, 2u);
   EXPECT_EQ(g.emitters[0].primRef, 1u);
-  EXPECT_EQ(g.emitters[1].primRef, 0u | gpu::kPrimSphereBit);
+  EXPECT_EQ(g.emitters[1].primRef, gpu::primRef(gpu::kPrimSphere, 0u));
   const double pi = 3.14159265358979323846, total = 8.0 + 16.0 * pi;
   EXPECT_FLOAT_EQ(g.emitters[0].cdf, static_cast<float>(8.0 / total));
   EXPECT_EQ(g.emitters[1].cdf, 1.0f);

@@ -96,10 +96,10 @@ class PathIntegrator {
   }
 
   double& pickProbability(std::uint32_t prim) {
-    return (prim & gpu::kPrimSphereBit) ? spherePick_[prim & ~gpu::kPrimSphereBit] : trianglePick_[prim];
+    return (gpu::primKind(prim) == gpu::kPrimSphere) ? spherePick_[gpu::primIndex(prim)] : trianglePick_[prim];
   }
   double pickProbability(std::uint32_t prim) const {
-    return (prim & gpu::kPrimSphereBit) ? spherePick_[prim & ~gpu::kPrimSphereBit] : trianglePick_[prim];
+    return (gpu::primKind(prim) == gpu::kPrimSphere) ? spherePick_[gpu::primIndex(prim)] : trianglePick_[prim];
   }
 
   // A point of emitter primitive `prim` from (u, v): uniform in area on a triangle; on an
@@ -107,8 +107,8 @@ class PathIntegrator {
   // the transform's area element |det M| |M^-T n|.
   EmitterPoint emitterPoint(std::uint32_t prim, double u, double v) const {
     EmitterPoint point;
-    if (prim & gpu::kPrimSphereBit) {
-      const Sphere& sp = scene_.spheres[prim & ~gpu::kPrimSphereBit];
+    if (gpu::primKind(prim) == gpu::kPrimSphere) {
+      const Sphere& sp = scene_.spheres[gpu::primIndex(prim)];
       const double z = 1.0 - 2.0 * u, r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * v;
       const dvec3 nObject(r * std::cos(phi), r * std::sin(phi), z);
       point.x = dvec3(sp.worldFromObject * glm::dvec4(sp.center + sp.radius * nObject, 1.0));
@@ -136,8 +136,8 @@ class PathIntegrator {
   // `prim` from a vertex at distance `distance` along unit `dir`.
   double emitterSolidAnglePdf(std::uint32_t prim, const dvec3& p, double distance, const dvec3& dir) const {
     EmitterPoint point;
-    if (prim & gpu::kPrimSphereBit) {
-      const Sphere& sp = scene_.spheres[prim & ~gpu::kPrimSphereBit];
+    if (gpu::primKind(prim) == gpu::kPrimSphere) {
+      const Sphere& sp = scene_.spheres[gpu::primIndex(prim)];
       const dvec3 pObject = dvec3(sp.objectFromWorld * glm::dvec4(p, 1.0));
       point = sphereDensity(sp, glm::normalize(pObject - sp.center), point);
     } else {
@@ -186,7 +186,7 @@ class PathIntegrator {
       if (!unoccluded(v.p, wi, v.offset.at(nDotI), tMax, counts)) continue;
       const double lightPdf = pickProbability(prim) * point.areaPdf * dist2 / cosLight;
       const std::uint32_t material =
-          (prim & gpu::kPrimSphereBit) ? scene_.spheres[prim & ~gpu::kPrimSphereBit].material : scene_.triangles[prim].material;
+          (gpu::primKind(prim) == gpu::kPrimSphere) ? scene_.spheres[gpu::primIndex(prim)].material : scene_.triangles[prim].material;
       dvec3 contribution = scene_.materials[material].emission * f * (nDotI / (lightPdf * n));
       if (mis) contribution *= powerHeuristic(lightPdf, directionPdf(scene_.path.sampling, *v.m, v.n, wi, v.wo));
       sum += contribution;

@@ -108,8 +108,8 @@ bool SceneQuery::intersect(const Ray& ray, double tMin, double tMax, bool anyHit
       for (std::uint32_t i = 0; i < node.primCount; ++i) {
         std::uint32_t ref = bvh_.primRefs[node.leftOrFirst + i];
         Hit h;
-        bool ok = (ref & gpu::kPrimSphereBit)
-                      ? hitSphere(scene_.spheres[ref & ~gpu::kPrimSphereBit], ray, tMin, hit.t, h)
+        bool ok = (gpu::primKind(ref) == gpu::kPrimSphere)
+                      ? hitSphere(scene_.spheres[gpu::primIndex(ref)], ray, tMin, hit.t, h)
                       : hitTriangle(scene_.triangles[ref], ray, tMin, hit.t, h);
         if (ok) {
           h.prim = ref;
@@ -127,8 +127,8 @@ bool SceneQuery::intersect(const Ray& ray, double tMin, double tMax, bool anyHit
 }
 
 std::uint32_t SceneQuery::surfaceAt(const Hit& hit, const dvec3& p, dvec3& normal) const {
-  if (hit.prim & gpu::kPrimSphereBit) {
-    const Sphere& s = scene_.spheres[hit.prim & ~gpu::kPrimSphereBit];
+  if (gpu::primKind(hit.prim) == gpu::kPrimSphere) {
+    const Sphere& s = scene_.spheres[gpu::primIndex(hit.prim)];
     dvec3 pObject = dvec3(s.objectFromWorld * glm::dvec4(p, 1.0));
     normal = glm::normalize(glm::transpose(glm::dmat3(s.objectFromWorld)) * (pObject - s.center));
     return s.material;
@@ -142,7 +142,7 @@ std::uint32_t SceneQuery::surfaceAt(const Hit& hit, const dvec3& p, dvec3& norma
 }
 
 SecondaryRayOffsets SceneQuery::offsetsAt(const Hit& hit, const dvec3& p) const {
-  const double primitiveOffset = (hit.prim & gpu::kPrimSphereBit) ? offsets_.spheres[hit.prim & ~gpu::kPrimSphereBit]
+  const double primitiveOffset = (gpu::primKind(hit.prim) == gpu::kPrimSphere) ? offsets_.spheres[gpu::primIndex(hit.prim)]
                                                                   : offsets_.triangles[hit.prim];
   return secondaryRayOffsets(primitiveOffset, p - frameOrigin_, p - scene_.camera.from);
 }

@@ -22,7 +22,7 @@ struct Ray {
 
 struct Hit {
   double t = kInfinity;
-  std::uint32_t prim = 0;      // primRef: triangle index, or sphere index | kPrimSphereBit
+  std::uint32_t prim = 0;      // primRef: triangle index, or sphere primRef(kPrimSphere, index)
   double b1 = 0.0, b2 = 0.0;   // barycentric weights of p1 and p2 (triangles)
 };
 

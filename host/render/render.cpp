@@ -383,7 +383,7 @@ RenderReport::Lights countLights(const SceneDesc& scene) {
   n.quad = scene.quadLights.size();
   if (scene.path.integrator == Integrator::PathTracer)
     for (std::uint32_t prim : collectEmitters(scene).prims)
-      ++((prim & gpu::kPrimSphereBit) ? n.emissiveSpheres : n.emissiveTriangles);
+      ++((gpu::primKind(prim) == gpu::kPrimSphere) ? n.emissiveSpheres : n.emissiveTriangles);
   return n;
 }
 

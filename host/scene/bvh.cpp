@@ -11,8 +11,10 @@
 #include <cstring>
 #include <future>
 #include <limits>
+#include <string>
 #include <thread>
 
+#include "errors.h"
 #include "scene/linear_map.h"
 #include "scene/unit_vector.h"
 
@@ -437,6 +439,11 @@ static bool neverHit(const Sphere& s) {
 
 Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads, double scale) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // A primitive reference holds an index below 2^29 (gpu_types.h, primRef): 32 GiB of
+  // triangles, beyond any machine's memory before this is reached.
+  if (scene.triangles.size() > gpu::kPrimIndexMask || scene.spheres.size() > gpu::kPrimIndexMask)
+    throw OutOfMemory(std::to_string(scene.triangles.size()) + " triangles and " + std::to_string(scene.spheres.size()) +
+                      " spheres: a scene holds at most " + std::to_string(gpu::kPrimIndexMask) + " of each");
   std::vector<BuildPrim> prims(scene.triangles.size() + scene.spheres.size());
   const std::size_t triangles = scene.triangles.size();
   constexpr std::uint32_t kDropped = 0xFFFFFFFFu;
@@ -458,7 +465,7 @@ Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads, double sc
         }
         sphereBounds(scene.spheres[i - triangles], lo, hi);
         prims[i] = makePrim((lo - origin) * scale, (hi - origin) * scale,
-                            static_cast<std::uint32_t>(i - triangles) | gpu::kPrimSphereBit);
+                            gpu::primRef(gpu::kPrimSphere, static_cast<std::uint32_t>(i - triangles)));
       }
     }
   };

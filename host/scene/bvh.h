@@ -16,7 +16,7 @@ inline constexpr int kMaxBvhDepth = 96;
 struct Bvh {
   // nodes[0] is the root. An interior node's children are adjacent (left, left + 1).
   std::vector<gpu::GpuBvhNode> nodes;
-  // Leaf contents: triangle index, or sphere index | kPrimSphereBit.
+  // Leaf contents: triangle index, or sphere primRef(kPrimSphere, index).
   std::vector<std::uint32_t> primRefs;
   // Levels of the tree (1 for a lone root); a traversal stack needs at most depth + 1 entries.
   int depth = 1;

@@ -34,7 +34,7 @@ EmitterTable collectEmitters(const SceneDesc& scene) {
   }
   for (std::uint32_t i = 0; i < scene.spheres.size(); ++i) {
     const double e = radianceWeight(scene.spheres[i].material);
-    if (e > 0.0) add(i | gpu::kPrimSphereBit, sphereEmitterArea(scene.spheres[i]) * e);
+    if (e > 0.0) add(gpu::primRef(gpu::kPrimSphere, i), sphereEmitterArea(scene.spheres[i]) * e);
   }
   for (double w : weights) table.totalWeight += w;
   double running = 0.0;

@@ -20,7 +20,7 @@ double emitterRadianceWeight(const Material& m);
 double sphereEmitterArea(const Sphere& s);
 
 struct EmitterTable {
-  std::vector<std::uint32_t> prims;   // primRefs (gpu_types.h: kPrimSphereBit for spheres), triangles first
+  std::vector<std::uint32_t> prims;   // primRefs (gpu_types.h: primRef(kind, index)), triangles first
   std::vector<double> pick;           // the probability of picking each
   std::vector<double> cdf;            // cumulative: cdf[e] = pick[0] + ... + pick[e], the last exactly 1
   double totalWeight = 0.0;           // sum of area x sum(|emission|): pick = weight / totalWeight

@@ -59,8 +59,15 @@ GPU_CONST float kCourseSizeHigh = 60.0f;
 GPU_CONST float kOffsetPerMagnitude = 3.814697265625e-6f;   // 2^-18: 32 ulps of float32
 GPU_CONST float kGrazingPerMagnitude = 4.76837158203125e-7f;   // 2^-21: 8 ulps of float32
 
-// A BVH leaf's primitive reference: triangle index, or sphere index with this bit set.
-GPU_CONST uint kPrimSphereBit = 0x80000000u;
+// A BVH leaf's primitive reference: the primitive's kind in the top bits, its index in that
+// kind's array below them (room for eight kinds of 2^29 primitives each).
+GPU_CONST uint kPrimKindShift = 29u;
+GPU_CONST uint kPrimIndexMask = 0x1FFFFFFFu;
+GPU_CONST uint kPrimTriangle = 0u;
+GPU_CONST uint kPrimSphere = 1u;
+GPU_FN uint primRef(uint kind, uint index) { return (kind << kPrimKindShift) | index; }
+GPU_FN uint primKind(uint ref) { return ref >> kPrimKindShift; }
+GPU_FN uint primIndex(uint ref) { return ref & kPrimIndexMask; }
 // GpuTriangle.normalsIndex of a flat triangle (face normal).
 GPU_CONST uint kNoNormals = 0xFFFFFFFFu;
 // GpuLight.positionOrDirection.w: 1 for a point light, 0 for a directional one.
@@ -432,7 +439,7 @@ GPU_CONST float kQuadShadowSpan = 0.9990234375f;   // 1 - 2^-10
 // sum(|emission|) / total on a triangle, and on an ellipsoid
 // sum(|emission|) / total / (|det M|^(1/3) |M^-T n|) (its area counted as 4 pi r^2 |det M|^(2/3)).
 struct GpuEmitter {
-  uint primRef;             // a triangle, or a sphere with kPrimSphereBit
+  uint primRef;             // primRef(kind, index)
   float cdf;                // cumulative pick probability up to and with this entry (the last is 1)
 };
 GPU_ASSERT_SIZE(GpuEmitter, 8)
