@@ -21,10 +21,6 @@ namespace vkrt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// maxdepth -1 without Russian roulette has no end in a closed scene of albedo 1: paths stop
-// after this many bounces (where the generator's dimensions, bounce * kRngBounceStride, would
-// wrap around 2^32).
-constexpr std::uint32_t kMaxBounces = 0xFFFFFFFFu / gpu::kRngBounceStride - 1u;
 
 // A quad light as the integrators sample it.
 struct AreaLight {
@@ -355,7 +351,7 @@ class PathIntegrator {
       }
       // A quad light's triangles reflect nothing; the depth rule stops the rest.
       if (v.m->quadLight >= 0) break;
-      if ((maxDepth >= 0 && bounce >= static_cast<std::uint32_t>(maxDepth)) || bounce >= kMaxBounces) break;
+      if ((maxDepth >= 0 && bounce >= static_cast<std::uint32_t>(maxDepth)) || bounce >= gpu::kMaxBounces) break;
 
       // Sample direct illumination: point and directional lights always, quad lights by NEE.
       radiance += beta * pointLights(v, counts);

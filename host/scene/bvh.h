@@ -10,13 +10,16 @@
 
 namespace vkrt {
 
-// Traversal stacks of this many entries never overflow (the builder bounds the depth).
+// Traversal stacks of this many entries never overflow (the builder bounds the depth). The
+// shaders' stacks, and the ones they save when suspended, hold kTraversalStackSize entries.
 inline constexpr int kMaxBvhDepth = 96;
+static_assert(kMaxBvhDepth <= static_cast<int>(gpu::kTraversalStackSize),
+              "a BVH this deep overflows the shaders' traversal stacks");
 
 struct Bvh {
   // nodes[0] is the root. An interior node's children are adjacent (left, left + 1).
   std::vector<gpu::GpuBvhNode> nodes;
-  // Leaf contents: triangle index, or sphere primRef(kPrimSphere, index).
+  // Leaf contents: primitive references, primRef(kind, index) (gpu_types.h).
   std::vector<std::uint32_t> primRefs;
   // Levels of the tree (1 for a lone root); a traversal stack needs at most depth + 1 entries.
   int depth = 1;
