@@ -30,10 +30,11 @@ BandLayout bandLayout(const PixelRect& region, std::size_t stateBytes, std::size
   return b;
 }
 
-gpu::GpuRenderParams renderParams(const GpuScene& scene, const BandLayout& layout) {
+gpu::GpuRenderParams renderParams(const GpuScene& scene, const BandLayout& layout, std::uint32_t maxDepth) {
   gpu::GpuRenderParams params{};
   params.width = layout.width;
   params.height = layout.height;
+  params.maxDepth = maxDepth;
   params.lightCount = static_cast<std::uint32_t>(scene.lights.size());
   params.bandHeight = layout.bandHeight;
   params.tilesX = layout.tilesX;

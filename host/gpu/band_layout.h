@@ -33,9 +33,9 @@ PixelRect renderRegion(const GpuScene& scene, const std::optional<PixelRect>& cr
 BandLayout bandLayout(const PixelRect& region, std::size_t stateBytes, std::size_t maxStateBytes,
                       std::uint32_t tilesPerGroup);
 
-// The GpuRenderParams of a render of `scene` in `layout`, but for maxDepth and stepBudget
-// (the renderer's own; left 0).
-gpu::GpuRenderParams renderParams(const GpuScene& scene, const BandLayout& layout);
+// The GpuRenderParams of a render of `scene` in `layout` with `maxDepth`, but for the step
+// budget (BandBuffers sets it; left 0).
+gpu::GpuRenderParams renderParams(const GpuScene& scene, const BandLayout& layout, std::uint32_t maxDepth);
 
 // Throws DeviceError for a scene beyond what the shaders take (more primitives than a
 // traversal-stack entry can name), InternalError for a BVH deeper than their stack.

@@ -70,7 +70,7 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
     throw InternalError("renderVulkanPath called for the raytracer integrator (renderVulkan renders it)");
   const BandLayout layout =
       bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuPathTracerState), options.maxStateBytes, 1);
-  const std::uint32_t width = layout.width, height = layout.height, bandHeight = layout.bandHeight;
+  const std::uint32_t width = layout.width, height = layout.height;
   const std::uint32_t samples = options.sampleCount ? options.sampleCount : scene.spp;
   const std::uint32_t renderSpp = options.renderSpp ? options.renderSpp : scene.spp;
   checkShaderLimits(scene);
@@ -85,15 +85,9 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
                       " (fewer quad lights or lightsamples)");
 
   auto t0 = std::chrono::steady_clock::now();
-  gpu::GpuRenderParams params = renderParams(scene, layout);
-  params.maxDepth = scene.path.maxDepth;
-  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  params.stepBudget = options.stepBudget ? options.stepBudget
-                                         : firstStepBudget(gpu::kDefaultStepBudget, layout.invocations(),
-                                                           cpuDevice, kPathFirstDispatchSteps);
   const SceneUpload upload(context, scene, SceneArrays::Path);
-  BandBuffers band(context, layout, layout.bandPixels() * sizeof(gpu::GpuPathTracerState), params,
-                   !options.stepBudget);
+  BandBuffers band(context, layout, layout.bandPixels() * sizeof(gpu::GpuPathTracerState),
+                   renderParams(scene, layout, scene.path.maxDepth), options.stepBudget, kPathFirstDispatchSteps);
   t.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
@@ -128,24 +122,13 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   RadianceImage image(static_cast<int>(width), static_cast<int>(height));
   image.samples = samples;
   gpu::GpuPathPush push{};
+  const float scale = samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f;
+  BandHooks hooks{options.stop, options.progress,
+                  [&](std::uint32_t y0, std::uint32_t rows) { band.readRows(rows, scale, image, static_cast<int>(y0)); },
+                  {}};
   RayCounts counted;
-  const std::uint64_t total = std::uint64_t{width} * height * samples;
-  for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
-    push.bandY0 = y0;
-    if (!dispatchBand(pipeline, &push, push.resume, y0, layout.groups, band.counters, options.stop, t, counted,
-                      &band.pace))
-      return image;
-
-    t0 = std::chrono::steady_clock::now();
-    const std::uint32_t rows = std::min(bandHeight, height - y0);
-    band.readRows(rows, samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f, image, static_cast<int>(y0));
-    t.readbackSeconds += secondsSince(t0);
-    if (options.progress) options.progress(std::uint64_t{y0 + rows} * width * samples, total);
-  }
-  if (rays) {
-    *rays = counted;
-    rays->primary = std::uint64_t{width} * height * samples;
-  }
+  if (!band.run(pipeline, &push, push.bandY0, push.resume, layout, samples, hooks, t, counted)) return image;
+  if (rays) *rays = counted;
   if (timings) *timings = t;
   return image;
 }

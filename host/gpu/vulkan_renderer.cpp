@@ -88,21 +88,17 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   // band each take a run of perInvocation adjacent 8x8 tiles.
   const BandLayout layout = bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuPathState),
                                        options.maxStateBytes, perInvocation);
-  const std::uint32_t width = layout.width, height = layout.height, bandHeight = layout.bandHeight;
+  const std::uint32_t width = layout.width, height = layout.height;
   checkShaderLimits(scene);
 
   auto t0 = std::chrono::steady_clock::now();
   const Features features = sceneFeatures(scene, options.specialize);
   t.leftOut = features.leftOut;
-  gpu::GpuRenderParams params = renderParams(scene, layout);
   // Without a specular surface no mirror ray is ever traced.
-  params.maxDepth = features.specular ? scene.maxDepth : 0;
-  params.stepBudget = options.stepBudget ? options.stepBudget
-                                         : firstStepBudget(gpu::kDefaultStepBudget, layout.invocations(),
-                                                           cpuDevice, kWhittedFirstDispatchSteps);
+  const gpu::GpuRenderParams params = renderParams(scene, layout, features.specular ? scene.maxDepth : 0);
   const SceneUpload upload(context, scene, SceneArrays::Whitted);
-  BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuPathState), params,
-                   !options.stepBudget);
+  BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuPathState), params, options.stepBudget,
+                   kWhittedFirstDispatchSteps);
   t.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
@@ -139,26 +135,18 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   RadianceImage rowsImage;
   rowsImage.samples = options.sampleCount;
   gpu::GpuPushConstants push = scene.push;
+  BandHooks hooks{options.stop, options.progress,
+                  [&](std::uint32_t y0, std::uint32_t rows) {
+                    if (!options.rows) return band.readRows(rows, 1.0f, image, static_cast<int>(y0));
+                    if (rowsImage.height != static_cast<int>(rows))
+                      rowsImage = RadianceImage(static_cast<int>(width), static_cast<int>(rows));
+                    band.readRows(rows, 1.0f, rowsImage, 0);
+                  },
+                  {}};
+  if (options.rows) hooks.after = [&](std::uint32_t y0, std::uint32_t) { options.rows(static_cast<int>(y0), rowsImage); };
   RayCounts counted;
-  for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
-    push.bandY0 = y0;
-    if (!dispatchBand(pipeline, &push, push.resume, y0, layout.groups, band.counters, options.stop, t, counted,
-                      &band.pace))
-      return image;
-
-    t0 = std::chrono::steady_clock::now();
-    const std::uint32_t rows = std::min(bandHeight, height - y0);
-    if (options.rows && rowsImage.height != static_cast<int>(rows))
-      rowsImage = RadianceImage(static_cast<int>(width), static_cast<int>(rows));
-    band.readRows(rows, 1.0f, options.rows ? rowsImage : image, options.rows ? 0 : static_cast<int>(y0));
-    t.readbackSeconds += secondsSince(t0);
-    if (options.rows) options.rows(static_cast<int>(y0), rowsImage);
-    if (options.progress) options.progress(std::uint64_t{y0 + rows} * width, std::uint64_t{height} * width);
-  }
-  if (rays) {
-    *rays = counted;
-    rays->primary = std::uint64_t{width} * height;
-  }
+  if (!band.run(pipeline, &push, push.bandY0, push.resume, layout, 1, hooks, t, counted)) return image;
+  if (rays) *rays = counted;
   if (timings) *timings = t;
   return image;
 }
