@@ -9,9 +9,9 @@
 #include <functional>
 #include <optional>
 
-#include "cpu/reference.h"
 #include "image/crop.h"
 #include "image/radiance_image.h"
+#include "render/ray_counts.h"
 #include "scene/bvh.h"
 #include "scene/scene_desc.h"
 

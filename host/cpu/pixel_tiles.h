@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <functional>
 
-#include "cpu/reference.h"
 #include "image/crop.h"
 #include "image/radiance_image.h"
+#include "render/ray_counts.h"
 #include "scene/scene_desc.h"
 
 namespace vkrt {

@@ -12,25 +12,11 @@
 #include "image/crop.h"
 #include "image/radiance_image.h"
 #include "image/row_sink.h"
+#include "render/ray_counts.h"
 #include "scene/bvh.h"
 #include "scene/scene_desc.h"
 
 namespace vkrt {
-
-struct RayCounts {
-  std::uint64_t primary = 0, shadow = 0, reflection = 0;
-  // Pixels whose colour came out NaN or infinite (encoded as 0 or 1: image/encode.h); the
-  // tests require 0 on every scene they render, and vkrt warns when it is not.
-  std::uint64_t nonFinite = 0;
-  std::uint64_t total() const { return primary + shadow + reflection; }
-  RayCounts& operator+=(const RayCounts& o) {
-    primary += o.primary;
-    shadow += o.shadow;
-    reflection += o.reflection;
-    nonFinite += o.nonFinite;
-    return *this;
-  }
-};
 
 struct CpuOptions {
   int threads = 0;   // 0: every hardware thread

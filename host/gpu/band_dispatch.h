@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "cpu/reference.h"
+#include "render/ray_counts.h"
 #include "gpu/buffer.h"
 #include "gpu/compute_pipeline.h"
 #include "gpu/vulkan_renderer.h"

@@ -8,18 +8,18 @@
 #include <string>
 
 #include "errors.h"
+#include "gpu/band_buffers.h"
 #include "gpu/band_dispatch.h"
+#include "gpu/band_layout.h"
 #include "gpu/compute_pipeline.h"
 #include "gpu/device_error.h"
-#include "gpu/tile_order.h"
+#include "gpu/scene_upload.h"
 #include "pathtrace.comp.h"         // kPathtraceSpirv: the shader, compiled at build time
 #include "pathtrace_texel.comp.h"   // kPathtraceTexelSpirv: the same with VKRT_TEXEL_READS
 #include "timing.h"
 
 namespace vkrt {
 namespace {
-
-static_assert(sizeof(gpu::GpuQuadLight) == 16 * gpu::kQuadLightTexels, "the texel view of a quad light");
 
 // The features pathtrace.comp is specialised to (all on when not specializing), and what was
 // left out, for --stats; the integrator settings (kPathSpecFromParams when not specializing);
@@ -68,24 +68,12 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   VulkanTimings t;
   if (scene.path.integrator == gpu::kIntegratorRaytracer)
     throw InternalError("renderVulkanPath called for the raytracer integrator (renderVulkan renders it)");
-  const PixelRect region = options.crop ? *options.crop
-                                        : PixelRect{0, 0, static_cast<int>(scene.width), static_cast<int>(scene.height)};
-  const auto width = static_cast<std::uint32_t>(region.width()), height = static_cast<std::uint32_t>(region.height());
-  const std::uint32_t tile = gpu::kWorkgroupSize;
+  const BandLayout layout =
+      bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuPathTracerState), options.maxStateBytes, 1);
+  const std::uint32_t width = layout.width, height = layout.height;
   const std::uint32_t samples = options.sampleCount ? options.sampleCount : scene.spp;
   const std::uint32_t renderSpp = options.renderSpp ? options.renderSpp : scene.spp;
-
-  // Band height: a multiple of the tile, and a state buffer within maxStateBytes.
-  std::size_t rowsByMemory = options.maxStateBytes / (sizeof(gpu::GpuPathTracerState) * width);
-  std::uint32_t bandHeight = static_cast<std::uint32_t>(std::max<std::size_t>(tile, rowsByMemory / tile * tile));
-  bandHeight = std::min(bandHeight, (height + tile - 1) / tile * tile);
-  const std::uint32_t tilesX = (width + tile - 1) / tile;
-  const std::uint32_t tilesInBand = tilesX * (bandHeight / tile);
-
-  if (scene.bvh.primRefs.size() > gpu::kStackFirstMask)
-    throw DeviceError("the scene has " + std::to_string(scene.bvh.primRefs.size()) +
-                      " primitives; the Vulkan backend takes at most " + std::to_string(gpu::kStackFirstMask) +
-                      " (--backend cpu has no such limit)");
+  checkShaderLimits(scene);
   // A vertex's random numbers must stay within its stride of dimensions (gpu_types.h): two
   // per quad-light sample, and with emitters two more and a pick per light sample.
   const std::uint64_t lightSlots = std::uint64_t{scene.path.quadLightCount} * scene.path.lightSamples * 2 +
@@ -95,52 +83,14 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
                       " random numbers; the generator's dimensions allow at most " +
                       std::to_string(gpu::kRngBounceStride - gpu::kRngSlotLightBase) +
                       " (fewer quad lights or lightsamples)");
-  if (scene.bvh.depth + 1 > static_cast<int>(gpu::kTraversalStackSize))
-    throw InternalError("BVH depth " + std::to_string(scene.bvh.depth) + " exceeds the traversal stack");
 
   auto t0 = std::chrono::steady_clock::now();
-  Buffer triangles = Buffer::withContents(context, scene.triangles);
-  Buffer normals = Buffer::withContents(context, scene.triangleNormals);
-  Buffer spheres = Buffer::withContents(context, scene.spheres);
-  Buffer lights = Buffer::withContents(context, scene.lights);
-  Buffer materials = Buffer::withContents(context, scene.materials);
-  Buffer nodes = Buffer::withContents(context, scene.bvh.nodes);
-  Buffer primRefs = Buffer::withContents(context, scene.bvh.primRefs);
-  Buffer quadLights = Buffer::withContents(context, scene.quadLights);
-  Buffer emitters = Buffer::withContents(context, scene.emitters);
-  Buffer sums(context, std::size_t{width} * bandHeight * sizeof(gpu::vec4), true);
-  Buffer states(context, std::size_t{width} * bandHeight * sizeof(gpu::GpuPathTracerState));
-  Buffer counters(context, sizeof(gpu::GpuCounters), true);
-  std::memset(counters.mapped(), 0, sizeof(gpu::GpuCounters));
+  const SceneUpload upload(context, scene, SceneArrays::Path);
+  BandBuffers band(context, layout, layout.bandPixels() * sizeof(gpu::GpuPathTracerState),
+                   renderParams(scene, layout, scene.path.maxDepth), options.stepBudget, kPathFirstDispatchSteps);
   t.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  gpu::GpuRenderParams params{};
-  params.width = width;
-  params.height = height;
-  params.maxDepth = scene.path.maxDepth;
-  params.lightCount = static_cast<std::uint32_t>(scene.lights.size());
-  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  params.stepBudget = options.stepBudget ? options.stepBudget
-                                         : firstStepBudget(gpu::kDefaultStepBudget,
-                                                           std::uint64_t{tilesInBand} * tile * tile, cpuDevice,
-                                                           kPathFirstDispatchSteps);
-  params.bandHeight = bandHeight;
-  params.tilesX = tilesX;
-  params.tileOrderStride = scatterStride(tilesInBand);
-  params.primCount = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
-  const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
-  params.rootEntry = root.primCount > 0 ? gpu::kStackLeafBit | root.primCount << gpu::kStackCountShift |
-                                              root.leftOrFirst
-                                        : root.leftOrFirst;
-  params.originX = static_cast<std::uint32_t>(region.x0);
-  params.originY = static_cast<std::uint32_t>(region.y0);
-  params.fullWidth = scene.width;
-  params.fullHeight = scene.height;
-  Buffer paramsBuffer(context, sizeof params);
-  std::memcpy(paramsBuffer.mapped(), &params, sizeof params);
-  StepPace pace;
-  if (!options.stepBudget) pace = {&static_cast<gpu::GpuRenderParams*>(paramsBuffer.mapped())->stepBudget, gpu::kDefaultStepBudget};
   gpu::GpuPathParams path = scene.path;
   path.seed = options.seed;
   path.firstSample = options.firstSample;
@@ -158,80 +108,27 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   t.testedAll = testAll;
   const std::vector<std::uint32_t> spec = pathFeatures(scene, path.jitter, options.specialize, testAll, t.leftOut);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
-  const Buffer* sceneBuffers[] = {&triangles, &normals, &spheres, &lights, &materials, &nodes, &quadLights};
-  bool texelsFit = primRefs.size() / 4 <= maxTexels;
-  for (const Buffer* b : sceneBuffers) texelsFit = texelsFit && b->size() / 16 <= maxTexels;
-  t.texelReads = options.reads == SceneReads::Texel || (options.reads == SceneReads::Auto && texelsFit);
-  if (t.texelReads && !texelsFit)
-    throw DeviceError("the scene is too large for texel-buffer reads on this device (limit " +
-                      std::to_string(maxTexels) + " texels); use storage-buffer reads (--reads storage)");
-  std::vector<VkDescriptorType> types(gpu::kPathBindingCount, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-  if (t.texelReads) {
-    std::fill(types.begin(), types.begin() + gpu::kBindingPixels, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
-    types[gpu::kBindingQuadLights] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-  }
-  types[gpu::kBindingParams] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  types[gpu::kBindingPathParams] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  t.texelReads = chooseTexelReads(options.reads, upload.texelsFit(maxTexels), maxTexels);
+  ShaderBindings bindings(gpu::kPathBindingCount);
+  upload.bind(bindings, t.texelReads);
+  band.bind(bindings);
+  bindings.set(gpu::kBindingPathParams, pathBuffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
   ComputePipeline pipeline(context, t.texelReads ? kPathtraceTexelSpirv : kPathtraceSpirv,
-                           t.texelReads ? sizeof(kPathtraceTexelSpirv) : sizeof(kPathtraceSpirv), types, spec,
-                           sizeof(gpu::GpuPathPush));
-  const Buffer* bound[gpu::kPathBindingCount] = {};
-  bound[gpu::kBindingTriangles] = &triangles;
-  bound[gpu::kBindingTriangleNormals] = &normals;
-  bound[gpu::kBindingSpheres] = &spheres;
-  bound[gpu::kBindingLights] = &lights;
-  bound[gpu::kBindingMaterials] = &materials;
-  bound[gpu::kBindingBvhNodes] = &nodes;
-  bound[gpu::kBindingPrimRefs] = &primRefs;
-  bound[gpu::kBindingPixels] = &sums;
-  bound[gpu::kBindingPathStates] = &states;
-  bound[gpu::kBindingCounters] = &counters;
-  bound[gpu::kBindingParams] = &paramsBuffer;
-  bound[gpu::kBindingQuadLights] = &quadLights;
-  bound[gpu::kBindingPathParams] = &pathBuffer;
-  bound[gpu::kBindingEmitters] = &emitters;
-  for (std::uint32_t b = 0; b < gpu::kPathBindingCount; ++b) {
-    if (types[b] == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-      pipeline.bindUniform(b, *bound[b]);
-    else if (types[b] == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
-      pipeline.bind(b, *bound[b]);
-    else if (b == gpu::kBindingPrimRefs)
-      pipeline.bindTexels(b, *bound[b], VK_FORMAT_R32_UINT, 4);
-    else
-      pipeline.bindTexels(b, *bound[b], VK_FORMAT_R32G32B32A32_UINT, 16);
-  }
+                           t.texelReads ? sizeof(kPathtraceTexelSpirv) : sizeof(kPathtraceSpirv), bindings.types,
+                           spec, sizeof(gpu::GpuPathPush));
+  bindings.bindTo(pipeline);
   t.pipelineSeconds = secondsSince(t0);
 
   RadianceImage image(static_cast<int>(width), static_cast<int>(height));
   image.samples = samples;
   gpu::GpuPathPush push{};
+  const float scale = samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f;
+  BandHooks hooks{options.stop, options.progress,
+                  [&](std::uint32_t y0, std::uint32_t rows) { band.readRows(rows, scale, image, static_cast<int>(y0)); },
+                  {}};
   RayCounts counted;
-  const std::uint64_t total = std::uint64_t{width} * height * samples;
-  for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
-    push.bandY0 = y0;
-    if (!dispatchBand(pipeline, &push, push.resume, y0, tilesInBand, counters, options.stop, t, counted, &pace))
-      return image;
-
-    t0 = std::chrono::steady_clock::now();
-    const std::uint32_t rows = std::min(bandHeight, height - y0);
-    const auto* sum = static_cast<const gpu::vec4*>(sums.mapped());
-    const float scale = samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f;
-    for (std::uint32_t y = 0; y < rows; ++y) {
-      float* out = image.pixel(0, static_cast<int>(y0 + y));
-      const gpu::vec4* in = sum + std::size_t{y} * width;
-      for (std::uint32_t x = 0; x < width; ++x) {
-        out[3 * x] = in[x].x * scale;
-        out[3 * x + 1] = in[x].y * scale;
-        out[3 * x + 2] = in[x].z * scale;
-      }
-    }
-    t.readbackSeconds += secondsSince(t0);
-    if (options.progress) options.progress(std::uint64_t{y0 + rows} * width * samples, total);
-  }
-  if (rays) {
-    *rays = counted;
-    rays->primary = std::uint64_t{width} * height * samples;
-  }
+  if (!band.run(pipeline, &push, push.bandY0, push.resume, layout, samples, hooks, t, counted)) return image;
+  if (rays) *rays = counted;
   if (timings) *timings = t;
   return image;
 }

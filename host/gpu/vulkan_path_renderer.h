@@ -8,7 +8,7 @@
 #include <functional>
 #include <optional>
 
-#include "cpu/reference.h"
+#include "render/ray_counts.h"
 #include "gpu/context.h"
 #include "gpu/vulkan_renderer.h"
 #include "image/crop.h"

@@ -7,11 +7,11 @@
 #include <cstring>
 #include <numeric>
 
+#include "gpu/band_buffers.h"
 #include "gpu/band_dispatch.h"
+#include "gpu/band_layout.h"
 #include "gpu/compute_pipeline.h"
-#include "errors.h"
-#include "gpu/device_error.h"
-#include "gpu/tile_order.h"
+#include "gpu/scene_upload.h"
 #include "timing.h"
 #include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
 #include "raytrace_texel.comp.h"   // kRaytraceTexelSpirv: the same with VKRT_TEXEL_READS
@@ -79,80 +79,29 @@ bool cutoffPays(const gpu::GpuPushConstants& p, std::uint32_t maxDepth) {
 RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options,
                            RayCounts* rays, VulkanTimings* timings) {
   VulkanTimings t;
-  // The pixels computed: the whole image or the crop; bands and tiles cover these only.
-  const PixelRect region = options.crop ? *options.crop
-                                        : PixelRect{0, 0, static_cast<int>(scene.width), static_cast<int>(scene.height)};
-  const auto width = static_cast<std::uint32_t>(region.width()), height = static_cast<std::uint32_t>(region.height());
-  const std::uint32_t tile = gpu::kWorkgroupSize, groupSize = tile * tile;
   // Sharing out pixels keeps a CPU's SIMD lanes busy; a GPU has lanes to spare for a pixel each.
   const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const std::uint32_t perInvocation = options.pixelsPerInvocation ? options.pixelsPerInvocation
                                       : cpuDevice                 ? gpu::kDefaultPixelsPerInvocation
                                                                   : 1u;
-  // Band height: a multiple of the tile, and a state buffer (one GpuPathState per invocation)
-  // within maxStateBytes.
-  std::size_t rowsByMemory = options.maxStateBytes * perInvocation / (sizeof(gpu::GpuPathState) * width);
-  std::uint32_t bandHeight = static_cast<std::uint32_t>(std::max<std::size_t>(tile, rowsByMemory / tile * tile));
-  bandHeight = std::min(bandHeight, (height + tile - 1) / tile * tile);
-  // The workgroups of a band: each takes a run of perInvocation adjacent 8x8 tiles.
-  const std::size_t bandPixels = std::size_t{width} * bandHeight;
-  const std::uint32_t tilesX = (width + tile - 1) / tile;
-  const std::uint32_t tilesInBand = tilesX * (bandHeight / tile);
-  const std::uint32_t groups = (tilesInBand + perInvocation - 1) / perInvocation;
-
-  // The shader packs a leaf's first primRef into 28 bits (kStackFirstMask).
-  if (scene.bvh.primRefs.size() > gpu::kStackFirstMask)
-    throw DeviceError("the scene has " + std::to_string(scene.bvh.primRefs.size()) +
-                      " primitives; the Vulkan backend takes at most " + std::to_string(gpu::kStackFirstMask) +
-                      " (--backend cpu has no such limit)");
+  // One GpuPathState per invocation, shared by its perInvocation pixels; the workgroups of a
+  // band each take a run of perInvocation adjacent 8x8 tiles.
+  const BandLayout layout = bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuPathState),
+                                       options.maxStateBytes, perInvocation);
+  const std::uint32_t width = layout.width, height = layout.height;
+  checkShaderLimits(scene);
 
   auto t0 = std::chrono::steady_clock::now();
-  Buffer triangles = Buffer::withContents(context, scene.triangles);
-  Buffer normals = Buffer::withContents(context, scene.triangleNormals);
-  Buffer spheres = Buffer::withContents(context, scene.spheres);
-  Buffer lights = Buffer::withContents(context, scene.lights);
-  Buffer materials = Buffer::withContents(context, scene.materials);
-  Buffer nodes = Buffer::withContents(context, scene.bvh.nodes);
-  Buffer primRefs = Buffer::withContents(context, scene.bvh.primRefs);
-  Buffer pixels(context, bandPixels * sizeof(gpu::vec4), true);
-  Buffer states(context, std::size_t{groups} * groupSize * sizeof(gpu::GpuPathState));
-  Buffer counters(context, sizeof(gpu::GpuCounters), true);
-  std::memset(counters.mapped(), 0, sizeof(gpu::GpuCounters));
+  const Features features = sceneFeatures(scene, options.specialize);
+  t.leftOut = features.leftOut;
+  // Without a specular surface no mirror ray is ever traced.
+  const gpu::GpuRenderParams params = renderParams(scene, layout, features.specular ? scene.maxDepth : 0);
+  const SceneUpload upload(context, scene, SceneArrays::Whitted);
+  BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuPathState), params, options.stepBudget,
+                   kWhittedFirstDispatchSteps);
   t.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const Features features = sceneFeatures(scene, options.specialize);
-  t.leftOut = features.leftOut;
-  gpu::GpuRenderParams params{};
-  params.width = width;
-  params.height = height;
-  // Without a specular surface no mirror ray is ever traced.
-  params.maxDepth = features.specular ? scene.maxDepth : 0;
-  params.lightCount = static_cast<std::uint32_t>(scene.lights.size());
-  params.stepBudget = options.stepBudget ? options.stepBudget
-                                         : firstStepBudget(gpu::kDefaultStepBudget,
-                                                           std::uint64_t{groups} * groupSize, cpuDevice,
-                                                           kWhittedFirstDispatchSteps);
-  params.bandHeight = bandHeight;
-  params.tilesX = tilesX;
-  params.tileOrderStride = scatterStride(groups);   // the order of the workgroups' runs of tiles
-  params.primCount = static_cast<std::uint32_t>(scene.bvh.primRefs.size());
-  const gpu::GpuBvhNode& root = scene.bvh.nodes[0];
-  params.originX = static_cast<std::uint32_t>(region.x0);
-  params.originY = static_cast<std::uint32_t>(region.y0);
-  params.fullWidth = scene.width;
-  params.fullHeight = scene.height;
-  params.rootEntry = root.primCount > 0 ? gpu::kStackLeafBit | root.primCount << gpu::kStackCountShift |
-                                              root.leftOrFirst
-                                        : root.leftOrFirst;
-  // The shader's traversal stack has a fixed size; the builder keeps the BVH within it.
-  if (scene.bvh.depth + 1 > static_cast<int>(gpu::kTraversalStackSize))
-    throw InternalError("BVH depth " + std::to_string(scene.bvh.depth) + " exceeds the traversal stack");
-  Buffer paramsBuffer(context, sizeof params);
-  std::memcpy(paramsBuffer.mapped(), &params, sizeof params);
-  StepPace pace;
-  if (!options.stepBudget) pace = {&static_cast<gpu::GpuRenderParams*>(paramsBuffer.mapped())->stepBudget, gpu::kDefaultStepBudget};
-
   std::vector<std::uint32_t> spec(gpu::kSpecCount);   // bools as 0/1 (SPIR-V bool spec constants are 32 bits)
   spec[gpu::kSpecHasTriangles] = features.triangles;
   spec[gpu::kSpecHasSpheres] = features.spheres;
@@ -169,79 +118,35 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   if (!cutoff) t.leftOut += std::string(t.leftOut.empty() ? "" : ", ") + "exactness cut-off";
   // Texel reads where every scene buffer fits the device's texel-count limit.
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
-  const Buffer* sceneBuffers[] = {&triangles, &normals, &spheres, &lights, &materials, &nodes};
-  bool texelsFit = primRefs.size() / 4 <= maxTexels;
-  for (const Buffer* b : sceneBuffers) texelsFit = texelsFit && b->size() / 16 <= maxTexels;
-  t.texelReads = options.reads == SceneReads::Texel || (options.reads == SceneReads::Auto && texelsFit);
-  if (t.texelReads && !texelsFit)
-    throw DeviceError("the scene is too large for texel-buffer reads on this device (limit " +
-                      std::to_string(maxTexels) + " texels); use storage-buffer reads (--reads storage)");
-  std::vector<VkDescriptorType> types(gpu::kBindingCount, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-  if (t.texelReads)
-    std::fill(types.begin(), types.begin() + gpu::kBindingPixels, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
-  types[gpu::kBindingParams] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  t.texelReads = chooseTexelReads(options.reads, upload.texelsFit(maxTexels), maxTexels);
+  ShaderBindings bindings(gpu::kBindingCount);
+  upload.bind(bindings, t.texelReads);
+  band.bind(bindings);
   ComputePipeline pipeline(context, t.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv,
-                           t.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv), types, spec,
-                           sizeof(gpu::GpuPushConstants));
-  const Buffer* bound[gpu::kBindingCount] = {};
-  bound[gpu::kBindingTriangles] = &triangles;
-  bound[gpu::kBindingTriangleNormals] = &normals;
-  bound[gpu::kBindingSpheres] = &spheres;
-  bound[gpu::kBindingLights] = &lights;
-  bound[gpu::kBindingMaterials] = &materials;
-  bound[gpu::kBindingBvhNodes] = &nodes;
-  bound[gpu::kBindingPrimRefs] = &primRefs;
-  bound[gpu::kBindingPixels] = &pixels;
-  bound[gpu::kBindingPathStates] = &states;
-  bound[gpu::kBindingCounters] = &counters;
-  bound[gpu::kBindingParams] = &paramsBuffer;
-  for (std::uint32_t b = 0; b < gpu::kBindingCount; ++b) {
-    if (b == gpu::kBindingParams)
-      pipeline.bindUniform(b, *bound[b]);
-    else if (!t.texelReads || b >= gpu::kBindingPixels)
-      pipeline.bind(b, *bound[b]);
-    else if (b == gpu::kBindingPrimRefs)
-      pipeline.bindTexels(b, *bound[b], VK_FORMAT_R32_UINT, 4);
-    else
-      pipeline.bindTexels(b, *bound[b], VK_FORMAT_R32G32B32A32_UINT, 16);
-  }
+                           t.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv), bindings.types,
+                           spec, sizeof(gpu::GpuPushConstants));
+  bindings.bindTo(pipeline);
   t.pipelineSeconds = secondsSince(t0);
 
   // The whole image, or (streaming to options.rows) one band's rows at a time.
   RadianceImage image =
       options.rows ? RadianceImage() : RadianceImage(static_cast<int>(width), static_cast<int>(height));
   image.samples = options.sampleCount;   // the Whitted model: the mean of identical samples
-  RadianceImage band;
-  band.samples = options.sampleCount;
+  RadianceImage rowsImage;
+  rowsImage.samples = options.sampleCount;
   gpu::GpuPushConstants push = scene.push;
+  BandHooks hooks{options.stop, options.progress,
+                  [&](std::uint32_t y0, std::uint32_t rows) {
+                    if (!options.rows) return band.readRows(rows, 1.0f, image, static_cast<int>(y0));
+                    if (rowsImage.height != static_cast<int>(rows))
+                      rowsImage = RadianceImage(static_cast<int>(width), static_cast<int>(rows));
+                    band.readRows(rows, 1.0f, rowsImage, 0);
+                  },
+                  {}};
+  if (options.rows) hooks.after = [&](std::uint32_t y0, std::uint32_t) { options.rows(static_cast<int>(y0), rowsImage); };
   RayCounts counted;
-  for (std::uint32_t y0 = 0; y0 < height; y0 += bandHeight) {
-    push.bandY0 = y0;
-    if (!dispatchBand(pipeline, &push, push.resume, y0, groups, counters, options.stop, t, counted, &pace))
-      return image;
-
-    t0 = std::chrono::steady_clock::now();
-    std::uint32_t rows = std::min(bandHeight, height - y0);
-    const auto* mapped = static_cast<const float*>(pixels.mapped());   // vec4 per pixel
-    if (options.rows && band.height != static_cast<int>(rows))
-      band = RadianceImage(static_cast<int>(width), static_cast<int>(rows));
-    for (std::uint32_t y = 0; y < rows; ++y) {
-      float* out = options.rows ? band.pixel(0, static_cast<int>(y)) : image.pixel(0, static_cast<int>(y0 + y));
-      const float* in = mapped + std::size_t{y} * width * 4;
-      for (std::uint32_t x = 0; x < width; ++x) {
-        out[3 * x] = in[4 * x];
-        out[3 * x + 1] = in[4 * x + 1];
-        out[3 * x + 2] = in[4 * x + 2];
-      }
-    }
-    t.readbackSeconds += secondsSince(t0);
-    if (options.rows) options.rows(static_cast<int>(y0), band);
-    if (options.progress) options.progress(std::uint64_t{y0 + rows} * width, std::uint64_t{height} * width);
-  }
-  if (rays) {
-    *rays = counted;
-    rays->primary = std::uint64_t{width} * height;
-  }
+  if (!band.run(pipeline, &push, push.bandY0, push.resume, layout, 1, hooks, t, counted)) return image;
+  if (rays) *rays = counted;
   if (timings) *timings = t;
   return image;
 }

@@ -8,20 +8,15 @@
 #include <optional>
 #include <string>
 
-#include "cpu/reference.h"
+#include "render/ray_counts.h"
 #include "gpu/context.h"
+#include "gpu/vulkan_settings.h"
 #include "image/crop.h"
 #include "image/radiance_image.h"
 #include "image/row_sink.h"
 #include "scene/flatten.h"
 
 namespace vkrt {
-
-// How the shader reads the scene: storage buffers, or uniform texel buffers (faster on
-// lavapipe; limited to maxTexelBufferElements texels per buffer).
-enum class SceneReads { Auto, Storage, Texel };
-
-enum class Cutoff { Auto, On, Off };
 
 struct VulkanOptions {
   SceneReads reads = SceneReads::Auto;    // Auto: texel buffers where the device's limits allow
@@ -51,16 +46,6 @@ struct VulkanOptions {
   // kept: the image returned has no pixels, and memory is the band buffers'. Rows are
   // relative to the region (the crop's top is 0).
   RowSink rows;
-};
-
-struct VulkanTimings {
-  double uploadSeconds = 0, pipelineSeconds = 0, firstDispatchSeconds = 0, dispatchSeconds = 0,
-         readbackSeconds = 0;
-  std::uint32_t bands = 0, dispatches = 0;
-  std::uint64_t suspensions = 0;   // invocations (Whitted) or pixels (path tracing) that ran out of steps, over the dispatches
-  bool texelReads = false;         // which shader variant ran
-  bool testedAll = false;          // the path shader tested every primitive (no BVH walk)
-  std::string leftOut;             // the features compiled out, e.g. "spheres, specular (maxdepth 0)"
 };
 
 // Throws DeviceError (also for a scene beyond the backend's or the device's limits),

@@ -1,5 +1,6 @@
 // parse -> build -> render (CPU reference or Vulkan, in sample batches) -> PNG, PPM or PFM,
 // with a timer per stage.
+#include "render/ray_counts.h"
 #include "render/render.h"
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include "errors.h"
 #include "gpu_types.h"
 #include "cpu/path_reference.h"
+#include "cpu/reference.h"
 #include "gpu/vulkan_path_renderer.h"
 #include "gpu/vulkan_renderer.h"
 #include "image/encode.h"

@@ -10,16 +10,18 @@
 #include <string>
 #include <vector>
 
-#include "cpu/reference.h"
-#include "gpu/vulkan_renderer.h"
+#include "gpu/vulkan_settings.h"
 #include "image/crop.h"
 #include "image/image.h"
 #include "image/radiance_image.h"
 #include "render/progress.h"
+#include "render/ray_counts.h"
 #include "scene/diagnostic.h"
 #include "scene/scene_desc.h"
 
 namespace vkrt {
+
+class Context;   // gpu/context.h: made and used in render.cpp only
 
 enum class Backend { Vulkan, Cpu };
 

@@ -16,6 +16,7 @@
 
 #include "cpu/path_reference.h"
 #include "path_scenes.h"
+#include "render/ray_counts.h"
 #include "scene/bvh.h"
 
 namespace vkrt {

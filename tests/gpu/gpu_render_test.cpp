@@ -10,6 +10,7 @@
 #include "image/encode.h"
 #include "image/compare.h"
 #include "image/png.h"
+#include "render/ray_counts.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
 #include "test_support.h"

@@ -3,6 +3,7 @@
 // boundaries); crops carry their record, and merging a grid of them gives the full render.
 #include <gtest/gtest.h>
 
+#include "cpu/reference.h"
 #include "image/encode.h"
 #include "image/crop.h"
 #include "image/render_identity.h"

@@ -17,6 +17,7 @@
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/row_sink.h"
+#include "render/ray_counts.h"
 #include "render/render.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"

@@ -15,6 +15,7 @@
 #include "image/image.h"
 #include "image/pfm.h"
 #include "path_scenes.h"
+#include "render/ray_counts.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"

@@ -11,6 +11,7 @@
 #include "gpu/vulkan_renderer.h"
 #include "image/compare.h"
 #include "image/encode.h"
+#include "render/ray_counts.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"

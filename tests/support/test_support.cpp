@@ -21,6 +21,7 @@
 #include "image/compare.h"
 #include "image/encode.h"
 #include "image/png.h"
+#include "render/ray_counts.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"

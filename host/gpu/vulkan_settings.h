@@ -1,0 +1,26 @@
+// The Vulkan backend's choices and its timing report, without the Vulkan API: what option
+// handling and the render report need (render/render.h) of gpu/vulkan_renderer.h.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace vkrt {
+
+// How the shader reads the scene: storage buffers, or uniform texel buffers (faster on
+// lavapipe; limited to maxTexelBufferElements texels per buffer).
+enum class SceneReads { Auto, Storage, Texel };
+
+enum class Cutoff { Auto, On, Off };
+
+struct VulkanTimings {
+  double uploadSeconds = 0, pipelineSeconds = 0, firstDispatchSeconds = 0, dispatchSeconds = 0,
+         readbackSeconds = 0;
+  std::uint32_t bands = 0, dispatches = 0;
+  std::uint64_t suspensions = 0;   // invocations (Whitted) or pixels (path tracing) that ran out of steps, over the dispatches
+  bool texelReads = false;         // which shader variant ran
+  bool testedAll = false;          // the path shader tested every primitive (no BVH walk)
+  std::string leftOut;             // the features compiled out, e.g. "spheres, specular (maxdepth 0)"
+};
+
+}  // namespace vkrt

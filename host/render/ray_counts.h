@@ -1,0 +1,24 @@
+// The rays a render traced, by kind, and the samples that came out NaN or infinite: what
+// every renderer reports (CPU and Vulkan, Whitted and path) and the render report carries.
+#pragma once
+
+#include <cstdint>
+
+namespace vkrt {
+
+struct RayCounts {
+  std::uint64_t primary = 0, shadow = 0, reflection = 0;
+  // Pixels whose colour came out NaN or infinite (encoded as 0 or 1: image/encode.h); the
+  // tests require 0 on every scene they render, and vkrt warns when it is not.
+  std::uint64_t nonFinite = 0;
+  std::uint64_t total() const { return primary + shadow + reflection; }
+  RayCounts& operator+=(const RayCounts& o) {
+    primary += o.primary;
+    shadow += o.shadow;
+    reflection += o.reflection;
+    nonFinite += o.nonFinite;
+    return *this;
+  }
+};
+
+}  // namespace vkrt
