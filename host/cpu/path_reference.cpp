@@ -15,6 +15,7 @@
 #include "cpu/scene_query.h"
 #include "gpu_types.h"
 #include "scene/emitters.h"
+#include "scene/shapes/shape.h"
 #include "scene/unit_vector.h"
 
 namespace vkrt {
@@ -34,12 +35,8 @@ struct AreaLight {
 // Emissive triangles and spheres (`emission`, not quad lights) as one more light for
 // next-event estimation (beyond the course): each light sample picks one of them with
 // probability proportional to area x sum(|emission|) (scene/emitters.h), then a point on it,
-// by the rules and from the slots of gpu_types.h (rngEmitterPointSlot, rngEmitterPickSlot).
-struct EmitterPoint {
-  dvec3 x;                 // the point
-  dvec3 normal;            // unit geometric normal there (emission is two-sided)
-  double areaPdf = 0.0;    // density per unit world area of choosing this point, given its primitive
-};
+// by the rules and from the slots of gpu_types.h (rngEmitterPointSlot, rngEmitterPickSlot),
+// the point as its shape samples one (scene/shapes/shape.h: samplePoint, densityAt).
 
 // The random numbers of one camera sample (gpu_types.h): keyed by seed, pixel, sample.
 struct SampleNumbers {
@@ -86,62 +83,17 @@ class PathIntegrator {
     const EmitterTable table = vkrt::collectEmitters(scene_);
     emitters_ = table.prims;
     emitterCdf_ = table.cdf;
-    trianglePick_.assign(scene_.triangles.size(), 0.0);
-    spherePick_.assign(scene_.spheres.size(), 0.0);
+    for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind) pick_[kind].assign(shapes::count(scene_, kind), 0.0);
     for (std::size_t e = 0; e < emitters_.size(); ++e) pickProbability(emitters_[e]) = table.pick[e];
   }
 
-  double& pickProbability(std::uint32_t prim) {
-    return (gpu::primKind(prim) == gpu::kPrimSphere) ? spherePick_[gpu::primIndex(prim)] : trianglePick_[prim];
-  }
-  double pickProbability(std::uint32_t prim) const {
-    return (gpu::primKind(prim) == gpu::kPrimSphere) ? spherePick_[gpu::primIndex(prim)] : trianglePick_[prim];
-  }
-
-  // A point of emitter primitive `prim` from (u, v): uniform in area on a triangle; on an
-  // ellipsoid, uniform on its object-space sphere, with the density moved to world area by
-  // the transform's area element |det M| |M^-T n|.
-  EmitterPoint emitterPoint(std::uint32_t prim, double u, double v) const {
-    EmitterPoint point;
-    if (gpu::primKind(prim) == gpu::kPrimSphere) {
-      const Sphere& sp = scene_.spheres[gpu::primIndex(prim)];
-      const double z = 1.0 - 2.0 * u, r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * v;
-      const dvec3 nObject(r * std::cos(phi), r * std::sin(phi), z);
-      point.x = dvec3(sp.worldFromObject * glm::dvec4(sp.center + sp.radius * nObject, 1.0));
-      return sphereDensity(sp, nObject, point);
-    }
-    const Triangle& t = scene_.triangles[prim];
-    const double su = std::sqrt(u);
-    point.x = (1.0 - su) * t.p[0] + su * (1.0 - v) * t.p[1] + su * v * t.p[2];
-    const dvec3 c = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
-    point.normal = glm::normalize(c);
-    point.areaPdf = 2.0 / glm::length(c);
-    return point;
-  }
-
-  // The normal and area density at the point of sphere `sp` whose object-space unit normal is nObject.
-  static EmitterPoint sphereDensity(const Sphere& sp, const dvec3& nObject, EmitterPoint point) {
-    const dvec3 m = glm::transpose(glm::dmat3(sp.objectFromWorld)) * nObject;   // M^-T n
-    const double areaElement = std::abs(glm::determinant(glm::dmat3(sp.worldFromObject))) * glm::length(m);
-    point.normal = glm::normalize(m);
-    point.areaPdf = 1.0 / (4.0 * kPi * sp.radius * sp.radius * areaElement);
-    return point;
-  }
+  double& pickProbability(std::uint32_t prim) { return pick_[gpu::primKind(prim)][gpu::primIndex(prim)]; }
+  double pickProbability(std::uint32_t prim) const { return pick_[gpu::primKind(prim)][gpu::primIndex(prim)]; }
 
   // The solid-angle density with which the emitter light sample finds point p of primitive
   // `prim` from a vertex at distance `distance` along unit `dir`.
   double emitterSolidAnglePdf(std::uint32_t prim, const dvec3& p, double distance, const dvec3& dir) const {
-    EmitterPoint point;
-    if (gpu::primKind(prim) == gpu::kPrimSphere) {
-      const Sphere& sp = scene_.spheres[gpu::primIndex(prim)];
-      const dvec3 pObject = dvec3(sp.objectFromWorld * glm::dvec4(p, 1.0));
-      point = sphereDensity(sp, glm::normalize(pObject - sp.center), point);
-    } else {
-      const Triangle& t = scene_.triangles[prim];
-      const dvec3 c = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
-      point.normal = glm::normalize(c);
-      point.areaPdf = 2.0 / glm::length(c);
-    }
+    const SurfacePoint point = shapes::densityAt(scene_, prim, p);
     const double cosine = std::abs(glm::dot(point.normal, dir));
     return cosine > 0.0 ? pickProbability(prim) * point.areaPdf * distance * distance / cosine : 0.0;
   }
@@ -167,7 +119,7 @@ class PathIntegrator {
           static_cast<std::size_t>(std::upper_bound(emitterCdf_.begin(), emitterCdf_.end(), pick) - emitterCdf_.begin()),
           emitters_.size() - 1);
       const std::uint32_t prim = emitters_[e];
-      const EmitterPoint point = emitterPoint(prim, s, t);
+      const SurfacePoint point = shapes::samplePoint(scene_, prim, s, t);
       const dvec3 d = point.x - v.p;
       const double dist2 = glm::dot(d, d), dist = std::sqrt(dist2);
       if (dist == 0.0) continue;
@@ -181,9 +133,7 @@ class PathIntegrator {
       const double tMax = dist - query_.offsetsAt(at, point.x).at(cosLight);
       if (!unoccluded(v.p, wi, v.offset.at(nDotI), tMax, counts)) continue;
       const double lightPdf = pickProbability(prim) * point.areaPdf * dist2 / cosLight;
-      const std::uint32_t material =
-          (gpu::primKind(prim) == gpu::kPrimSphere) ? scene_.spheres[gpu::primIndex(prim)].material : scene_.triangles[prim].material;
-      dvec3 contribution = scene_.materials[material].emission * f * (nDotI / (lightPdf * n));
+      dvec3 contribution = scene_.materials[shapes::material(scene_, prim)].emission * f * (nDotI / (lightPdf * n));
       if (mis) contribution *= powerHeuristic(lightPdf, directionPdf(scene_.path.sampling, *v.m, v.n, wi, v.wo));
       sum += contribution;
     }
@@ -390,7 +340,7 @@ class PathIntegrator {
   std::vector<AreaLight> lights_;
   std::vector<std::uint32_t> emitters_;   // primRefs of the emissive triangles and spheres
   std::vector<double> emitterCdf_;        // their cumulative pick probabilities
-  std::vector<double> trianglePick_, spherePick_;   // each primitive's pick probability (0: none)
+  std::vector<double> pick_[shapes::kKinds];   // each primitive's pick probability (0: none), by kind
 };
 
 }  // namespace

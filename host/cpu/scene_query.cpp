@@ -5,61 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/shapes/shape.h"
 #include "scene/unit_vector.h"
 
 namespace vkrt {
 namespace {
-
-// cross(a - q, b - q), the edge function of edge a -> b at q, computed as cross(a - q, b - a)
-// (or its mirror for b -> a): from the edge itself, not from two long vectors toward q whose
-// cross product cancels (a tiny triangle seen from afar would otherwise be "hit" by rounding
-// noise). The two triangles that share an edge compute it from the same numbers, with
-// opposite signs.
-dvec3 edgeFunction(const dvec3& a, const dvec3& b, const dvec3& q) {
-  const bool ordered = a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
-  return ordered ? glm::cross(a - q, b - a) : -glm::cross(b - q, a - b);
-}
-
-// Plane intersection followed by an inside test on the three edge functions. The normal is
-// scaled by a power of two (exact) so that its square neither underflows nor overflows.
-bool hitTriangle(const Triangle& tri, const Ray& ray, double tMin, double tMax, Hit& hit) {
-  dvec3 e1 = tri.p[1] - tri.p[0], e2 = tri.p[2] - tri.p[0];
-  dvec3 n = scaledForSquares(glm::cross(e1, e2));
-  double nn = glm::dot(n, n);
-  double denom = glm::dot(n, ray.dir);
-  if (nn == 0.0 || denom == 0.0) return false;   // degenerate, or ray in the plane
-  double t = glm::dot(n, tri.p[0] - ray.origin) / denom;
-  if (!(t > tMin && t < tMax)) return false;
-  dvec3 q = ray.origin + t * ray.dir;
-  double w0 = glm::dot(edgeFunction(tri.p[1], tri.p[2], q), n);
-  double w1 = glm::dot(edgeFunction(tri.p[2], tri.p[0], q), n);
-  double w2 = glm::dot(edgeFunction(tri.p[0], tri.p[1], q), n);
-  if (w0 < 0.0 || w1 < 0.0 || w2 < 0.0) return false;
-  // w0 + w1 + w2 = |cross(e1, e2)| |n|: the weights over their sum, as found.
-  const double sum = w0 + w1 + w2;
-  if (!(sum > 0.0)) return false;
-  hit.t = t;
-  hit.b1 = w1 / sum;
-  hit.b2 = w2 / sum;
-  return true;
-}
-
-// The ray goes into object space unnormalised, so its t is the world t.
-bool hitSphere(const Sphere& s, const Ray& ray, double tMin, double tMax, Hit& hit) {
-  dvec3 o = dvec3(s.objectFromWorld * glm::dvec4(ray.origin, 1.0)) - s.center;
-  dvec3 d = dvec3(s.objectFromWorld * glm::dvec4(ray.dir, 0.0));
-  double a = glm::dot(d, d);
-  double halfB = glm::dot(o, d);
-  double c = glm::dot(o, o) - s.radius * s.radius;
-  double disc = halfB * halfB - a * c;
-  if (disc < 0.0 || a == 0.0) return false;
-  double root = std::sqrt(disc);
-  double tNear = (-halfB - root) / a, tFar = (-halfB + root) / a;
-  double t = tNear > tMin ? tNear : tFar;
-  if (!(t > tMin && t < tMax)) return false;
-  hit.t = t;
-  return true;
-}
 
 // Slab test against a float box; true when the ray may enter it within (tMin, tMax).
 bool hitBox(const gpu::GpuBvhNode& n, const Ray& ray, const dvec3& invDir, double tMin, double tMax) {
@@ -108,10 +58,7 @@ bool SceneQuery::intersect(const Ray& ray, double tMin, double tMax, bool anyHit
       for (std::uint32_t i = 0; i < node.primCount; ++i) {
         std::uint32_t ref = bvh_.primRefs[node.leftOrFirst + i];
         Hit h;
-        bool ok = (gpu::primKind(ref) == gpu::kPrimSphere)
-                      ? hitSphere(scene_.spheres[gpu::primIndex(ref)], ray, tMin, hit.t, h)
-                      : hitTriangle(scene_.triangles[ref], ray, tMin, hit.t, h);
-        if (ok) {
+        if (shapes::intersect(scene_, ref, ray, tMin, hit.t, h)) {
           h.prim = ref;
           hit = h;
           found = true;
@@ -127,24 +74,12 @@ bool SceneQuery::intersect(const Ray& ray, double tMin, double tMax, bool anyHit
 }
 
 std::uint32_t SceneQuery::surfaceAt(const Hit& hit, const dvec3& p, dvec3& normal) const {
-  if (gpu::primKind(hit.prim) == gpu::kPrimSphere) {
-    const Sphere& s = scene_.spheres[gpu::primIndex(hit.prim)];
-    dvec3 pObject = dvec3(s.objectFromWorld * glm::dvec4(p, 1.0));
-    normal = glm::normalize(glm::transpose(glm::dmat3(s.objectFromWorld)) * (pObject - s.center));
-    return s.material;
-  }
-  const Triangle& t = scene_.triangles[hit.prim];
-  if (t.smooth)
-    normal = glm::normalize((1.0 - hit.b1 - hit.b2) * t.n[0] + hit.b1 * t.n[1] + hit.b2 * t.n[2]);
-  else
-    normal = unitVector(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
-  return t.material;
+  normal = shapes::normalAt(scene_, hit, p);
+  return shapes::material(scene_, hit.prim);
 }
 
 SecondaryRayOffsets SceneQuery::offsetsAt(const Hit& hit, const dvec3& p) const {
-  const double primitiveOffset = (gpu::primKind(hit.prim) == gpu::kPrimSphere) ? offsets_.spheres[gpu::primIndex(hit.prim)]
-                                                                  : offsets_.triangles[hit.prim];
-  return secondaryRayOffsets(primitiveOffset, p - frameOrigin_, p - scene_.camera.from);
+  return secondaryRayOffsets(offsets_.of(hit.prim), p - frameOrigin_, p - scene_.camera.from);
 }
 
 SecondaryRayOffsets SceneQuery::triangleOffsetsAt(std::uint32_t triangle, const dvec3& p) const {

@@ -5,26 +5,13 @@
 #pragma once
 
 #include <cstdint>
-#include <limits>
 
 #include "scene/bvh.h"
 #include "scene/ray_offset.h"
 #include "scene/scene_desc.h"
+#include "scene/shapes/ray_hit.h"
 
 namespace vkrt {
-
-inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-struct Ray {
-  dvec3 origin;
-  dvec3 dir;   // unit length
-};
-
-struct Hit {
-  double t = kInfinity;
-  std::uint32_t prim = 0;      // primRef: triangle index, or sphere primRef(kPrimSphere, index)
-  double b1 = 0.0, b2 = 0.0;   // barycentric weights of p1 and p2 (triangles)
-};
 
 class SceneQuery {
  public:

@@ -15,8 +15,7 @@
 #include <thread>
 
 #include "errors.h"
-#include "scene/linear_map.h"
-#include "scene/unit_vector.h"
+#include "scene/shapes/shape.h"
 
 namespace vkrt {
 namespace {
@@ -414,29 +413,6 @@ class Builder {
 
 }  // namespace
 
-void sphereBounds(const Sphere& s, dvec3& lo, dvec3& hi) {
-  dvec3 c = dvec3(s.worldFromObject * glm::dvec4(s.center, 1.0));
-  const dmat4& m = s.worldFromObject;
-  for (int row = 0; row < 3; ++row) {
-    double e = s.radius * std::sqrt(m[0][row] * m[0][row] + m[1][row] * m[1][row] + m[2][row] * m[2][row]);
-    lo[row] = c[row] - e;
-    hi[row] = c[row] + e;
-  }
-}
-
-static bool neverHit(const Triangle& t) {
-  // (scaled by a power of two first: a triangle 1e-150 or 1e150 across is no degenerate one)
-  return scaledForSquares(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])) == dvec3(0.0);
-}
-
-static bool neverHit(const Sphere& s) {
-  const dmat4& inv = s.objectFromWorld;
-  bool finite = true;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(inv[c][r]);
-  return !(s.radius > 0.0) || isSingular(glm::dmat3(s.worldFromObject)) || !finite;
-}
-
 Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads, double scale) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // A primitive reference holds an index below 2^29 (gpu_types.h, primRef): 32 GiB of
@@ -444,29 +420,23 @@ Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads, double sc
   if (scene.triangles.size() > gpu::kPrimIndexMask || scene.spheres.size() > gpu::kPrimIndexMask)
     throw OutOfMemory(std::to_string(scene.triangles.size()) + " triangles and " + std::to_string(scene.spheres.size()) +
                       " spheres: a scene holds at most " + std::to_string(gpu::kPrimIndexMask) + " of each");
-  std::vector<BuildPrim> prims(scene.triangles.size() + scene.spheres.size());
-  const std::size_t triangles = scene.triangles.size();
+  // Every primitive of kind 0, then of kind 1, ...: prims[i] for i in [first[k], first[k + 1]).
+  std::size_t first[shapes::kKinds + 1] = {};
+  for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind) first[kind + 1] = first[kind] + shapes::count(scene, kind);
+  std::vector<BuildPrim> prims(first[shapes::kKinds]);
   constexpr std::uint32_t kDropped = 0xFFFFFFFFu;
   auto makeRange = [&](std::size_t from, std::size_t to) {
+    std::uint32_t kind = 0;
     for (std::size_t i = from; i < to; ++i) {
-      if (i < triangles) {
-        const Triangle& t = scene.triangles[i];
-        if (neverHit(t)) {
-          prims[i].ref = kDropped;
-          continue;
-        }
-        prims[i] = makePrim((glm::min(t.p[0], glm::min(t.p[1], t.p[2])) - origin) * scale,
-                            (glm::max(t.p[0], glm::max(t.p[1], t.p[2])) - origin) * scale, static_cast<std::uint32_t>(i));
-      } else {
-        dvec3 lo, hi;
-        if (neverHit(scene.spheres[i - triangles])) {
-          prims[i].ref = kDropped;
-          continue;
-        }
-        sphereBounds(scene.spheres[i - triangles], lo, hi);
-        prims[i] = makePrim((lo - origin) * scale, (hi - origin) * scale,
-                            gpu::primRef(gpu::kPrimSphere, static_cast<std::uint32_t>(i - triangles)));
+      while (i >= first[kind + 1]) ++kind;
+      const std::uint32_t ref = gpu::primRef(kind, static_cast<std::uint32_t>(i - first[kind]));
+      if (shapes::neverHit(scene, ref)) {
+        prims[i].ref = kDropped;
+        continue;
       }
+      dvec3 lo, hi;
+      shapes::bounds(scene, ref, lo, hi);
+      prims[i] = makePrim((lo - origin) * scale, (hi - origin) * scale, ref);
     }
   };
   if (prims.size() >= kParallelBoxesMinPrims && threads > 1) {

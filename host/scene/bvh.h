@@ -19,14 +19,11 @@ static_assert(kMaxBvhDepth <= static_cast<int>(gpu::kTraversalStackSize),
 struct Bvh {
   // nodes[0] is the root. An interior node's children are adjacent (left, left + 1).
   std::vector<gpu::GpuBvhNode> nodes;
-  // Leaf contents: primitive references, primRef(kind, index) (gpu_types.h).
+  // Leaf contents: primRef(kind, index) (a triangle's is its index).
   std::vector<std::uint32_t> primRefs;
   // Levels of the tree (1 for a lone root); a traversal stack needs at most depth + 1 entries.
   int depth = 1;
 };
-
-// World-space bounds of a sphere under its transform (exact for the ellipsoid).
-void sphereBounds(const Sphere& s, dvec3& lo, dvec3& hi);
 
 // Builds the hierarchy over the primitives that can be hit (degenerate ones are left out).
 // An empty scene gives one empty leaf whose box contains nothing.

@@ -3,18 +3,13 @@
 #include <cmath>
 
 #include "gpu_types.h"
+#include "scene/shapes/shape.h"
 
 namespace vkrt {
 
 double emitterRadianceWeight(const Material& m) {
   if (m.quadLight >= 0) return 0.0;
   return std::abs(m.emission.x) + std::abs(m.emission.y) + std::abs(m.emission.z);
-}
-
-double sphereEmitterArea(const Sphere& s) {
-  constexpr double kPi = 3.14159265358979323846;
-  const double scale = std::cbrt(std::abs(glm::determinant(glm::dmat3(s.worldFromObject))));
-  return 4.0 * kPi * s.radius * s.radius * scale * scale;
 }
 
 EmitterTable collectEmitters(const SceneDesc& scene) {
@@ -27,15 +22,12 @@ EmitterTable collectEmitters(const SceneDesc& scene) {
   auto add = [&](std::uint32_t prim, double weight) {
     if (weight > 0.0 && std::isfinite(weight)) table.prims.push_back(prim), weights.push_back(weight);
   };
-  for (std::uint32_t i = 0; i < scene.triangles.size(); ++i) {
-    const Triangle& t = scene.triangles[i];
-    const double e = radianceWeight(t.material);
-    if (e > 0.0) add(i, 0.5 * glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])) * e);
-  }
-  for (std::uint32_t i = 0; i < scene.spheres.size(); ++i) {
-    const double e = radianceWeight(scene.spheres[i].material);
-    if (e > 0.0) add(gpu::primRef(gpu::kPrimSphere, i), sphereEmitterArea(scene.spheres[i]) * e);
-  }
+  for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind)
+    for (std::uint32_t i = 0; i < shapes::count(scene, kind); ++i) {
+      const std::uint32_t ref = gpu::primRef(kind, i);
+      const double e = radianceWeight(shapes::material(scene, ref));
+      if (e > 0.0) add(ref, shapes::area(scene, ref) * e);
+    }
   for (double w : weights) table.totalWeight += w;
   double running = 0.0;
   for (double w : weights) {

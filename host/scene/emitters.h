@@ -12,12 +12,9 @@
 
 namespace vkrt {
 
-// sum(|emission|) of a material that is no quad light's, else 0: the weight per unit area.
+// sum(|emission|) of a material that is no quad light's, else 0: the weight per unit area
+// (of shapes::area, scene/shapes/shape.h).
 double emitterRadianceWeight(const Material& m);
-
-// The area weight of sphere `s` (any positive number is unbiased): the area of the sphere
-// under a uniform scale of the same volume, 4 pi r^2 |det M|^(2/3).
-double sphereEmitterArea(const Sphere& s);
 
 struct EmitterTable {
   std::vector<std::uint32_t> prims;   // primRefs (gpu_types.h: primRef(kind, index)), triangles first

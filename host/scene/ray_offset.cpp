@@ -11,7 +11,7 @@
 #include <numeric>
 
 #include "gpu_types.h"
-#include "scene/bvh.h"
+#include "scene/shapes/shape.h"
 
 namespace vkrt {
 namespace {
@@ -36,15 +36,10 @@ struct Box {
   double diagonal() const { return lo.x <= hi.x ? glm::length(hi - lo) : 0.0; }
 };
 
-Box triangleBox(const Triangle& t) {
+// The box of the primitive that `ref` refers to.
+Box boxOf(const SceneDesc& scene, std::uint32_t ref) {
   Box b;
-  for (const dvec3& p : t.p) b.add(p);
-  return b;
-}
-
-Box sphereBox(const Sphere& s) {
-  Box b;
-  sphereBounds(s, b.lo, b.hi);
+  shapes::bounds(scene, ref, b.lo, b.hi);
   return b;
 }
 
@@ -198,7 +193,7 @@ class BoxTree {
 bool sceneBounds(const SceneDesc& scene, dvec3& boxLo, dvec3& boxHi) {
   auto trianglesBox = [&scene](std::size_t begin, std::size_t end) {
     Box b;
-    for (std::size_t i = begin; i < end; ++i) b.add(triangleBox(scene.triangles[i]));
+    for (std::size_t i = begin; i < end; ++i) b.add(boxOf(scene, gpu::primRef(gpu::kPrimTriangle, static_cast<std::uint32_t>(i))));
     return b;
   };
   // Many triangles: the second half on another thread.
@@ -207,7 +202,8 @@ bool sceneBounds(const SceneDesc& scene, dvec3& boxLo, dvec3& boxHi) {
   if (half < nt) second = std::async(std::launch::async, trianglesBox, half, nt);
   Box box = trianglesBox(0, half);
   if (second.valid()) box.add(second.get());
-  for (const Sphere& s : scene.spheres) box.add(sphereBox(s));
+  for (std::uint32_t kind = gpu::kPrimTriangle + 1; kind < shapes::kKinds; ++kind)
+    for (std::uint32_t i = 0; i < shapes::count(scene, kind); ++i) box.add(boxOf(scene, gpu::primRef(kind, i)));
   if (!(box.lo.x <= box.hi.x)) return false;
   boxLo = box.lo;
   boxHi = box.hi;
@@ -221,47 +217,15 @@ double boxDistance(const dvec3& p, const dvec3& lo, const dvec3& hi) {
   return glm::length(glm::max(glm::max(lo - p, p - hi), dvec3(0.0)));
 }
 
-// The point of triangle abc nearest to p (Ericson, Real-Time Collision Detection, 5.1.5).
-dvec3 nearestOnTriangle(const dvec3& p, const dvec3& a, const dvec3& b, const dvec3& c) {
-  const dvec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return a;
-  const dvec3 bp = p - b;
-  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-  if (d3 >= 0.0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + d1 / (d1 - d3) * ab;
-  const dvec3 cp = p - c;
-  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-  if (d6 >= 0.0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + d2 / (d2 - d6) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
-  const double denom = va + vb + vc;
-  if (!(denom != 0.0) || !std::isfinite(denom)) return a;   // degenerate: a corner will do
-  return a + ab * (vb / denom) + ac * (vc / denom);
-}
-
-// Whether some primitive comes within `reach` of p: a triangle whose nearest point does, or
-// a sphere whose surface may (a lower bound of its distance: the object-space distance over
-// the Frobenius norm of objectFromWorld, which bounds how much that map stretches).
+// Whether some primitive comes within `reach` of p.
 bool geometryWithin(const SceneDesc& scene, const dvec3& p, double reach) {
-  for (const Triangle& t : scene.triangles) {
-    const dvec3 lo = glm::min(t.p[0], glm::min(t.p[1], t.p[2])), hi = glm::max(t.p[0], glm::max(t.p[1], t.p[2]));
-    if (boxDistance(p, lo, hi) > reach) continue;
-    if (glm::length(p - nearestOnTriangle(p, t.p[0], t.p[1], t.p[2])) <= reach) return true;
-  }
-  for (const Sphere& s : scene.spheres) {
-    dvec3 lo, hi;
-    sphereBounds(s, lo, hi);
-    if (boxDistance(p, lo, hi) > reach) continue;
-    const glm::dmat3 m(s.objectFromWorld);
-    double frobenius = 0.0;
-    for (int c = 0; c < 3; ++c) frobenius += glm::dot(m[c], m[c]);
-    const double inObject = std::abs(glm::length(dvec3(s.objectFromWorld * glm::dvec4(p, 1.0)) - s.center) - s.radius);
-    if (!(inObject > reach * std::sqrt(frobenius))) return true;
-  }
+  for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind)
+    for (std::uint32_t i = 0; i < shapes::count(scene, kind); ++i) {
+      const std::uint32_t ref = gpu::primRef(kind, i);
+      const Box box = boxOf(scene, ref);
+      if (boxDistance(p, box.lo, box.hi) > reach) continue;
+      if (shapes::within(scene, ref, p, reach)) return true;
+    }
   return false;
 }
 
@@ -302,12 +266,13 @@ double offsetForSize(double size) {
 }
 
 PrimitiveOffsets primitiveOffsets(const SceneDesc& scene) {
-  const std::size_t nt = scene.triangles.size(), ns = scene.spheres.size();
+  const std::size_t nt = scene.triangles.size();
   PrimitiveOffsets result;
-  result.triangles.resize(nt);
-  result.spheres.resize(ns);
+  for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind) result.ofKind(kind).resize(shapes::count(scene, kind));
+  auto triangleRef = [](std::size_t i) { return gpu::primRef(gpu::kPrimTriangle, static_cast<std::uint32_t>(i)); };
 
-  // Objects: connected triangles, and each sphere. Their boxes and sizes.
+  // Objects: connected triangles, and each primitive of another kind (a sphere). Their boxes
+  // and sizes.
   DisjointSets sets(nt);
   joinSharedVertices(scene.triangles, sets);
   std::vector<std::uint32_t> objectOf(nt);
@@ -320,19 +285,23 @@ PrimitiveOffsets primitiveOffsets(const SceneDesc& scene) {
       objectBoxes.emplace_back();
     }
     objectOf[i] = objectOfRoot[root];
-    objectBoxes[objectOf[i]].add(triangleBox(scene.triangles[i]));
+    objectBoxes[objectOf[i]].add(boxOf(scene, triangleRef(i)));
   }
-  std::vector<Box> sphereBoxes(ns);
-  for (std::size_t i = 0; i < ns; ++i) sphereBoxes[i] = sphereBox(scene.spheres[i]);
-  const std::size_t firstSphereObject = objectBoxes.size();
-  objectBoxes.insert(objectBoxes.end(), sphereBoxes.begin(), sphereBoxes.end());
+  // The other kinds' objects follow, kind by kind: primitive i of `kind` is object
+  // firstObject[kind] + i.
+  std::size_t firstObject[shapes::kKinds] = {};
+  for (std::uint32_t kind = gpu::kPrimTriangle + 1; kind < shapes::kKinds; ++kind) {
+    firstObject[kind] = objectBoxes.size();
+    for (std::uint32_t i = 0; i < shapes::count(scene, kind); ++i) objectBoxes.push_back(boxOf(scene, gpu::primRef(kind, i)));
+  }
   result.objects = static_cast<int>(objectBoxes.size());
 
   // Each primitive starts from its own object's offset.
   std::vector<double> objectOffset(objectBoxes.size());
   for (std::size_t o = 0; o < objectBoxes.size(); ++o) objectOffset[o] = offsetForSize(objectBoxes[o].diagonal());
   for (std::size_t i = 0; i < nt; ++i) result.triangles[i] = objectOffset[objectOf[i]];
-  for (std::size_t i = 0; i < ns; ++i) result.spheres[i] = objectOffset[firstSphereObject + i];
+  for (std::uint32_t kind = gpu::kPrimTriangle + 1; kind < shapes::kKinds; ++kind)
+    for (std::size_t i = 0; i < result.ofKind(kind).size(); ++i) result.ofKind(kind)[i] = objectOffset[firstObject[kind] + i];
 
   // Then takes the smallest offset of the objects within its own offset's reach: a ray from
   // it ignores hits closer than that, and theirs must not be ignored beyond their own offset.
@@ -347,10 +316,12 @@ PrimitiveOffsets primitiveOffsets(const SceneDesc& scene) {
     auto lower = [&](double& offset, double own, const Box& box) {
       if (offset > levels[l] && tree.anyNear(box, own)) offset = levels[l];
     };
-    for (std::size_t i = 0; i < nt; ++i)
-      lower(result.triangles[i], objectOffset[objectOf[i]], triangleBox(scene.triangles[i]));
-    for (std::size_t i = 0; i < ns; ++i)
-      lower(result.spheres[i], objectOffset[firstSphereObject + i], sphereBoxes[i]);
+    for (std::size_t i = 0; i < nt; ++i) lower(result.triangles[i], objectOffset[objectOf[i]], boxOf(scene, triangleRef(i)));
+    for (std::uint32_t kind = gpu::kPrimTriangle + 1; kind < shapes::kKinds; ++kind)
+      for (std::size_t i = 0; i < result.ofKind(kind).size(); ++i) {
+        const std::size_t o = firstObject[kind] + i;
+        lower(result.ofKind(kind)[i], objectOffset[o], objectBoxes[o]);
+      }
   }
   return result;
 }

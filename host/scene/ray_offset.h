@@ -4,8 +4,10 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
+#include "gpu_types.h"
 #include "scene/scene_desc.h"
 
 namespace vkrt {
@@ -41,6 +43,11 @@ struct PrimitiveOffsets {
   std::vector<double> triangles;   // one per SceneDesc triangle
   std::vector<double> spheres;     // one per SceneDesc sphere
   int objects = 0;                 // how many objects the scene has (for --stats and tests)
+  // The offsets of the primitives of `kind` (gpu_types.h: kPrimTriangle, kPrimSphere), and the
+  // offset of the primitive that `ref` refers to.
+  std::vector<double>& ofKind(std::uint32_t kind) { return kind == gpu::kPrimSphere ? spheres : triangles; }
+  const std::vector<double>& ofKind(std::uint32_t kind) const { return kind == gpu::kPrimSphere ? spheres : triangles; }
+  double of(std::uint32_t ref) const { return ofKind(gpu::primKind(ref))[gpu::primIndex(ref)]; }
 };
 PrimitiveOffsets primitiveOffsets(const SceneDesc& scene);
 

@@ -21,6 +21,7 @@
 #include "differential.h"
 #include "scene/bvh.h"
 #include "scene/parse.h"
+#include "scene/shapes/sphere.h"
 #include "scene_generator.h"
 #include "test_support.h"
 
@@ -151,7 +152,7 @@ TEST(DifferentialGenerator, VastGroundLiesBelowEverythingAndAwayFromTheLights) {
   SceneDesc g = parseScene(*grounded, "g.test");
   ASSERT_EQ(g.spheres.size(), 2u);
   dvec3 lo, hi;
-  sphereBounds(g.spheres[0], lo, hi);
+  shapes::bounds(g.spheres[0], lo, hi);
   EXPECT_LT(hi.y, -1.0);                // below the sphere (the lowest point)
   EXPECT_GT(hi.x - lo.x, 1000.0);       // vast
   EXPECT_EQ(g.materials[g.spheres[0].material], (Material{dvec3(0.0), dvec3(0.0), dvec3(0.0), dvec3(0.0), 0.0}));

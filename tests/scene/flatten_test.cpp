@@ -8,6 +8,7 @@
 
 #include "scene/flatten.h"
 #include "scene/parse.h"
+#include "scene/shapes/sphere.h"
 
 using namespace vkrt;
 
@@ -133,7 +134,7 @@ int checkTree(const SceneDesc& s, const Bvh& bvh) {
       std::size_t index;
       if (gpu::primKind(ref) == gpu::kPrimSphere) {
         index = s.triangles.size() + (gpu::primIndex(ref));
-        sphereBounds(s.spheres[gpu::primIndex(ref)], lo, hi);
+        shapes::bounds(s.spheres[gpu::primIndex(ref)], lo, hi);
       } else {
         index = ref;
         lo = glm::min(s.triangles[ref].p[0], glm::min(s.triangles[ref].p[1], s.triangles[ref].p[2]));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene/bvh.h"
+#include "scene/shapes/sphere.h"
 
 namespace vkrt::difftest {
 
@@ -595,7 +596,7 @@ std::optional<std::string> withVastBlackGround(std::string_view text, const Scen
     }
   for (const Sphere& s : scene.spheres) {
     dvec3 slo, shi;
-    sphereBounds(s, slo, shi);
+    shapes::bounds(s, slo, shi);
     lo = glm::min(lo, slo);
     hi = glm::max(hi, shi);
   }
