@@ -5,7 +5,7 @@ its speed can be compared with an independent, well-tested path tracer. This rea
 of the format that the comparison scenes use (camera, triangles, quad lights, transforms,
 diffuse and modified-Phong materials, maxdepth, russianroulette) and refuses the rest.
 
-The modified Phong BRDF of SPEC-PATHTRACING section 3 is not one of Mitsuba's, so it is a
+The modified Phong BRDF of doc/path-tracing.md, "Integrators" is not one of Mitsuba's, so it is a
 Python BSDF here, sampled as that section says (cosine lobe or Phong lobe, chosen with
 probability t = avg(ks) / (avg(kd) + avg(ks))).
 

@@ -11,7 +11,7 @@ namespace vkrt {
 enum ExitStatus : int {
   kExitOk = 0,
   kExitUsage = 1,         // a bad command line
-  kExitScene = 2,         // the scene file is wrong: SPEC section 8's errors (with --strict, its warnings)
+  kExitScene = 2,         // the scene file is wrong: doc/scene-format.md, "Warnings and errors"'s errors (with --strict, its warnings)
   kExitDevice = 3,        // the Vulkan backend cannot render here: no loader, driver or device, a failed
                           // call, or a scene beyond the backend's or the device's limits
   kExitIo = 4,            // a file cannot be read or written (the scene, an image, the output)

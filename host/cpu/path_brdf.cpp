@@ -1,4 +1,4 @@
-// BRDF evaluation and sampling for the CPU path integrators, written from SPEC-PATHTRACING
+// BRDF evaluation and sampling for the CPU path integrators, written from doc/path-tracing.md
 // (no code shared with the shader).
 #include "cpu/path_brdf.h"
 
@@ -21,7 +21,7 @@ double tan2FromCos(double cosine) {
   return std::max(0.0, 1.0 - c2) / c2;
 }
 
-// Smith's G1 for GGX (SPEC-PATHTRACING section 3).
+// Smith's G1 for GGX (doc/path-tracing.md, "BRDFs").
 double ggxG1(double alpha, double cosine) {
   return 2.0 / (1.0 + std::sqrt(1.0 + alpha * alpha * tan2FromCos(cosine)));
 }

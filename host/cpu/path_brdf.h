@@ -1,4 +1,4 @@
-// The BRDFs of the path integrators and how their directions are sampled (SPEC-PATHTRACING
+// The BRDFs of the path integrators and how their directions are sampled (doc/path-tracing.md
 // sections 3-4, and the sampling rules of gpu_types.h "How each backend turns these numbers
 // into a path"), in double precision. Pure functions of a material and unit vectors; knows
 // nothing of scenes or rays.
@@ -15,7 +15,7 @@ dvec3 evalBrdf(const Material& m, const dvec3& n, const dvec3& wi, const dvec3& 
 // The GGX normal distribution D(h) for cos(theta_h) = nDotH (0 when alpha or nDotH is 0).
 double ggxD(double alpha, double nDotH);
 
-// The probability with which `sampling` picks the specular lobe: t of SPEC-PATHTRACING
+// The probability with which `sampling` picks the specular lobe: t of doc/path-tracing.md
 // section 4 (Phong: avg(ks) / (avg(kd) + avg(ks)), 0 for a black material; GGX: at least 0.25).
 double specularLobeProbability(const Material& m);
 
@@ -27,7 +27,7 @@ double directionPdf(Sampling sampling, const Material& m, const dvec3& n, const 
 dvec3 sampleDirection(Sampling sampling, const Material& m, const dvec3& n, const dvec3& wo, double u, double v,
                       double lobe);
 
-// The power heuristic (beta = 2, SPEC-PATHTRACING section 4): the MIS weight of a sample
+// The power heuristic (beta = 2, doc/path-tracing.md, "Estimators"): the MIS weight of a sample
 // drawn by the strategy of density pdfThis against the other strategy's pdfOther,
 // pdfThis^2 / (pdfThis^2 + pdfOther^2); 0 when both are 0.
 double powerHeuristic(double pdfThis, double pdfOther);

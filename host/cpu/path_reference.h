@@ -1,4 +1,4 @@
-// CPU reference of the path integrators (SPEC-PATHTRACING sections 2-4): analyticdirect,
+// CPU reference of the path integrators (doc/path-tracing.md, "Quad lights"; doc/path-tracing.md, "Estimators"): analyticdirect,
 // direct and pathtracer, in double precision, written plainly and apart from the shader. It
 // draws the shader's random numbers (gpu_types.h, rngUniform) by the same rules, so that one
 // seed gives the same paths on both backends up to rounding. Knows nothing of Vulkan.
@@ -45,7 +45,7 @@ RadianceImage renderPathReference(const SceneDesc& scene, const Bvh& bvh, const 
                                   RayCounts* counts);
 
 // analyticdirect's irradiance factor of one quad light at point x of normal n: Phi(x) . n of
-// SPEC-PATHTRACING section 3 (the radiance to add is kd / pi * L * this), 0 when x is not in
+// doc/path-tracing.md, "Integrators" (the radiance to add is kd / pi * L * this), 0 when x is not in
 // front of the light (it emits on one side only).
 double analyticQuadFactor(const QuadLight& light, const dvec3& x, const dvec3& n);
 

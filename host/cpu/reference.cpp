@@ -23,7 +23,7 @@ class Tracer {
     return query_.intersect(ray, tMin, tMax, anyHit, hit);
   }
 
-  // A hit's own colour, everything of SPEC 5 but the mirror term: A + Em + the lights, each
+  // A hit's own colour, everything of doc/scene-format.md, "Shading" but the mirror term: A + Em + the lights, each
   // behind its shadow ray (which starts `offset` from p).
   dvec3 localShading(const Material& m, const dvec3& p, const dvec3& normal, const dvec3& eye,
                      const SecondaryRayOffsets& offset,
@@ -42,7 +42,7 @@ class Tracer {
         toLight = light.vec;
       }
       double nDotL = glm::dot(normal, toLight);
-      if (nDotL <= 0.0) continue;   // SPEC 7: no diffuse and no specular from behind
+      if (nDotL <= 0.0) continue;   // doc/scene-format.md, "Conventions": no diffuse and no specular from behind
       ++counts.shadow;
       Hit blocker;
       if (intersect({p, toLight}, offset.at(nDotL), distance, true, blocker)) continue;
@@ -57,11 +57,11 @@ class Tracer {
     return color;
   }
 
-  // The colour seen along a camera ray: SPEC section 5 with the mirror term unrolled into a
+  // The colour seen along a camera ray: doc/scene-format.md, "Shading" with the mirror term unrolled into a
   // loop. Segment k adds throughput_k * local_k, where local_k is its hit's own shading and
   // throughput_k the product of the specular colours of the k hits before it, so
   //   radiance = local_0 + s_0 local_1 + s_0 s_1 local_2 + ...   (at most maxDepth + 1 segments)
-  // which is the recursion I = local + S * I_R of SPEC 5, evaluated from the front (rounded
+  // which is the recursion I = local + S * I_R of doc/scene-format.md, "Shading", evaluated from the front (rounded
   // unlike the nested form only in the last bits: every course and project scene gives the
   // same bytes either way). The loop needs no stack, so every maxdepth the parser accepts
   // (up to 1,000,000) is safe.
@@ -88,7 +88,7 @@ class Tracer {
     return radiance;
   }
 
-  // SPEC section 3: the ray through the centre of pixel (column, row).
+  // doc/scene-format.md, "Camera": the ray through the centre of pixel (column, row).
   Ray cameraRay(int column, int row) const { return query_.cameraRay(column + 0.5, row + 0.5); }
 
  private:

@@ -1,5 +1,5 @@
 // CPU reference renderer: SceneDesc (+ its BVH) -> RadianceImage, in double precision, written
-// plainly after SPEC sections 3-7. It is the tests' oracle for the GPU backend, so it shares
+// plainly after doc/scene-format.md, "Camera"; doc/scene-format.md, "Conventions". It is the tests' oracle for the GPU backend, so it shares
 // no intersection or shading code with the shader.
 #pragma once
 
@@ -26,7 +26,7 @@ struct CpuOptions {
   // Polled between tiles, from worker threads: true stops early (the image is then incomplete).
   std::function<bool()> stop;
   // Only these pixels of the scene's image (inside it), as an image of the crop's size; the
-  // camera rays are the full image's (SPEC section 3).
+  // camera rays are the full image's (doc/scene-format.md, "Camera").
   std::optional<PixelRect> crop;
   // The samples to render: [firstSample, firstSample + sampleCount) of each pixel, drawn with
   // `seed` (gpu_types.h, "Random numbers"); the image returned is their mean, with
@@ -42,7 +42,7 @@ struct CpuOptions {
   std::size_t bandPixels = 1u << 20;   // with `rows`: about this many pixels a band (12 MB of floats)
 };
 
-// The Whitted model of SPEC sections 3-7 (the path integrators plug in beside it, for
+// The Whitted model of doc/scene-format.md, "Camera"; doc/scene-format.md, "Conventions" (the path integrators plug in beside it, for
 // scene.path.integrator != Integrator::Raytracer).
 RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options, RayCounts* counts);
 

@@ -22,7 +22,7 @@ class SceneQuery {
   // Nearest hit with t in (tMin, tMax), or the first one found when anyHit.
   bool intersect(const Ray& ray, double tMin, double tMax, bool anyHit, Hit& hit) const;
 
-  // The unit normal at hit point p (SPEC 4: never flipped toward the ray); returns the
+  // The unit normal at hit point p (doc/scene-format.md, "Transforms": never flipped toward the ray); returns the
   // material index.
   std::uint32_t surfaceAt(const Hit& hit, const dvec3& p, dvec3& normal) const;
 
@@ -32,7 +32,7 @@ class SceneQuery {
   // The same for a point p of triangle `triangle`.
   SecondaryRayOffsets triangleOffsetsAt(std::uint32_t triangle, const dvec3& p) const;
 
-  // SPEC section 3: the ray through image position (px, py) of the full image, in pixels
+  // doc/scene-format.md, "Camera": the ray through image position (px, py) of the full image, in pixels
   // from its top-left corner; (column + 0.5, row + 0.5) is a pixel's centre.
   Ray cameraRay(double px, double py) const;
 

@@ -1,4 +1,4 @@
-// The Vulkan backend of the path integrators (SPEC-PATHTRACING: analyticdirect, direct,
+// The Vulkan backend of the path integrators (doc/path-tracing.md: analyticdirect, direct,
 // pathtracer): GpuScene -> RadianceImage through pathtrace.comp. Renders a range of samples
 // per pixel and returns their mean in float, so that batches of one render can be averaged
 // (weighted by their sample counts) into the same image as one render of all the samples.

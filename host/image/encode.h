@@ -1,5 +1,5 @@
-// The one conversion from linear radiance to bytes, at output: SPEC section 7's quantization
-// after the `gamma` encoding of SPEC-PATHTRACING section 1. Knows nothing of rendering.
+// The one conversion from linear radiance to bytes, at output: doc/scene-format.md, "Conventions"'s quantization
+// after the `gamma` encoding of doc/path-tracing.md, "Commands". Knows nothing of rendering.
 #pragma once
 
 #include <cstddef>

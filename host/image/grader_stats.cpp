@@ -1,4 +1,4 @@
-// Bias and variance as the CSE 168 grading page reported them (SPEC-PATHTRACING section 5).
+// Bias and variance as the CSE 168 grading page reported them (doc/path-tracing.md, "In practice").
 #include "image/grader_stats.h"
 
 #include <algorithm>

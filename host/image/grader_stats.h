@@ -1,4 +1,4 @@
-// The measures of the CSE 168 grader (SPEC-PATHTRACING section 5): bias and variance of an
+// The measures of the CSE 168 grader (doc/path-tracing.md, "In practice"): bias and variance of an
 // image against a reference, over all pixels and channels, in 8-bit units. Knows nothing of
 // rendering.
 #pragma once

@@ -25,7 +25,7 @@ struct Image {
   }
 };
 
-// SPEC section 7: floor(clamp(c, 0, 1) * 255), not rounding. NaN becomes 0.
+// doc/scene-format.md, "Conventions": floor(clamp(c, 0, 1) * 255), not rounding. NaN becomes 0.
 inline std::uint8_t radianceToByte(double c) {
   if (!(c > 0.0)) return 0;
   return static_cast<std::uint8_t>(std::floor(std::min(c, 1.0) * 255.0));

@@ -431,7 +431,7 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   report.spheres = scene.spheres.size();
   report.lights = countLights(scene);
 
-  // The Whitted model ignores `gamma` (SPEC-PATHTRACING section 1): its bytes are SPEC
+  // The Whitted model ignores `gamma` (doc/path-tracing.md, "Commands"): its bytes are doc/scene-format.md
   // section 7's, and the shader's exactness cut-off reasons in those (gamma 1).
   report.gamma = report.pathIntegrator ? scene.path.gamma : 1.0;
   prepared.plan = samplePlan(request, scene, progress);

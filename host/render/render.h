@@ -32,7 +32,7 @@ struct RenderRequest {
   // or DIR/ + the scene file's stem + ".png" when the scene has no `output` line.
   std::optional<std::string> outputDir;
   // The image size instead of the scene's `size` (the camera's fovy kept, the pixel centres
-  // of SPEC section 3 for the new size): width and height when both > 0 (--size WxH), else
+  // of doc/scene-format.md, "Camera" for the new size): width and height when both > 0 (--size WxH), else
   // the scene's size times `scale` when > 0 (--scale F), rounded, at least 1x1.
   int width = 0, height = 0;
   double scale = 0;
@@ -57,7 +57,7 @@ struct RenderRequest {
   std::uint64_t spp = 0;
   std::optional<std::uint32_t> seed;   // none: 0
   double timeLimitSeconds = 0;
-  // Every warning is an error: the scene's (SPEC section 8), and pixels whose colour came
+  // Every warning is an error: the scene's (doc/scene-format.md, "Warnings and errors"), and pixels whose colour came
   // out NaN or infinite (then no image is written).
   bool strict = false;
   // Called with the output path once it is resolved and checked, before the render starts;

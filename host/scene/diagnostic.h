@@ -1,5 +1,5 @@
 // Located diagnostics for bad input: FILE:LINE: error|warning: MESSAGE. The parser collects
-// them; errors are thrown once, at the end, as one SceneError (SPEC section 8).
+// them; errors are thrown once, at the end, as one SceneError (doc/scene-format.md, "Warnings and errors").
 #pragma once
 
 #include <cstddef>

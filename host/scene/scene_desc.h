@@ -13,7 +13,7 @@ namespace vkrt {
 using glm::dmat4;
 using glm::dvec3;
 
-// SPEC-PATHTRACING section 1: the algorithm, and the path integrators' settings.
+// doc/path-tracing.md, "Commands": the algorithm, and the path integrators' settings.
 enum class Integrator { Raytracer, AnalyticDirect, Direct, PathTracer };
 enum class NextEvent { Off, On, Mis };
 enum class Sampling { Hemisphere, Cosine, Brdf };
@@ -57,7 +57,7 @@ struct Light {
   dvec3 attenuation{1, 0, 0};    // constant, linear, quadratic; used by point lights only
 };
 
-// `quadLight a ab ac L` (SPEC-PATHTRACING section 2), world space: the parallelogram with
+// `quadLight a ab ac L` (doc/path-tracing.md, "Quad lights"), world space: the parallelogram with
 // corners a, a+ab, a+ab+ac, a+ac, emitting radiance L on the side of n = normalize(cross(ac, ab)).
 // It is also geometry: two triangles of SceneDesc::triangles, wound so that their face normal
 // is n, whose material has quadLight set to this light's index.
@@ -67,7 +67,7 @@ struct QuadLight {
   int line = 0;                  // the `quadLight` line (for messages)
 };
 
-// The path integrators' settings (SPEC-PATHTRACING sections 1 and 4); the defaults are the
+// The path integrators' settings (doc/path-tracing.md, "Commands"; doc/path-tracing.md, "Estimators"); the defaults are the
 // format's. Ignored by Integrator::Raytracer.
 struct PathSettings {
   Integrator integrator = Integrator::Raytracer;
@@ -91,7 +91,7 @@ struct SceneDesc {
   int width = 0, height = 0;
   int sizeLine = 0;              // line of the `size` command
   // Raytracer: primary hit plus up to maxDepth mirror reflections. Path integrators: light
-  // paths of at most maxDepth + 1 segments (SPEC-PATHTRACING section 4); -1 = no limit.
+  // paths of at most maxDepth + 1 segments (doc/path-tracing.md, "Estimators"); -1 = no limit.
   int maxDepth = 5;
   std::string output = "raytrace.png";
   int outputLine = 0;            // line of the `output` command, 0 when defaulted

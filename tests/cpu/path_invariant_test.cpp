@@ -1,4 +1,4 @@
-// The invariant of SPEC-PATHTRACING section 4: next-event estimation (off, on, mis), Russian
+// The invariant of doc/path-tracing.md, "Estimators": next-event estimation (off, on, mis), Russian
 // roulette, the sampling of directions (hemisphere, cosine, brdf), lightsamples and
 // lightstratify change only the noise, never the expected image. One Cornell-like box (a quad
 // light, Phong and GGX materials) is rendered with each strategy and compared with a

@@ -86,7 +86,7 @@ TEST(KnownAnswer, PointLightIsShadowedOnlyByHitsBeforeIt) {
 }
 
 TEST(KnownAnswer, LightBehindTheSurfaceAddsNothing) {
-  // N.L < 0: neither diffuse nor specular (SPEC section 7).
+  // N.L < 0: neither diffuse nor specular (doc/scene-format.md, "Conventions").
   Image img = renderText(kCentreCamera + "directional 0 0 -1 1 1 1\n" + kLambert +
                          "specular 1 1 1\nshininess 0\nmaxdepth 0\n" + kFloor);
   EXPECT_EQ(centre(img), 63);

@@ -1,6 +1,6 @@
 // The path integrators on the GPU (pathtrace.comp): closed forms (analyticdirect under a
 // square light, a white furnace), the invariants of a counter-based render (same seed, crops,
-// suspension), and statistical agreement of the sampling strategies (SPEC-PATHTRACING
+// suspension), and statistical agreement of the sampling strategies (doc/path-tracing.md
 // section 4). The scenes are built in code. The validation layer stays silent throughout.
 #include <cmath>
 #include <cstring>
@@ -340,7 +340,7 @@ TEST(GpuPath, WhiteFurnaceConvergesToLeOverOneMinusAlbedo) {
   o.sampleCount = 2;
   RadianceImage depth3 = renderPath(s, o);
   // Every sample is the series, but for the few paths that leave the box: from within the ray
-  // offset (1e-3) of an edge, a ray toward the adjacent wall ignores it (SPEC section 7).
+  // offset (1e-3) of an edge, a ray toward the adjacent wall ignores it (doc/scene-format.md, "Conventions").
   const double series = le * (1 + a + a * a + a * a * a);
   std::size_t exact = 0;
   for (float v : depth3.rgb) {
@@ -540,7 +540,7 @@ TEST(GpuPath, SppOneSamplesPixelCentres) {
   EXPECT_FALSE(sameBits(centre, renderPath(s, o)));
 }
 
-// The depth rule (SPEC-PATHTRACING section 4): maxdepth 0 shows only what the camera sees
+// The depth rule (doc/path-tracing.md, "Estimators"): maxdepth 0 shows only what the camera sees
 // emitting, and maxdepth 1 is direct lighting: the `direct` integrator's expected image.
 TEST(GpuPath, MaxDepthZeroShowsEmittersOnly) {
   VKRT_REQUIRE_GPU(context);
@@ -565,7 +565,7 @@ namespace {
 
 constexpr int kStrategyBlocks = 16;   // 8x8 blocks of the 32x32 image
 
-// SPEC-PATHTRACING section 4's invariant: NEE off, on and MIS (and with them Russian
+// doc/path-tracing.md, "Estimators"'s invariant: NEE off, on and MIS (and with them Russian
 // roulette, the three samplings, light samples and strata) change the noise, not the
 // expected image. Per-block t-tests (8x8 blocks of a 32x32 image) against NEE on, family
 // false-alarm rate 1e-3 over all the tests of one call, each image of `samples` samples per

@@ -1,4 +1,4 @@
-// The MIS weights of nexteventestimation mis (SPEC-PATHTRACING section 4: the power
+// The MIS weights of nexteventestimation mis (doc/path-tracing.md, "Estimators": the power
 // heuristic, beta = 2). An estimator that weighs both strategies by another heuristic that
 // still sums to one (the balance heuristic) converges to the same image, so the strategy
 // tests cannot see it: the weight functions of both backends are checked against the closed

@@ -64,7 +64,7 @@ const char* kWhittedScene =
 
 // ---- encoding -----------------------------------------------------------------------------------
 
-// SPEC section 7 and SPEC-PATHTRACING's gamma, against bytes computed by hand.
+// doc/scene-format.md, "Conventions" and doc/path-tracing.md's gamma, against bytes computed by hand.
 TEST(Encode, GammaOneIsFloorOf255TimesTheClampedValue) {
   EXPECT_EQ(encodeChannel(0.0f, 1.0), 0);
   EXPECT_EQ(encodeChannel(0.5f, 1.0), 127);    // 127.5
@@ -329,7 +329,7 @@ TEST(Progressive, BatchesOfADeterministicRenderGiveItsImageOnVulkan) {
   EXPECT_EQ(batched.samples, 3u);
   EXPECT_TRUE(sameBits(batched.rgb, once.rgb));
   EXPECT_EQ(ctx->validationMessages(), before);
-  // The float image, encoded, is the bytes the CPU reference gives (SPEC's tolerance: the
+  // The float image, encoded, is the bytes the CPU reference gives (doc/scene-format.md's tolerance: the
   // backends round differently at a few edge pixels).
   Bvh bvh = buildBvh(scene);
   EXPECT_TRUE(imagesClose("whitted-float", encodeImage(once, 1.0),

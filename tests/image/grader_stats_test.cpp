@@ -1,4 +1,4 @@
-// The course grader's measures (SPEC-PATHTRACING section 5) on images whose answer is known.
+// The course grader's measures (doc/path-tracing.md, "In practice") on images whose answer is known.
 #include <cmath>
 
 #include <gtest/gtest.h>

@@ -34,7 +34,7 @@ Image renderCourse(const std::string& dir, const std::string& scene, const std::
 
 }  // namespace
 
-// SPEC section 7: with its conventions, scene4-7 match the reference but for a few pixels one
+// doc/scene-format.md, "Conventions": with its conventions, scene4-7 match the reference but for a few pixels one
 // step off (float rounding at a step boundary) and the reference's two black pixels (0,479)
 // and (320,479). Tolerance: at most 10 pixels per scene off by more than 2/255.
 TEST_P(CourseScene, MatchesVerifiedReference) {

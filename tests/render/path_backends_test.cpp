@@ -21,7 +21,7 @@ using namespace vkrt::test;
 
 namespace {
 
-// The image as the output encodes it (SPEC-PATHTRACING section 1, `gamma`).
+// The image as the output encodes it (doc/path-tracing.md, "Commands", `gamma`).
 Image encoded(const RadianceImage& r, double gamma) {
   Image img(r.width, r.height);
   for (std::size_t i = 0; i < r.rgb.size(); ++i) img.rgb[i] = radianceToByte(std::pow(std::max(0.0, double(r.rgb[i])), 1.0 / gamma));

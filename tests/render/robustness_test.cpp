@@ -39,7 +39,7 @@ std::string point(const dvec3& p) { return num(p.x) + " " + num(p.y) + " " + num
 // Contact shadows (a sphere and an ellipsoid resting on a floor), a mirror sphere, a point
 // and a directional light. Every length is multiplied by k and moved by `offset`: by hand,
 // or (viaFile) through the file's own `translate` and `scale`, which also move the point
-// light (lights follow the transform; SPEC section 7). Attenuation is constant, so the
+// light (lights follow the transform; doc/scene-format.md, "Conventions"). Attenuation is constant, so the
 // picture is the same at every scale.
 std::string stiffScene(double k, dvec3 offset, bool viaFile, const std::string& extra = "") {
   auto at = [&](dvec3 p) { return point(viaFile ? p : p * k + offset); };
@@ -185,7 +185,7 @@ TEST(Degenerate, ZeroAreaTrianglesAndPointSpheresAreNeverHit) {
   for (std::uint8_t b : gpu.rgb) ASSERT_EQ(b, 0);
 }
 
-// The edge cases of SPEC section 5 and the camera, each rendered by both backends, which must
+// The edge cases of doc/scene-format.md, "Shading" and the camera, each rendered by both backends, which must
 // agree (float32 against double: the same flip allowance as the other GPU tests) and produce
 // no NaN or infinity (the helpers check).
 struct EdgeCase {

@@ -1,4 +1,4 @@
-// Every kind of bad input of SPEC section 8: the parser's located message, and through the
+// Every kind of bad input of doc/scene-format.md, "Warnings and errors": the parser's located message, and through the
 // CLI: exit status 2, the message on stderr, no image written, an existing image untouched.
 #include <algorithm>
 #include <filesystem>
@@ -74,7 +74,7 @@ std::vector<BadInput> badInputs() {
       {"DirectionalUnderZeroScale", kOk + "scale 0 0 0\ndirectional 0 0 1 1 1 1\n", 4,
        "directional light direction vanishes under the current transform (a scale of 0)"},
       {"SingularSphere", kOk + "scale 1 0 1\nsphere 0 0 0 1\n", 4, "singular transform"},
-      // SPEC-PATHTRACING section 1 (kPath: lines 1-3, integrator pathtracer)
+      // doc/path-tracing.md, "Commands" (kPath: lines 1-3, integrator pathtracer)
       {"MaxDepthBelowMinusOne", kPath + "maxdepth -2\n", 4,
        "'maxdepth' argument 1: expected a non-negative integer, or -1 (no limit), got '-2'"},
       {"UnlimitedMaxDepthUnderRaytracerGivenLater", kOk + "maxdepth -1\nintegrator raytracer\n", 3,

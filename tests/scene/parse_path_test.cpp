@@ -1,4 +1,4 @@
-// Parser tests for the commands of SPEC-PATHTRACING section 1, from strings: each value read,
+// Parser tests for the commands of doc/path-tracing.md, "Commands", from strings: each value read,
 // the defaults, quad lights as geometry (winding, transforms), and the course's 16 scenes.
 // Errors and warnings are in parse_errors_test.cpp and parse_warnings_test.cpp.
 #include <cmath>
@@ -323,7 +323,7 @@ TEST(ParsePath, CourseGgxRoughnessPerMaterial) {
   }
 }
 
-// hw4/mis.test: four panel lights of equal power (L x area = 1, SPEC-PATHTRACING section 2),
+// hw4/mis.test: four panel lights of equal power (L x area = 1, doc/path-tracing.md, "Quad lights"),
 // and panels of GGX roughness 0.0005 to 0.15.
 TEST(ParsePath, CourseMisLightsHaveEqualPower) {
   auto dir = cse168Dir();

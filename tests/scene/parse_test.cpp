@@ -1,4 +1,4 @@
-// Parser tests from strings: every command, defaults, the transform stack, SPEC section 1.
+// Parser tests from strings: every command, defaults, the transform stack, doc/scene-format.md, "File structure".
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>

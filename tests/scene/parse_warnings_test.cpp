@@ -1,4 +1,4 @@
-// What real files do and vkrt accepts with a warning (SPEC section 8): one case per kind,
+// What real files do and vkrt accepts with a warning (doc/scene-format.md, "Warnings and errors"): one case per kind,
 // checking the message, its line and that the scene was read as its author meant; with
 // --strict each one is an error (exit 2, nothing written). Parsed from strings.
 #include <algorithm>
@@ -85,7 +85,7 @@ std::vector<Accepted> acceptedInputs() {
       {"OutputWithoutExtension", kOk + "output out.d/render\n", 3,
        "output file 'out.d/render' is not named .png or .ppm",
        [](const SceneDesc& s) { EXPECT_EQ(s.output, "out.d/render"); }},
-      // SPEC-PATHTRACING section 1: what the scene's integrator does not use is ignored (the
+      // doc/path-tracing.md, "Commands": what the scene's integrator does not use is ignored (the
       // setting keeps its default), decided at the end of file.
       {"SppUnderRaytracer", kOk + "spp 16\n", 3, "'spp' ignored: integrator raytracer (the default) does not use it",
        [](const SceneDesc& s) { EXPECT_EQ(s.path.spp, 1); }},

@@ -43,7 +43,7 @@ std::string sceneKind(std::uint64_t seed);
 // put under `translate offset` and `scale k k k` (inserted after `size`), the camera's
 // look-from and look-at are moved by hand (the camera is not under the transform), and each
 // `attenuation c0 c1 c2` becomes `c0 c1/k c2/k^2`, so that every light's divisor at the scaled
-// distances is what it was. Point lights follow the transform (SPEC section 7). The picture
+// distances is what it was. Point lights follow the transform (doc/scene-format.md, "Conventions"). The picture
 // must be the same.
 std::string scaledAndMoved(std::string_view text, double k, const dvec3& offset);
 
