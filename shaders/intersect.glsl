@@ -1,15 +1,11 @@
 // intersect.glsl: rays against the scene, in float32, for the compute shaders (raytrace.comp,
 // pathtrace.comp): boxes, triangles, spheres, the traversal stack's entries and the offsets of
-// secondary rays. Include after gpu_types.h and scene_reads.glsl, and after the
-// specialization constants kHasTriangles, kHasSpheres and kHasSmoothNormals.
+// secondary rays (the traversal itself: traverse.glsl). Include after gpu_types.h and
+// scene_reads.glsl, and after the specialization constants kHasTriangles, kHasSpheres and
+// kHasSmoothNormals.
 
 const float kInfinity = 3.402823466e38;
 
-// The traversal stack of the ray being traced. A local array is per-lane scratch memory in
-// llvmpipe; its size must be a constant.
-uint sp;
-uint stack[kTraversalStackSize];     // entries (kStackLeafBit) of nodes whose boxes the ray enters
-float stackT[kTraversalStackSize];   // the entry distance of each, to skip it once a nearer hit is known
 // Of the shaded hit: the least tMin of a secondary ray leaving it, and the grazing term.
 float hitTMin, hitGrazing;
 
@@ -136,24 +132,6 @@ uint stackEntry(GpuBvhNode n) {
   return n.primCount > 0u ? kStackLeafBit | (n.primCount << kStackCountShift) | n.leftOrFirst : n.leftOrFirst;
 }
 
-// Tests the two children of an interior node, which are adjacent in the array (one 4-texel
-// read), and pushes those the ray enters within (tMin, tMax), the nearer one last.
-void pushChildren(uint left, vec3 origin, vec3 invDir, float tMin, float tMax) {
-  GpuBvhNode l = loadNode(left), r = loadNode(left + 1u);
-  float tl = boxEntry(l, origin, invDir, tMin, tMax);
-  float tr = boxEntry(r, origin, invDir, tMin, tMax);
-  bool leftFirst = tl <= tr;
-  float tNear = leftFirst ? tl : tr, tFar = leftFirst ? tr : tl;
-  if (tFar != kInfinity) {
-    stack[sp] = stackEntry(leftFirst ? r : l);
-    stackT[sp++] = tFar;
-  }
-  if (tNear != kInfinity) {
-    stack[sp] = stackEntry(leftFirst ? l : r);
-    stackT[sp++] = tNear;
-  }
-}
-
 // The secondary-ray offsets at p on a primitive (the policy: gpu_types.h, "Secondary rays");
 // p and the camera are in the frame centred on the geometry. Sets hitTMin and hitGrazing.
 void setSecondaryOffsets(float primitiveOffset, vec3 p, vec3 camera) {
@@ -165,9 +143,6 @@ void setSecondaryOffsets(float primitiveOffset, vec3 p, vec3 camera) {
 
 // The tMin of a secondary ray leaving the hit with |N.dir| = cosine.
 float secondaryTMin(float cosine) { return max(hitTMin, hitGrazing / max(cosine, 1e-30)); }
-
-// True when the entry on top of the traversal stack is an interior node.
-bool nextIsInterior() { return sp > 0u && (stack[sp - 1u] & kStackLeafBit) == 0u; }
 
 // At the nearest hit p = origin + t dir of primitive reference `prim` (barycentrics b of
 // p1 and p2 for a triangle): the unit shading normal and the material. Also sets the

@@ -1,4 +1,4 @@
-// The power heuristic (beta = 2) of SPEC-PATHTRACING section 4: the weight of a sample drawn
+// The power heuristic (beta = 2) of doc/path-tracing.md, "Estimators": the weight of a sample drawn
 // by the strategy of density pdfThis against the other strategy's pdfOther, both in solid
 // angle. Written as 1 / (1 + (pdfOther / pdfThis)^2), the same as pdfThis^2 / (pdfThis^2 +
 // pdfOther^2) without squaring a density that float32 may overflow. Included by

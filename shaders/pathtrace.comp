@@ -1,4 +1,4 @@
-// pathtrace.comp: the path integrators of SPEC-PATHTRACING (analyticdirect, direct, pathtracer).
+// pathtrace.comp: the path integrators of doc/path-tracing.md (analyticdirect, direct, pathtracer).
 // One invocation per pixel of a band renders that pixel's samples [firstSample, firstSample +
 // sampleCount) one after another and adds them up in float. Each sample is a path: camera
 // ray, then at each vertex emission, light samples (quad lights and emissive triangles and
@@ -35,8 +35,20 @@ layout(constant_id = kPathSpecJitter) const uint kSpecJitter = kPathSpecFromPara
 layout(constant_id = kPathSpecHasEmitters) const bool kHasEmitters = true;
 layout(constant_id = kPathSpecTestAll) const bool kTestAll = false;
 
+// rgb: the sum of the pixel's finished samples; w: 1 once all are done, 0 while suspended.
+layout(std430, binding = kBindingPixels) buffer Accumulation { vec4 accumulation[]; };
+layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathTracerState states[]; };
+layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
+
+layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
+layout(std140, binding = kBindingPathParams) uniform PathParams { GpuPathParams path; };
+layout(push_constant) uniform Push { GpuPathPush pc; };
+
 #include "scene_reads.glsl"
 #include "intersect.glsl"
+#include "traverse.glsl"
+#include "camera.glsl"
+#include "lights.glsl"
 #include "mis_weight.glsl"
 
 #ifdef VKRT_TEXEL_READS
@@ -59,15 +71,6 @@ GpuQuadLight loadQuadLight(uint i) { return quadLights[i]; }
 // The emissive triangles and spheres that next-event estimation samples (path.emitterCount).
 layout(std430, binding = kBindingEmitters) readonly buffer Emitters { GpuEmitter emitters[]; };
 
-// rgb: the sum of the pixel's finished samples; w: 1 once all are done, 0 while suspended.
-layout(std430, binding = kBindingPixels) buffer Accumulation { vec4 accumulation[]; };
-layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathTracerState states[]; };
-layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
-
-layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
-layout(std140, binding = kBindingPathParams) uniform PathParams { GpuPathParams path; };
-layout(push_constant) uniform Push { GpuPathPush pc; };
-
 // The integrator settings: specialised, or read from GpuPathParams (kPathSpecFromParams).
 uint integrator() { return kSpecIntegrator != kPathSpecFromParams ? kSpecIntegrator : path.integrator; }
 uint nextEvent() { return kSpecNextEvent != kPathSpecFromParams ? kSpecNextEvent : path.nextEvent; }
@@ -82,16 +85,13 @@ const float kPi = 3.14159265358979;
 const float kInvPi = 0.318309886183791;
 
 // ---- per-pixel state (registers; saved to states[] only on suspension) ----------------------
-vec3 rayOrigin, rayDir;
-float rayTMin, bestT, bestB1, bestB2;
+// (the ray, its hit, the shadow ray and the traversal stack: traverse.glsl)
 vec3 throughput;       // T: the path's weight up to the current vertex
 vec3 radiance;         // this sample's radiance so far
 vec3 pixelSum;         // the pixel's finished samples, added in sample order
 float lastPdf;         // solid-angle pdf of the scatter that made the current ray (MIS)
-vec3 hitPoint, hitNormal, shadowDir, pending;
-float shadowTMax, shadowCos;
-uint phase, bounce, lightIndex, hitPrim, hitMaterial, sampleIndex;
-// (the traversal stack, sp, hitTMin and hitGrazing: intersect.glsl)
+vec3 pending;          // what the current shadow ray adds when nothing blocks it
+uint bounce, sampleIndex;
 uint pixelX, pixelY, pixelIndex;   // in the full image; pixelIndex = y * fullWidth + x
 uint shadowRays = 0u, scatterRays = 0u, nonFinite = 0u;
 
@@ -116,7 +116,7 @@ vec3 aroundAxis(vec3 n, float sinTheta, float cosTheta, float phi) {
   return sinTheta * cos(phi) * t + sinTheta * sin(phi) * b + cosTheta * n;
 }
 
-// ---- BRDFs (SPEC-PATHTRACING section 3) ----------------------------------------------------------
+// ---- BRDFs (doc/path-tracing.md, "BRDFs") ------------------------------------------------------
 // Material w fields: ambient.w = model, diffuse.w = GGX alpha, specular.w = Phong exponent.
 
 bool isGgx(GpuMaterial m) { return kHasGgx && m.ambient.w == kBrdfGgx; }
@@ -157,7 +157,7 @@ vec3 brdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
   return f;
 }
 
-// The probability of the specular lobe under `importancesampling brdf` (SPEC-PATHTRACING 4).
+// The probability of the specular lobe under `importancesampling brdf` (doc/path-tracing.md, "Estimators").
 float specularLobeChance(GpuMaterial m) {
   float kd = average(m.diffuse.rgb), ks = average(m.specular.rgb);
   float t = kd + ks > 0.0 ? ks / (kd + ks) : 0.0;
@@ -204,7 +204,7 @@ vec3 sampleDirection(GpuMaterial m, vec3 n, vec3 wo) {
   return aroundAxis(n, sqrt(u), sqrt(1.0 - u), phi);   // cosine
 }
 
-// ---- analyticdirect: the closed form (SPEC-PATHTRACING section 3) ------------------------------
+// ---- analyticdirect: the closed form (doc/path-tracing.md, "Integrators") ------------------------
 
 // Phi(x) = 1/2 sum_k theta_k Gamma_k over the corners a, a+ab, a+ab+ac, a+ac; 0 behind the
 // light (it emits on one side).
@@ -275,18 +275,6 @@ float offsetAt(float primitiveOffset, vec3 p, float cosine) {
 
 // ---- the state machine's steps -----------------------------------------------------------------
 
-void startRay(vec3 origin, vec3 dir, float tMin) {
-  rayOrigin = origin;
-  rayDir = dir;
-  rayTMin = tMin;
-  bestT = kInfinity;
-  hitPrim = kNoHit;
-  sp = params.primCount > 0u ? 1u : 0u;   // an empty scene's root is an empty leaf: nothing to visit
-  stack[0] = params.rootEntry;
-  stackT[0] = 0.0;
-  phase = kPhaseTrace;
-}
-
 // The camera ray of sample `sampleIndex` (gpu_types.h: the pixel centre, or jittered).
 void startCamera() {
   keySample();
@@ -295,9 +283,8 @@ void startCamera() {
     u = random(kRngPixelX);
     v = random(kRngPixelY);
   }
-  float a = (float(pixelX) + u) - 0.5 * float(params.fullWidth);
-  float b = 0.5 * float(params.fullHeight) - (float(pixelY) + v);
-  vec3 dir = normalize(a * path.cameraRight.xyz + b * path.cameraUp.xyz - path.cameraBack.xyz);
+  vec3 dir = cameraRayDirection(uvec2(pixelX, pixelY), vec2(u, v), path.cameraRight.xyz, path.cameraUp.xyz,
+                                path.cameraBack.xyz);
   throughput = vec3(1.0);
   radiance = vec3(0.0);
   bounce = 0u;
@@ -363,7 +350,7 @@ void beginShading() {
   }
   radiance += throughput * emitted;
   bool analytic = integrator() == kIntegratorAnalyticDirect;
-  // Whether this vertex samples lights and scatters: SPEC-PATHTRACING section 4's depth rule
+  // Whether this vertex samples lights and scatters: the depth rule of doc/path-tracing.md, "Depth"
   // (vertex `bounce` may when bounce < maxdepth, kMaxBounces with no limit), one vertex for
   // direct lighting.
   bool scatters = integrator() == kIntegratorPathTracer
@@ -382,14 +369,8 @@ void beginShading() {
 // Starts the shadow ray of a light sample that adds `contribution` when nothing blocks it.
 void startShadowRay(vec3 dir, float tMax, float cosine, vec3 contribution) {
   ++shadowRays;
-  shadowDir = dir;
-  shadowTMax = tMax;
-  shadowCos = cosine;
   pending = contribution;
-  sp = params.primCount > 0u ? 1u : 0u;
-  stack[0] = params.rootEntry;
-  stackT[0] = 0.0;
-  phase = kPhaseShadow;
+  startShadowTraversal(dir, tMax, cosine);
 }
 
 // Sample k of quad light j by next-event estimation.
@@ -423,22 +404,13 @@ void quadLightSample(uint j, uint k, GpuMaterial m) {
 // like its quad lights: diffuse only, no shadow.
 void pointLightSample(uint i, GpuMaterial m, bool analytic) {
   GpuLight light = loadLight(i);
-  vec3 wi;
-  float tMax = kInfinity, divisor = 1.0;
-  if (kHasPointLights && (!kHasDirectionalLights || light.positionOrDirection.w == kPointLight)) {
-    vec3 v = light.positionOrDirection.xyz - hitPoint;
-    float distance = length(v);
-    wi = v / distance;
-    tMax = distance;
-    if (kHasAttenuation)
-      divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
-  } else {
-    wi = normalize(light.positionOrDirection.xyz);
-  }
+  float tMax;
+  vec3 arriving;
+  vec3 wi = towardLight(light, hitPoint, tMax, arriving);
   float cosSurface = dot(hitNormal, wi);
   if (!(cosSurface > 0.0)) return;
   vec3 f = analytic ? m.diffuse.rgb * kInvPi : brdf(m, hitNormal, wi, -rayDir);
-  vec3 c = throughput * f * (light.color.rgb / divisor) * cosSurface;
+  vec3 c = throughput * f * arriving * cosSurface;
   if (analytic)
     radiance += c;
   else if (any(notEqual(c, vec3(0.0))))
@@ -597,22 +569,11 @@ bool testAll(vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, bool shado
 }
 
 // The traversal of the current ray (kPhaseTrace: nearest hit) or shadow ray (kPhaseShadow:
-// any hit), as far as the step budget goes: interior nodes down to a leaf, then that leaf's
-// primitives, until the stack is empty (Aila and Laine's while-while loop), or with kTestAll
-// every primitive of the scene (testAll), the whole ray in one go. Each node is a
-// step of the budget. lavapipe runs the lanes of a SIMD vector through every branch of the
-// loop body that any of them takes, so a whole traversal stays inside this loop: the
-// shading code outside runs once per ray, not once per leaf.
+// any hit), as far as the step budget goes (traverseBvh), or with kTestAll every primitive of
+// the scene (testAll), the whole ray in one go. Then what follows.
 void traversalStep(inout uint step) {
-  bool shadow = phase == kPhaseShadow;
-  vec3 origin = shadow ? hitPoint : rayOrigin;
-  vec3 dir = shadow ? shadowDir : rayDir;
-  float tMin = shadow ? secondaryTMin(shadowCos) : rayTMin;
-  float tMax = shadow ? shadowTMax : bestT;
-  vec3 invDir = safeInverse(dir);
-  Shear sh;
-  if (kHasTriangles) sh = shearFor(dir);
-  bool blocked = false;
+  TracedRay r = tracedRay();
+  bool blocked;
   if (kTestAll) {
     // Every primitive, as one step per kMaxLeafPrims of them; a ray is never left half-tested,
     // so it waits for the next dispatch unless the steps left suffice or the dispatch just began.
@@ -620,63 +581,15 @@ void traversalStep(inout uint step) {
     if (step > 0u && step + cost > params.stepBudget) return;
     step += cost - 1u;
     sp = 0u;
-    blocked = testAll(origin, dir, sh, tMin, tMax, shadow);
-  }
-  while (!kTestAll && sp > 0u && step < params.stepBudget) {
-    --sp;
-    ++step;
-    uint entry = stack[sp];
-    float entryT = stackT[sp];
-    bool visit = entryT < tMax;   // false: entered beyond the nearest hit so far
-    // Down interior nodes: the nearer child the ray enters is the next node (in registers),
-    // the farther one is pushed; the order of visits is that of pushing both. Each node
-    // entered is a step.
-    while (visit && (entry & kStackLeafBit) == 0u && step < params.stepBudget) {
-      GpuBvhNode l = loadNode(entry), r = loadNode(entry + 1u);
-      float tl = boxEntry(l, origin, invDir, tMin, tMax);
-      float tr = boxEntry(r, origin, invDir, tMin, tMax);
-      bool leftFirst = tl <= tr;
-      float tNear = leftFirst ? tl : tr, tFar = leftFirst ? tr : tl;
-      if (tFar != kInfinity) {
-        stack[sp] = stackEntry(leftFirst ? r : l);
-        stackT[sp++] = tFar;
-      }
-      visit = tNear != kInfinity;
-      entry = stackEntry(leftFirst ? l : r);
-      entryT = tNear;
-      if (visit) ++step;
-    }
-    if (!visit) continue;
-    if ((entry & kStackLeafBit) == 0u) {   // out of steps: the node waits on the stack
-      stack[sp] = entry;
-      stackT[sp++] = entryT;
-      break;
-    }
-    uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
-    for (uint i = 0u; i < count; ++i) {
-      uint ref = loadPrimRef(first + i);
-      vec2 b;
-      float t = hitPrimitive(ref, origin, dir, sh, tMin, tMax, b);
-      if (t > 0.0) {
-        if (shadow) {
-          blocked = true;
-          break;
-        }
-        tMax = t;
-        bestT = t;
-        hitPrim = ref;
-        bestB1 = b.x;
-        bestB2 = b.y;
-      }
-    }
-    if (blocked) {
-      sp = 0u;
-      break;
-    }
+    Shear sh;
+    if (kHasTriangles) sh = shearFor(r.dir);
+    blocked = testAll(r.origin, r.dir, sh, r.tMin, r.tMax, r.shadow);
+  } else {
+    blocked = traverseBvh(r, step);
   }
   if (sp > 0u) return;   // out of steps: the next dispatch goes on from here
   ++step;                // what follows the traversal is a step of its own
-  if (shadow) {
+  if (r.shadow) {
     if (!blocked) radiance += pending;   // nothing in the way
     phase = kPhaseLight;
   } else if (hitPrim != kNoHit) {
@@ -689,59 +602,25 @@ void traversalStep(inout uint step) {
 // ---- suspension ----------------------------------------------------------------------------------
 
 void saveState(uint slot) {
-  states[slot].origin = vec4(rayOrigin, rayTMin);
-  states[slot].direction = vec4(rayDir, bestT);
-  states[slot].throughput = vec4(throughput, bestB1);
-  states[slot].radiance = vec4(radiance, bestB2);
+  saveTrace(slot);
+  states[slot].throughput = vec4(throughput, 0.0);
+  states[slot].radiance = vec4(radiance, 0.0);
   states[slot].pixelSum = vec4(pixelSum, lastPdf);
-  states[slot].hitPoint = vec4(hitPoint, hitTMin);
-  states[slot].hitNormal = vec4(hitNormal, hitGrazing);
-  states[slot].shadowDir = vec4(shadowDir, shadowTMax);
-  states[slot].pending = vec4(pending, shadowCos);
-  states[slot].phase = phase;
+  states[slot].pending = vec4(pending, 0.0);
   states[slot].bounce = bounce;
-  states[slot].lightIndex = lightIndex;
-  states[slot].stackSize = sp;
-  states[slot].hitPrim = hitPrim;
-  states[slot].hitMaterial = hitMaterial;
   states[slot].sampleIndex = sampleIndex;
-  for (uint i = 0u; i < sp; ++i) {
-    states[slot].stack[i] = stack[i];
-    states[slot].stackT[i] = stackT[i];
-  }
 }
 
 void loadState(uint slot) {
-  rayOrigin = states[slot].origin.xyz;
-  rayTMin = states[slot].origin.w;
-  rayDir = states[slot].direction.xyz;
-  bestT = states[slot].direction.w;
+  loadTrace(slot);
   throughput = states[slot].throughput.rgb;
-  bestB1 = states[slot].throughput.w;
   radiance = states[slot].radiance.rgb;
-  bestB2 = states[slot].radiance.w;
   pixelSum = states[slot].pixelSum.rgb;
   lastPdf = states[slot].pixelSum.w;
-  hitPoint = states[slot].hitPoint.xyz;
-  hitTMin = states[slot].hitPoint.w;
-  hitNormal = states[slot].hitNormal.xyz;
-  hitGrazing = states[slot].hitNormal.w;
-  shadowDir = states[slot].shadowDir.xyz;
-  shadowTMax = states[slot].shadowDir.w;
   pending = states[slot].pending.rgb;
-  shadowCos = states[slot].pending.w;
-  phase = states[slot].phase;
   bounce = states[slot].bounce;
-  lightIndex = states[slot].lightIndex;
-  sp = states[slot].stackSize;
-  hitPrim = states[slot].hitPrim;
-  hitMaterial = states[slot].hitMaterial;
   sampleIndex = states[slot].sampleIndex;
   keySample();
-  for (uint i = 0u; i < sp; ++i) {
-    stack[i] = states[slot].stack[i];
-    stackT[i] = states[slot].stackT[i];
-  }
 }
 
 void main() {

@@ -26,41 +26,30 @@ layout(constant_id = 5) const bool kHasAttenuation = true;
 layout(constant_id = 6) const bool kHasSpecular = true;
 layout(constant_id = 7) const bool kCutoff = true;
 
-#include "scene_reads.glsl"
-#include "intersect.glsl"
-
 layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance, w 1 once the pixel is done (see main)
-layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathState states[]; };   // one per invocation
+layout(std430, binding = kBindingPathStates) buffer PathStates { GpuWhittedState states[]; };   // one per invocation
 layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
 
 layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
 layout(push_constant) uniform Push { GpuPushConstants pc; };
 
+#include "scene_reads.glsl"
+#include "intersect.glsl"
+#include "traverse.glsl"
+#include "camera.glsl"
+#include "lights.glsl"
+
 // ---- per-invocation state (registers; saved to states[] only on suspension) -----------------
+// (the ray, its hit, the shadow ray and the traversal stack: traverse.glsl)
 uint tile;    // the tile of the band (8x8 pixels, row by row) whose pixel the invocation computes
 uint pixelX, pixelY;   // that pixel's column and row in the band (not saved: tile tells them)
 uint runEnd, bandRows;   // the end of the invocation's run of tiles; the band's rows
-vec3 rayOrigin, rayDir;
-float rayTMin, bestT, bestB1, bestB2;
-vec3 throughput, radiance, hitPoint, hitNormal, shadowDir, lightColor;
-float shadowTMax, nDotL;
-uint phase, depth, lightIndex, hitPrim, hitMaterial;
-// (the traversal stack, sp, hitTMin and hitGrazing: intersect.glsl)
+vec3 throughput, radiance;
+vec3 lightColor;   // of the current shadow ray: the light's colour over its attenuation
+uint depth;
 uint shadowRays = 0u, reflectionRays = 0u, nonFinite = 0u;
 
 // ---- the state machine's steps -----------------------------------------------------------------
-
-void startRay(vec3 origin, vec3 dir, float tMin) {
-  rayOrigin = origin;
-  rayDir = dir;
-  rayTMin = tMin;
-  bestT = kInfinity;
-  hitPrim = kNoHit;
-  sp = params.primCount > 0u ? 1u : 0u;   // an empty scene's root is an empty leaf: nothing to visit
-  stack[0] = params.rootEntry;
-  stackT[0] = 0.0;
-  phase = kPhaseTrace;
-}
 
 // The nearest hit is known: ambient and emission, then the lights one by one.
 void beginShading() {
@@ -113,40 +102,25 @@ void reflectOrFinish() {
 void lightStep(inout uint step) {
   while (phase == kPhaseLight && lightIndex < params.lightCount && step < params.stepBudget) {
     GpuLight light = loadLight(lightIndex);
-    vec3 toLight;
-    float divisor = 1.0;
-    shadowTMax = kInfinity;
-    if (kHasPointLights && (!kHasDirectionalLights || light.positionOrDirection.w == kPointLight)) {
-      vec3 v = light.positionOrDirection.xyz - hitPoint;
-      float distance = length(v);
-      toLight = v / distance;
-      shadowTMax = distance;
-      if (kHasAttenuation)
-        divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
-    } else {
-      toLight = light.positionOrDirection.xyz;
-    }
-    nDotL = dot(hitNormal, toLight);
-    if (!(nDotL > 0.0)) {   // a light behind the surface adds nothing (SPEC section 7)
+    float reach;
+    vec3 arriving;
+    vec3 toLight = towardLight(light, hitPoint, reach, arriving);
+    float nDotL = dot(hitNormal, toLight);
+    if (!(nDotL > 0.0)) {   // a light behind the surface adds nothing (doc/scene-format.md, "Shading")
       ++lightIndex;
       ++step;
       continue;
     }
     ++shadowRays;
-    shadowDir = toLight;
-    // Finite even for a tiny divisor, so that a zero material term times it stays 0, not NaN.
-    lightColor = clamp(light.color.rgb / divisor, -kInfinity, kInfinity);
-    sp = params.primCount > 0u ? 1u : 0u;
-    stack[0] = params.rootEntry;
-    stackT[0] = 0.0;
-    phase = kPhaseShadow;
+    lightColor = arriving;
+    startShadowTraversal(toLight, reach, nDotL);
   }
   if (phase == kPhaseLight && lightIndex >= params.lightCount) reflectOrFinish();
 }
 
 void addLightContribution() {
   GpuMaterial m = loadMaterial(hitMaterial);
-  vec3 lit = m.diffuse.rgb * nDotL;
+  vec3 lit = m.diffuse.rgb * shadowCos;
   if (kHasSpecular) {
     vec3 halfVector = normalize(shadowDir - rayDir);
     // At most 1, as it is exactly: float rounding may give 1 + 1e-7, and a high shininess would
@@ -161,58 +135,14 @@ void addLightContribution() {
 }
 
 // The traversal of the current ray (kPhaseTrace: nearest hit) or of a shadow ray
-// (kPhaseShadow: any hit), as far as the step budget goes: interior nodes down to a leaf, then
-// that leaf's primitives, until the stack is empty (Aila and Laine's while-while loop). One
-// function for both kinds, so that lanes of a SIMD vector in different phases run it once.
-// Each node is a step of the budget. lavapipe runs the lanes of a vector through every branch
-// of the loop body that any of them takes, so a whole traversal stays inside this loop: the
-// shading code outside runs once per ray, not once per leaf.
+// (kPhaseShadow: any hit), as far as the step budget goes (traverseBvh); one function for both
+// kinds, so that lanes of a SIMD vector in different phases run it once. Then what follows.
 void traversalStep(inout uint step) {
-  bool shadow = phase == kPhaseShadow;
-  vec3 origin = shadow ? hitPoint : rayOrigin;
-  vec3 dir = shadow ? shadowDir : rayDir;
-  float tMin = shadow ? secondaryTMin(nDotL) : rayTMin;
-  float tMax = shadow ? shadowTMax : bestT;
-  vec3 invDir = safeInverse(dir);
-  Shear sh;
-  if (kHasTriangles) sh = shearFor(dir);
-  bool blocked = false;
-  while (sp > 0u && step < params.stepBudget) {
-    while (nextIsInterior() && step < params.stepBudget) {
-      --sp;
-      ++step;
-      if (stackT[sp] < tMax) pushChildren(stack[sp], origin, invDir, tMin, tMax);
-    }
-    if (sp == 0u || step >= params.stepBudget) break;
-    --sp;
-    ++step;
-    if (stackT[sp] >= tMax) continue;   // entered beyond the nearest hit so far
-    uint entry = stack[sp];
-    uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
-    for (uint i = 0u; i < count; ++i) {
-      uint ref = loadPrimRef(first + i);
-      vec2 b;
-      float t = hitPrimitive(ref, origin, dir, sh, tMin, tMax, b);
-      if (t > 0.0) {
-        if (shadow) {
-          blocked = true;
-          break;
-        }
-        tMax = t;
-        bestT = t;
-        hitPrim = ref;
-        bestB1 = b.x;
-        bestB2 = b.y;
-      }
-    }
-    if (blocked) {
-      sp = 0u;
-      break;
-    }
-  }
+  TracedRay r = tracedRay();
+  bool blocked = traverseBvh(r, step);
   if (sp > 0u) return;   // out of steps: the next dispatch goes on from here
   ++step;                // what follows the traversal is a step of its own
-  if (shadow) {
+  if (r.shadow) {
     if (!blocked) addLightContribution();   // nothing in the way
     ++lightIndex;
     phase = kPhaseLight;
@@ -226,62 +156,29 @@ void traversalStep(inout uint step) {
 // ---- suspension ----------------------------------------------------------------------------------
 
 void saveState(uint slot) {
-  states[slot].origin = vec4(rayOrigin, rayTMin);
-  states[slot].direction = vec4(rayDir, bestT);
-  states[slot].throughput = vec4(throughput, bestB1);
-  states[slot].radiance = vec4(radiance, bestB2);
-  states[slot].hitPoint = vec4(hitPoint, hitTMin);
-  states[slot].hitNormal = vec4(hitNormal, hitGrazing);
-  states[slot].shadowDir = vec4(shadowDir, shadowTMax);
-  states[slot].lightColor = vec4(lightColor, nDotL);
-  states[slot].phase = phase;
+  saveTrace(slot);
+  states[slot].throughput = vec4(throughput, 0.0);
+  states[slot].radiance = vec4(radiance, 0.0);
+  states[slot].lightColor = vec4(lightColor, 0.0);
   states[slot].depth = depth;
-  states[slot].lightIndex = lightIndex;
-  states[slot].stackSize = sp;
-  states[slot].hitPrim = hitPrim;
-  states[slot].hitMaterial = hitMaterial;
-  states[slot].pixel = tile;
-  for (uint i = 0u; i < sp; ++i) states[slot].stack[i] = stack[i];
+  states[slot].tile = tile;
 }
 
 void loadState(uint slot) {
-  rayOrigin = states[slot].origin.xyz;
-  rayTMin = states[slot].origin.w;
-  rayDir = states[slot].direction.xyz;
-  bestT = states[slot].direction.w;
+  loadTrace(slot);
   throughput = states[slot].throughput.rgb;
-  bestB1 = states[slot].throughput.w;
   radiance = states[slot].radiance.rgb;
-  bestB2 = states[slot].radiance.w;
-  hitPoint = states[slot].hitPoint.xyz;
-  hitTMin = states[slot].hitPoint.w;
-  hitNormal = states[slot].hitNormal.xyz;
-  hitGrazing = states[slot].hitNormal.w;
-  shadowDir = states[slot].shadowDir.xyz;
-  shadowTMax = states[slot].shadowDir.w;
   lightColor = states[slot].lightColor.rgb;
-  nDotL = states[slot].lightColor.w;
-  phase = states[slot].phase;
   depth = states[slot].depth;
-  lightIndex = states[slot].lightIndex;
-  sp = states[slot].stackSize;
-  hitPrim = states[slot].hitPrim;
-  hitMaterial = states[slot].hitMaterial;
-  tile = states[slot].pixel;
-  for (uint i = 0u; i < sp; ++i) {
-    stack[i] = states[slot].stack[i];
-    stackT[i] = 0.0;   // entry distances are not saved: a resumed pixel only culls less
-  }
+  tile = states[slot].tile;
 }
 
 // ---- pixels ----------------------------------------------------------------------------------
 
-// The camera ray through the pixel's centre (SPEC section 3), in the full image's pixel
-// coordinates: a crop's pixels are those of the whole image.
+// The camera ray through the pixel's centre, in the full image's pixel coordinates.
 void startPixel() {
-  float a = (float(pixelX + params.originX) + 0.5) - 0.5 * float(params.fullWidth);
-  float b = 0.5 * float(params.fullHeight) - (float(pc.bandY0 + pixelY + params.originY) + 0.5);
-  vec3 dir = normalize(a * pc.cameraRight.xyz + b * pc.cameraUp.xyz - pc.cameraBack.xyz);
+  uvec2 pixel = uvec2(pixelX + params.originX, pc.bandY0 + pixelY + params.originY);
+  vec3 dir = cameraRayDirection(pixel, vec2(0.5), pc.cameraRight.xyz, pc.cameraUp.xyz, pc.cameraBack.xyz);
   throughput = vec3(1.0);
   radiance = vec3(0.0);
   depth = 0u;

@@ -84,9 +84,9 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   const std::uint32_t perInvocation = options.pixelsPerInvocation ? options.pixelsPerInvocation
                                       : cpuDevice                 ? gpu::kDefaultPixelsPerInvocation
                                                                   : 1u;
-  // One GpuPathState per invocation, shared by its perInvocation pixels; the workgroups of a
+  // One GpuWhittedState per invocation, shared by its perInvocation pixels; the workgroups of a
   // band each take a run of perInvocation adjacent 8x8 tiles.
-  const BandLayout layout = bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuPathState),
+  const BandLayout layout = bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuWhittedState),
                                        options.maxStateBytes, perInvocation);
   const std::uint32_t width = layout.width, height = layout.height;
   checkShaderLimits(scene);
@@ -97,7 +97,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   // Without a specular surface no mirror ray is ever traced.
   const gpu::GpuRenderParams params = renderParams(scene, layout, features.specular ? scene.maxDepth : 0);
   const SceneUpload upload(context, scene, SceneArrays::Whitted);
-  BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuPathState), params, options.stepBudget,
+  BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuWhittedState), params, options.stepBudget,
                    kWhittedFirstDispatchSteps);
   t.uploadSeconds = secondsSince(t0);
 

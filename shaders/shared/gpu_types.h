@@ -35,7 +35,7 @@ using uint = std::uint32_t;
 // the primitive that was hit (GpuTriangle, GpuSphere; host/scene/ray_offset.cpp):
 //  - Objects: each sphere, and each set of triangles connected through shared vertex
 //    positions (a mesh, a quad, a box). An object's size S is the diagonal of its box.
-//  - An object's offset is the course's kSecondaryRayTMin (1e-3, SPEC section 7) when S is
+//  - An object's offset is the course's kSecondaryRayTMin (1e-3; doc/scene-format.md, "Conventions") when S is
 //    within [kCourseSizeLow, kCourseSizeHigh], else 1e-3 * 10^k, k = the whole decades that
 //    bring S into that band (negative for small objects). Under scaling by 10^k it scales
 //    exactly for objects with S in [2.5, 6] (down) or [25, 60] (up), within 10x otherwise.
@@ -130,7 +130,7 @@ GPU_CONST float kBrdfPhong = 0.0f;
 GPU_CONST float kBrdfGgx = 1.0f;
 GPU_CONST float kNoQuadLight = -1.0f;   // GpuMaterial.emission.w of a surface that is no quad light
 
-// `quadLight` (SPEC-PATHTRACING section 2), in the scene-centred frame: the parallelogram
+// `quadLight` (doc/path-tracing.md, "Quad lights"), in the scene-centred frame: the parallelogram
 // a + u ab + v ac, u, v in [0, 1], emitting `radiance` on the side of n = normalize(cross(ac, ab)).
 // Its two triangles are also in the triangle array, with a material whose emission.w names it.
 struct GpuQuadLight {
@@ -143,7 +143,7 @@ struct GpuQuadLight {
 GPU_ASSERT_SIZE(GpuQuadLight, 80)
 GPU_CONST uint kQuadLightTexels = 5u;   // RGBA32UI texels of one GpuQuadLight (texel-buffer reads)
 
-// Path integrators (SPEC-PATHTRACING sections 3-4); the ids the shader and the host share.
+// Path integrators (doc/path-tracing.md, "Integrators"); the ids the shader and the host share.
 GPU_CONST uint kIntegratorRaytracer = 0u;
 GPU_CONST uint kIntegratorAnalyticDirect = 1u;
 GPU_CONST uint kIntegratorDirect = 2u;
@@ -175,7 +175,7 @@ GPU_CONST uint kRngSlotLightBase = 4u;        // + 2 * (light * lightsamples + k
 
 // How each backend turns these numbers into a path (each written on its own, to these rules,
 // so that the same seed gives the same paths up to float rounding):
-//  - Camera: a render of spp 1 samples the pixel centre (SPEC section 3); otherwise sample s
+//  - Camera: a render of spp 1 samples the pixel centre (doc/scene-format.md, "Camera"); otherwise sample s
 //    of pixel (x, y) is at (x + u, y + v), u, v = kRngPixelX, kRngPixelY, instead of +0.5.
 //  - A frame around a unit axis n: a = |n.x| > 0.9 ? (0, 1, 0) : (1, 0, 0),
 //    t = normalize(cross(a, n)), b = cross(n, t); local (x, y, z) is x t + y b + z n.
@@ -184,7 +184,7 @@ GPU_CONST uint kRngSlotLightBase = 4u;        // + 2 * (light * lightsamples + k
 //    around r; GGX: theta_h = atan(alpha sqrt(u) / sqrt(1 - u)), phi = 2 pi v, around n, and
 //    w_i = 2 (w_o . h) h - w_o; (x, y) = sin(theta) (cos phi, sin phi).
 //  - BRDF sampling picks the specular lobe when the kRngSlotLobe number is below t
-//    (SPEC-PATHTRACING section 4).
+//    (doc/path-tracing.md, "Estimators").
 //  - Light sample k of N of quad light j: (s, t) = (u, v) of its two slots; stratified:
 //    ((k % m + u) / m, (k / m + v) / m), m = sqrt(N); the point a + s ab + t ac.
 //  - Emissive triangles and spheres (`emission`, not quad lights) are one more light for
@@ -254,7 +254,7 @@ GPU_CONST uint kBindingMaterials = 4u;
 GPU_CONST uint kBindingBvhNodes = 5u;
 GPU_CONST uint kBindingPrimRefs = 6u;
 GPU_CONST uint kBindingPixels = 7u;       // output: one vec4 per pixel of the band, rgb = linear radiance, w = 1 when done (0: suspended)
-GPU_CONST uint kBindingPathStates = 8u;   // suspended state: a GpuPathState per invocation (raytrace.comp) or per pixel of the band (pathtrace.comp)
+GPU_CONST uint kBindingPathStates = 8u;   // suspended state: a GpuWhittedState per invocation (raytrace.comp) or per pixel of the band (pathtrace.comp)
 GPU_CONST uint kBindingCounters = 9u;     // GpuCounters
 GPU_CONST uint kBindingParams = 10u;      // GpuRenderParams (a uniform buffer)
 GPU_CONST uint kBindingCount = 11u;
@@ -285,7 +285,7 @@ GPU_CONST uint kWorkgroupSize = 8u;       // 8x8 pixels per workgroup (lavapipe:
 // llvmpipe ends a shader invocation silently after 65,535 loop iterations in all. One step
 // of the shader's state machine runs at most 1 + kMaxLeafPrims loop iterations, so a budget
 // of this many steps per dispatch stays well inside the limit; an invocation (raytrace.comp)
-// or pixel (pathtrace.comp) that needs more is suspended (its GpuPathState saved) and resumed
+// or pixel (pathtrace.comp) that needs more is suspended (its GpuWhittedState or GpuPathTracerState saved) and resumed
 // by the next dispatch.
 GPU_CONST uint kDefaultStepBudget = 8192u;
 GPU_CONST uint kMaxLeafPrims = 4u;
@@ -342,8 +342,8 @@ struct GpuRenderParams {
   uint primCount;           // primitive references in the BVH; 0: no geometry (the root is an empty leaf)
   uint rootEntry;           // the root as a traversal-stack entry (above)
   // A crop computes only the pixels [originX, originX + width) x [originY, originY + height)
-  // of the full image; camera rays use the full image's size and pixel coordinates (SPEC
-  // section 3), so a crop's pixels are those of a full render. The whole image: origin 0 0,
+  // of the full image; camera rays use the full image's size and pixel coordinates
+  // (doc/scene-format.md, "Camera"), so a crop's pixels are those of a full render. The whole image: origin 0 0,
   // full size = width x height.
   uint originX;
   uint originY;
@@ -365,34 +365,47 @@ struct GpuCounters {
 };
 GPU_ASSERT_SIZE(GpuCounters, 16)
 
-// Everything a suspended pixel needs to continue where it stopped (raytrace.comp: a suspended
-// invocation, whose pixel is `pixel`).
-struct GpuPathState {
-  vec4 origin;              // current ray (camera or mirror): xyz origin, w = tMin
+// What both compute shaders save of a suspended traversal (traverse.glsl): the current ray and
+// its nearest hit so far, the shaded hit and the shadow ray leaving it, the phase of the state
+// machine and the traversal stack with each entry's distance (so that a resumed traversal is
+// the same as one that was never suspended).
+struct GpuTraceState {
+  vec4 origin;              // current ray (camera, mirror or scattered): xyz origin, w = tMin
   vec4 direction;           // xyz unit direction, w = nearest t so far
-  vec4 throughput;          // rgb weight of the current segment, w = barycentric b1 of the nearest hit
-  vec4 radiance;            // rgb sum so far, w = barycentric b2 of the nearest hit
   vec4 hitPoint;            // xyz of the shaded hit, w = the offset of its secondary rays
   vec4 hitNormal;           // xyz unit shading normal, w = kGrazingPerMagnitude * the hit's magnitude
   vec4 shadowDir;           // xyz shadow ray direction, w = its tMax
-  vec4 lightColor;          // rgb light colour / attenuation, w = N.L
-  uint phase;
-  uint depth;               // mirror reflections so far
-  uint lightIndex;
-  uint stackSize;
+  float hitB1, hitB2;       // barycentric weights of p1 and p2 of the nearest hit so far (triangles)
+  float shadowCos;          // N . shadowDir at the shaded hit
+  uint phase;               // kPhaseTrace, kPhaseLight or kPhaseShadow
   uint hitPrim;             // primRef of the nearest hit so far, or kNoHit
-  uint hitMaterial;
-  uint pixel;               // raytrace.comp: the tile of the band whose pixel the invocation computes
-  uint pad1;                // size 160
+  uint hitMaterial;         // of the shaded hit
+  uint lightIndex;          // the shader's next light (raytrace.comp) or light sample (pathtrace.comp)
+  uint stackSize;           // size 112
   uint stack[kTraversalStackSize];
+  float stackT[kTraversalStackSize];
 };
-GPU_ASSERT_SIZE(GpuPathState, 160 + 4 * 96)
-GPU_ASSERT_OFFSET(GpuPathState, phase, 128)
-GPU_ASSERT_OFFSET(GpuPathState, stack, 160)
+GPU_ASSERT_SIZE(GpuTraceState, 112 + 8 * 96)
+GPU_ASSERT_OFFSET(GpuTraceState, phase, 92)
+GPU_ASSERT_OFFSET(GpuTraceState, stack, 112)
+GPU_ASSERT_OFFSET(GpuTraceState, stackT, 112 + 4 * 96)
+
+// Everything a suspended invocation of raytrace.comp needs to continue where it stopped.
+struct GpuWhittedState {
+  vec4 throughput;          // rgb weight of the current segment, w unused
+  vec4 radiance;            // rgb sum so far, w unused
+  vec4 lightColor;          // rgb light colour / attenuation of the current shadow ray, w unused
+  uint depth;               // mirror reflections so far
+  uint tile;                // the tile of the band whose pixel the invocation computes
+  uint pad0, pad1;          // size 64
+  GpuTraceState trace;
+};
+GPU_ASSERT_SIZE(GpuWhittedState, 64 + 112 + 8 * 96)
+GPU_ASSERT_OFFSET(GpuWhittedState, trace, 64)
 
 GPU_CONST uint kNoHit = 0xFFFFFFFFu;
 
-// ---- pathtrace.comp: the path integrators (SPEC-PATHTRACING sections 2-4) ----------------------
+// ---- pathtrace.comp: the path integrators (doc/path-tracing.md) -------------------------------
 // It reads the scene at the bindings of raytrace.comp (kBindingTriangles .. kBindingPrimRefs),
 // and shares kBindingPathStates, kBindingCounters and kBindingParams (GpuRenderParams: sizes,
 // bands, tiles, the BVH root) with it. At kBindingPixels it adds each pixel's samples into a
@@ -456,7 +469,7 @@ struct GpuPathParams {
   uint nextEvent;           // kNextEventOff, On or Mis
   uint sampling;            // kSamplingHemisphere, Cosine or Brdf
   uint russianRoulette;     // 0 or 1
-  uint maxDepth;            // SPEC-PATHTRACING section 4's D, or kUnlimitedDepth
+  uint maxDepth;            // D of doc/path-tracing.md, "Depth", or kUnlimitedDepth
   uint lightSamples;        // N per quad light per shading point
   uint lightStrata;         // sqrt(N) with `lightstratify on`, else 0
   uint quadLightCount;
@@ -488,30 +501,17 @@ GPU_ASSERT_SIZE(GpuPathPush, 16)
 
 // Everything a suspended pixel of pathtrace.comp needs to continue where it stopped.
 struct GpuPathTracerState {
-  vec4 origin;              // current ray (camera or scattered): xyz origin, w = tMin
-  vec4 direction;           // xyz unit direction, w = nearest t so far
-  vec4 throughput;          // rgb path throughput T, w = barycentric b1 of the nearest hit
-  vec4 radiance;            // rgb radiance of this sample so far, w = barycentric b2
+  vec4 throughput;          // rgb path throughput T, w unused
+  vec4 radiance;            // rgb radiance of this sample so far, w unused
   vec4 pixelSum;            // rgb sum of the pixel's finished samples, w = pdf of the last scatter (MIS)
-  vec4 hitPoint;            // xyz of the shaded hit, w = the offset of its secondary rays
-  vec4 hitNormal;           // xyz unit shading normal, w = kGrazingPerMagnitude * the hit's magnitude
-  vec4 shadowDir;           // xyz shadow ray direction, w = its tMax
-  vec4 pending;             // rgb what the shadow ray adds when nothing blocks it, w = cos at the hit
-  uint phase;               // kPhaseTrace, kPhaseLight, kPhaseShadow or kPhaseDone
+  vec4 pending;             // rgb what the shadow ray adds when nothing blocks it, w unused
   uint bounce;              // path vertex: 0 at the camera ray's hit
-  uint lightIndex;          // the next light sample of the vertex (quad lights' samples, then lights, then emitters')
-  uint stackSize;
-  uint hitPrim;             // primRef of the nearest hit so far, or kNoHit
-  uint hitMaterial;
   uint sampleIndex;         // samples of this render finished
-  uint pad0;                // size 176
-  uint stack[kTraversalStackSize];
-  float stackT[kTraversalStackSize];   // saved too, so that a resumed traversal is the same
+  uint pad0, pad1;          // size 80
+  GpuTraceState trace;
 };
-GPU_ASSERT_SIZE(GpuPathTracerState, 176 + 8 * 96)
-GPU_ASSERT_OFFSET(GpuPathTracerState, phase, 144)
-GPU_ASSERT_OFFSET(GpuPathTracerState, stack, 176)
-GPU_ASSERT_OFFSET(GpuPathTracerState, stackT, 176 + 4 * 96)
+GPU_ASSERT_SIZE(GpuPathTracerState, 80 + 112 + 8 * 96)
+GPU_ASSERT_OFFSET(GpuPathTracerState, trace, 80)
 
 #ifdef __cplusplus
 }  // namespace gpu

@@ -44,6 +44,11 @@ TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
   auto quadLights = patterned<gpu::GpuQuadLight>(8);
   auto pathParams = patterned<gpu::GpuPathParams>(9);
   auto emitters = patterned<gpu::GpuEmitter>(10);
+  auto whittedStates = patterned<gpu::GpuWhittedState>(11);
+  auto pathStates = patterned<gpu::GpuPathTracerState>(12);
+  auto counters = patterned<gpu::GpuCounters>(13);
+  auto pathPush = patterned<gpu::GpuPathPush>(14);
+  auto push = patterned<gpu::GpuPushConstants>(15);
   std::vector<std::uint32_t> expected;
   appendSecond(expected, triangles);
   appendSecond(expected, normals);
@@ -57,25 +62,34 @@ TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
   const auto* pathWords = reinterpret_cast<const std::uint32_t*>(&pathParams[0]);
   expected.insert(expected.end(), pathWords, pathWords + sizeof(gpu::GpuPathParams) / 4);
   appendSecond(expected, emitters);
+  appendSecond(expected, whittedStates);
+  appendSecond(expected, pathStates);
+  appendSecond(expected, counters);
+  appendSecond(expected, pathPush);
+  const auto* pushWords = reinterpret_cast<const std::uint32_t*>(&push[0]);
+  expected.insert(expected.end(), pushWords, pushWords + sizeof(gpu::GpuPushConstants) / 4);
 
   Buffer b0 = Buffer::withContents(*context, triangles), b1 = Buffer::withContents(*context, normals),
          b2 = Buffer::withContents(*context, spheres), b3 = Buffer::withContents(*context, lights),
          b4 = Buffer::withContents(*context, materials), b5 = Buffer::withContents(*context, nodes),
          b6 = Buffer::withContents(*context, params), b8 = Buffer::withContents(*context, quadLights),
-         b9 = Buffer::withContents(*context, pathParams), b10 = Buffer::withContents(*context, emitters);
+         b9 = Buffer::withContents(*context, pathParams), b10 = Buffer::withContents(*context, emitters),
+         b11 = Buffer::withContents(*context, whittedStates), b12 = Buffer::withContents(*context, pathStates),
+         b13 = Buffer::withContents(*context, counters), b14 = Buffer::withContents(*context, pathPush);
   Buffer out(*context, expected.size() * 4, true);
-  std::vector<VkDescriptorType> types(11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  std::vector<VkDescriptorType> types(15, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
   types[6] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   types[9] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  ComputePipeline probe(*context, kLayoutProbeSpirv, sizeof(kLayoutProbeSpirv), types, {}, 0);
-  const Buffer* all[] = {&b0, &b1, &b2, &b3, &b4, &b5, &b6, &out, &b8, &b9, &b10};
-  for (std::uint32_t i = 0; i < 11; ++i) {
+  ComputePipeline probe(*context, kLayoutProbeSpirv, sizeof(kLayoutProbeSpirv), types, {},
+                        sizeof(gpu::GpuPushConstants));
+  const Buffer* all[] = {&b0, &b1, &b2, &b3, &b4, &b5, &b6, &out, &b8, &b9, &b10, &b11, &b12, &b13, &b14};
+  for (std::uint32_t i = 0; i < 15; ++i) {
     if (i == 6 || i == 9)
       probe.bindUniform(i, *all[i]);
     else
       probe.bind(i, *all[i]);
   }
-  probe.run(nullptr, 1);
+  probe.run(push.data(), 1);
   std::vector<std::uint32_t> got(expected.size());
   std::memcpy(got.data(), out.mapped(), got.size() * 4);
   for (std::size_t i = 0; i < expected.size(); ++i) ASSERT_EQ(got[i], expected[i]) << "word " << i;

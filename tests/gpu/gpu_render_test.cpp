@@ -208,7 +208,7 @@ TEST(GpuLoopBudget, InvocationsTakingSeveralPixelsChangeNoPixel) {
       const Image expected = encodeImage(renderVulkan(*context, flat, single, &expectedRays, nullptr), 1.0);
       for (std::uint32_t perInvocation : {5u, 64u, 100000u}) {
         for (std::uint32_t budget : {0u, 3u}) {
-          for (std::size_t stateBytes : {std::size_t{64} << 20, sizeof(gpu::GpuPathState) * 64}) {
+          for (std::size_t stateBytes : {std::size_t{64} << 20, sizeof(gpu::GpuWhittedState) * 64}) {
             VulkanOptions options;
             options.pixelsPerInvocation = perInvocation;
             options.stepBudget = budget;

@@ -18,11 +18,25 @@ layout(std430, binding = 7) writeonly buffer Out { uint words[]; };
 layout(std430, binding = 8) readonly buffer QuadLights { GpuQuadLight quadLights[]; };
 layout(std140, binding = 9) uniform PathParams { GpuPathParams pathParams; };   // as pathtrace.comp reads it
 layout(std430, binding = 10) readonly buffer Emitters { GpuEmitter emitters[]; };
+layout(std430, binding = 11) readonly buffer WhittedStates { GpuWhittedState whittedStates[]; };
+layout(std430, binding = 12) readonly buffer PathTracerStates { GpuPathTracerState pathStates[]; };
+layout(std430, binding = 13) readonly buffer Counters { GpuCounters counters[]; };
+// pathtrace.comp's push constants, as std430 (the layout of a push constant block) in a buffer:
+// a shader has one push constant block, and this probe's holds raytrace.comp's.
+layout(std430, binding = 14) readonly buffer PathPush { GpuPathPush pathPush[]; };
+layout(push_constant) uniform Push { GpuPushConstants pc; };   // as raytrace.comp reads it
 
 uint n = 0u;
 void put(float f) { words[n++] = floatBitsToUint(f); }
 void put(uint u) { words[n++] = u; }
 void put(vec4 v) { put(v.x); put(v.y); put(v.z); put(v.w); }
+void put(GpuTraceState t) {
+  put(t.origin); put(t.direction); put(t.hitPoint); put(t.hitNormal); put(t.shadowDir);
+  put(t.hitB1); put(t.hitB2); put(t.shadowCos); put(t.phase);
+  put(t.hitPrim); put(t.hitMaterial); put(t.lightIndex); put(t.stackSize);
+  for (uint i = 0u; i < kTraversalStackSize; ++i) put(t.stack[i]);
+  for (uint i = 0u; i < kTraversalStackSize; ++i) put(t.stackT[i]);
+}
 
 void main() {
   // Element 1 of each array, so that the array stride is checked as well as the offsets.
@@ -55,4 +69,18 @@ void main() {
   put(pp.sphereCount); put(pp.pad0); put(pp.pad1); put(pp.pad2);
   GpuEmitter e = emitters[1];
   put(e.primRef); put(e.cdf);
+  GpuWhittedState w = whittedStates[1];
+  put(w.throughput); put(w.radiance); put(w.lightColor); put(w.depth); put(w.tile); put(w.pad0); put(w.pad1);
+  put(w.trace);
+  GpuPathTracerState ps = pathStates[1];
+  put(ps.throughput); put(ps.radiance); put(ps.pixelSum); put(ps.pending);
+  put(ps.bounce); put(ps.sampleIndex); put(ps.pad0); put(ps.pad1);
+  put(ps.trace);
+  GpuCounters c = counters[1];
+  put(c.suspended); put(c.shadowRays); put(c.reflectionRays); put(c.nonFinite);
+  GpuPathPush pp2 = pathPush[1];
+  put(pp2.bandY0); put(pp2.resume); put(pp2.pad0); put(pp2.pad1);
+  // The push constants: one block, not an array.
+  put(pc.cameraOrigin); put(pc.cameraRight); put(pc.cameraUp); put(pc.cameraBack);
+  put(pc.cutoffBound); put(pc.cutoffSpecular); put(pc.bandY0); put(pc.resume); put(pc.pad0); put(pc.pad1);
 }
