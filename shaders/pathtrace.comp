@@ -81,9 +81,6 @@ bool russianRoulette() {
 bool stratified() { return kSpecStratified != kPathSpecFromParams ? kSpecStratified != 0u : path.lightStrata > 0u; }
 bool jitter() { return kSpecJitter != kPathSpecFromParams ? kSpecJitter != 0u : path.jitter != 0u; }
 
-const float kPi = 3.14159265358979;
-const float kInvPi = 0.318309886183791;
-
 // ---- per-pixel state (registers; saved to states[] only on suspension) ----------------------
 // (the ray, its hit, the shadow ray and the traversal stack: traverse.glsl)
 vec3 throughput;       // T: the path's weight up to the current vertex
@@ -103,106 +100,7 @@ float random(uint dimension) { return rngUniformKeyed(sampleKey, dimension); }
 // The number of `slot` at the current path vertex.
 float randomAt(uint slot) { return random(rngDimension(bounce, slot)); }
 
-// pow(x, s) for x >= 0 as C defines it: pow(0, 0) = 1 (GLSL leaves pow(0, s) undefined).
-float powSafe(float x, float s) { return x > 0.0 ? pow(x, s) : (s == 0.0 ? 1.0 : 0.0); }
-float average(vec3 c) { return (c.r + c.g + c.b) / 3.0; }
-
-// The direction at polar angle theta (sine, cosine) and azimuth phi around the unit axis n,
-// in the frame of gpu_types.h.
-vec3 aroundAxis(vec3 n, float sinTheta, float cosTheta, float phi) {
-  vec3 a = abs(n.x) > 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-  vec3 t = normalize(cross(a, n));
-  vec3 b = cross(n, t);
-  return sinTheta * cos(phi) * t + sinTheta * sin(phi) * b + cosTheta * n;
-}
-
-// ---- BRDFs (doc/path-tracing.md, "BRDFs") ------------------------------------------------------
-// Material w fields: ambient.w = model, diffuse.w = GGX alpha, specular.w = Phong exponent.
-
-bool isGgx(GpuMaterial m) { return kHasGgx && m.ambient.w == kBrdfGgx; }
-
-// GGX's D, with cos^4 (a^2 + tan^2) written as (a^2 cos^2 + sin^2)^2 (no division by cos).
-// Roughness 0 makes D a delta that no sampled or light direction hits: 0 (not 0 / 0).
-float ggxD(float alpha, float nDotH) {
-  float a2 = alpha * alpha, c2 = nDotH * nDotH;
-  if (!(nDotH > 0.0) || a2 == 0.0) return 0.0;
-  float d = a2 * c2 + (1.0 - c2);
-  return a2 / (kPi * d * d);
-}
-
-// Smith's G1 for a direction at cos = n.v > 0.
-float ggxG1(float alpha, float nDotV) {
-  float c2 = nDotV * nDotV;
-  float tan2 = (1.0 - c2) / c2;
-  return 2.0 / (1.0 + sqrt(1.0 + alpha * alpha * tan2));
-}
-
-// f(w_i, w_o), w_o toward the viewer, w_i toward the light; 0 unless both lie on the side of n.
-vec3 brdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
-  float nDotI = dot(n, wi), nDotO = dot(n, wo);
-  if (!(nDotI > 0.0 && nDotO > 0.0)) return vec3(0.0);
-  vec3 f = m.diffuse.rgb * kInvPi;
-  if (isGgx(m)) {
-    float alpha = m.diffuse.w;
-    vec3 h = normalize(wi + wo);
-    float d = ggxD(alpha, dot(n, h));
-    float g = ggxG1(alpha, nDotI) * ggxG1(alpha, nDotO);
-    vec3 fresnel = m.specular.rgb + (1.0 - m.specular.rgb) * pow(1.0 - clamp(dot(wi, h), 0.0, 1.0), 5.0);
-    f += fresnel * (g * d / (4.0 * nDotI * nDotO));
-  } else {
-    float s = m.specular.w;
-    vec3 r = 2.0 * nDotO * n - wo;
-    f += m.specular.rgb * ((s + 2.0) / (2.0 * kPi) * powSafe(clamp(dot(r, wi), 0.0, 1.0), s));   // (rounding: never above 1)
-  }
-  return f;
-}
-
-// The probability of the specular lobe under `importancesampling brdf` (doc/path-tracing.md, "Estimators").
-float specularLobeChance(GpuMaterial m) {
-  float kd = average(m.diffuse.rgb), ks = average(m.specular.rgb);
-  float t = kd + ks > 0.0 ? ks / (kd + ks) : 0.0;
-  return isGgx(m) ? max(0.25, t) : t;
-}
-
-// The solid-angle pdf with which the scatter step picks w_i.
-float scatterPdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
-  float nDotI = dot(n, wi);
-  if (!(nDotI > 0.0)) return 0.0;
-  if (sampling() == kSamplingHemisphere) return 0.5 * kInvPi;
-  if (sampling() == kSamplingCosine) return nDotI * kInvPi;
-  float t = specularLobeChance(m);
-  float specular;
-  if (isGgx(m)) {
-    vec3 h = normalize(wi + wo);
-    float hDotI = dot(h, wi);
-    specular = hDotI > 0.0 ? ggxD(m.diffuse.w, dot(n, h)) * dot(n, h) / (4.0 * hDotI) : 0.0;
-  } else {
-    float s = m.specular.w;
-    vec3 r = 2.0 * dot(n, wo) * n - wo;
-    specular = (s + 1.0) / (2.0 * kPi) * powSafe(clamp(dot(r, wi), 0.0, 1.0), s);
-  }
-  return (1.0 - t) * nDotI * kInvPi + t * specular;
-}
-
-// Draws w_i at the current vertex (the rules of gpu_types.h).
-vec3 sampleDirection(GpuMaterial m, vec3 n, vec3 wo) {
-  float u = randomAt(kRngSlotDirectionU), v = randomAt(kRngSlotDirectionV);
-  float phi = 2.0 * kPi * v;
-  if (sampling() == kSamplingHemisphere) return aroundAxis(n, sqrt(max(1.0 - u * u, 0.0)), u, phi);
-  if (sampling() == kSamplingBrdf && randomAt(kRngSlotLobe) < specularLobeChance(m)) {
-    if (isGgx(m)) {
-      float alpha = m.diffuse.w;
-      float tanTheta = alpha * sqrt(u) / sqrt(1.0 - u);
-      float cosTheta = 1.0 / sqrt(1.0 + tanTheta * tanTheta);
-      vec3 h = aroundAxis(n, tanTheta * cosTheta, cosTheta, phi);
-      return 2.0 * dot(wo, h) * h - wo;
-    }
-    float z = pow(u, 1.0 / (m.specular.w + 1.0));
-    vec3 r = 2.0 * dot(n, wo) * n - wo;
-    return aroundAxis(r, sqrt(max(1.0 - z * z, 0.0)), z, phi);
-  }
-  return aroundAxis(n, sqrt(u), sqrt(1.0 - u), phi);   // cosine
-}
+#include "brdf.glsl"   // (after sampling() and randomAt(), which it uses)
 
 // ---- analyticdirect: the closed form (doc/path-tracing.md, "Integrators") ------------------------
 
@@ -268,7 +166,7 @@ float emitterHitPdf(GpuMaterial m) {
 // The least t of a ray leaving point p of a primitive whose offset is primitiveOffset at
 // |N.dir| = cosine (the policy of gpu_types.h, as setSecondaryOffsets and secondaryTMin).
 float offsetAt(float primitiveOffset, vec3 p, float cosine) {
-  vec3 a = max(abs(p), abs(p - path.cameraOrigin.xyz));
+  vec3 a = max(abs(p), abs(p - path.camera.origin.xyz));
   float magnitude = max(max(a.x, a.y), a.z);
   return max(max(primitiveOffset, kOffsetPerMagnitude * magnitude), kGrazingPerMagnitude * magnitude / max(cosine, 1e-30));
 }
@@ -283,13 +181,12 @@ void startCamera() {
     u = random(kRngPixelX);
     v = random(kRngPixelY);
   }
-  vec3 dir = cameraRayDirection(uvec2(pixelX, pixelY), vec2(u, v), path.cameraRight.xyz, path.cameraUp.xyz,
-                                path.cameraBack.xyz);
+  vec3 dir = cameraRayDirection(path.camera, uvec2(pixelX, pixelY), vec2(u, v));
   throughput = vec3(1.0);
   radiance = vec3(0.0);
   bounce = 0u;
   lastPdf = 0.0;
-  startRay(path.cameraOrigin.xyz, dir, 0.0);
+  startRay(path.camera.origin.xyz, dir, 0.0);
 }
 
 // The sample is over. The steps that end it only say so, and the main loop calls endSample
@@ -318,7 +215,7 @@ uint quadLightSamples() {
 // The nearest hit is known: its emission, then the lights (kPhaseLight), or the end of the path.
 void beginShading() {
   hitPoint = rayOrigin + bestT * rayDir;
-  surfaceAt(hitPrim, rayOrigin, rayDir, bestT, vec2(bestB1, bestB2), hitPoint, path.cameraOrigin.xyz, hitNormal,
+  surfaceAt(hitPrim, rayOrigin, rayDir, bestT, vec2(bestB1, bestB2), hitPoint, path.camera.origin.xyz, hitNormal,
             hitMaterial);
   GpuMaterial m = loadMaterial(hitMaterial);
   if (kHasQuadLights && m.emission.w != kNoQuadLight) {

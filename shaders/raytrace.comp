@@ -54,7 +54,7 @@ uint shadowRays = 0u, reflectionRays = 0u, nonFinite = 0u;
 // The nearest hit is known: ambient and emission, then the lights one by one.
 void beginShading() {
   hitPoint = rayOrigin + bestT * rayDir;
-  surfaceAt(hitPrim, rayOrigin, rayDir, bestT, vec2(bestB1, bestB2), hitPoint, pc.cameraOrigin.xyz, hitNormal,
+  surfaceAt(hitPrim, rayOrigin, rayDir, bestT, vec2(bestB1, bestB2), hitPoint, pc.camera.origin.xyz, hitNormal,
             hitMaterial);
   GpuMaterial m = loadMaterial(hitMaterial);
   radiance += throughput * (m.ambient.rgb + m.emission.rgb);
@@ -62,19 +62,19 @@ void beginShading() {
   phase = kPhaseLight;
 }
 
-// The exactness cut-off (GpuPushConstants): true when the rest of a path whose next segment
+// The exactness cut-off (GpuCutoff): true when the rest of a path whose next segment
 // has weight `weight` and is segment `nextDepth` cannot change any byte of the pixel, as the
 // output encodes it (host/image/encode.h: floor(clamp(c, 0, 1) * 255) in float, gamma 1).
 bool restCannotChangePixel(vec3 weight, uint nextDepth) {
-  bool nonNegative = pc.cutoffBound.w != 0.0;
+  bool nonNegative = pc.cutoff.bound.w != 0.0;
   if (nonNegative && all(greaterThanEqual(radiance, vec3(1.0)))) return true;   // saturated
   // 1 + s + ... + s^(n-1) for the n segments left: at most n, and at most 1 / (1 - s) when
   // s < 1 (cheaper than the exact sum, and still an upper bound).
   float n = float(params.maxDepth - nextDepth + 1u);
-  vec3 s = pc.cutoffSpecular.rgb;
+  vec3 s = pc.cutoff.specular.rgb;
   vec3 series = mix(vec3(n), min(vec3(n), 1.0 / max(1.0 - s, vec3(1e-30))), lessThan(s, vec3(1.0)));
   // A margin for float rounding in the sums the bound stands for.
-  vec3 reach = abs(weight) * pc.cutoffBound.rgb * series * 1.001 + 1e-6;
+  vec3 reach = abs(weight) * pc.cutoff.bound.rgb * series * 1.001 + 1e-6;
   if (!all(lessThan(reach, vec3(kInfinity)))) return false;
   vec3 low = nonNegative ? radiance : radiance - reach, high = radiance + reach;
   vec3 lowBytes = floor(clamp(low, 0.0, 1.0) * 255.0), highBytes = floor(clamp(high, 0.0, 1.0) * 255.0);
@@ -178,11 +178,11 @@ void loadState(uint slot) {
 // The camera ray through the pixel's centre, in the full image's pixel coordinates.
 void startPixel() {
   uvec2 pixel = uvec2(pixelX + params.originX, pc.bandY0 + pixelY + params.originY);
-  vec3 dir = cameraRayDirection(pixel, vec2(0.5), pc.cameraRight.xyz, pc.cameraUp.xyz, pc.cameraBack.xyz);
+  vec3 dir = cameraRayDirection(pc.camera, pixel, vec2(0.5));
   throughput = vec3(1.0);
   radiance = vec3(0.0);
   depth = 0u;
-  startRay(pc.cameraOrigin.xyz, dir, 0.0);
+  startRay(pc.camera.origin.xyz, dir, 0.0);
 }
 
 // The lane's pixel in `tile`: whether it lies inside the band (the last tiles of a row or of

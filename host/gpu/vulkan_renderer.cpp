@@ -57,10 +57,10 @@ Features sceneFeatures(const GpuScene& scene, bool specialize) {
 // Whether the exactness cut-off can stop some path at least two bounces early: the first
 // depth d at which a path of the largest weight (s^d) cannot change a byte any more, from the
 // same bounds the shader uses, is below maxdepth - 1.
-bool cutoffPays(const gpu::GpuPushConstants& p, std::uint32_t maxDepth) {
+bool cutoffPays(const gpu::GpuCutoff& p, std::uint32_t maxDepth) {
   if (maxDepth < 2) return false;
-  const float bound[3] = {p.cutoffBound.x, p.cutoffBound.y, p.cutoffBound.z};
-  const float spec[3] = {p.cutoffSpecular.x, p.cutoffSpecular.y, p.cutoffSpecular.z};
+  const float bound[3] = {p.bound.x, p.bound.y, p.bound.z};
+  const float spec[3] = {p.specular.x, p.specular.y, p.specular.z};
   for (int c = 0; c < 3; ++c)   // a weight that never shrinks never gets cut (and maxdepth may be 10^6)
     if (spec[c] >= 1.0f && bound[c] > 0.0f) return false;
   for (std::uint32_t d = 1; d + 1 < maxDepth; ++d) {
@@ -113,7 +113,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   // Unspecialized (everything compiled in), Auto means on.
   const bool cutoff = options.cutoff == Cutoff::On ||
                       (options.cutoff == Cutoff::Auto &&
-                       (!options.specialize || (features.specular && cutoffPays(scene.push, scene.maxDepth))));
+                       (!options.specialize || (features.specular && cutoffPays(scene.cutoff, scene.maxDepth))));
   spec[gpu::kSpecCutoff] = cutoff;
   if (!cutoff) t.leftOut += std::string(t.leftOut.empty() ? "" : ", ") + "exactness cut-off";
   // Texel reads where every scene buffer fits the device's texel-count limit.
@@ -134,7 +134,9 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   image.samples = options.sampleCount;   // the Whitted model: the mean of identical samples
   RadianceImage rowsImage;
   rowsImage.samples = options.sampleCount;
-  gpu::GpuPushConstants push = scene.push;
+  gpu::GpuPushConstants push{};
+  push.camera = scene.camera;
+  push.cutoff = scene.cutoff;
   BandHooks hooks{options.stop, options.progress,
                   [&](std::uint32_t y0, std::uint32_t rows) {
                     if (!options.rows) return band.readRows(rows, 1.0f, image, static_cast<int>(y0));

@@ -42,28 +42,28 @@ gpu::vec4 f4(const dvec3& v, float w = 0.0f) {
 }
 
 // The camera basis in double, then float: a per-pixel step right and up, and the back vector.
-gpu::GpuPushConstants cameraConstants(const SceneDesc& scene, const dvec3& origin, double scale) {
+gpu::GpuCamera cameraConstants(const SceneDesc& scene, const dvec3& origin, double scale) {
   const Camera& c = scene.camera;
   dvec3 w = unitVector(c.from - c.at);
   dvec3 u = unitVector(glm::cross(scaledForSquares(c.up), w));
   dvec3 v = glm::cross(w, u);
   double tanY = std::tan(glm::radians(c.fovyDegrees) / 2.0);
   double tanX = tanY * scene.width / scene.height;
-  gpu::GpuPushConstants p{};
-  p.cameraOrigin = f4((c.from - origin) * scale);
-  p.cameraRight = f4(u * (tanX / (scene.width / 2.0)));
-  p.cameraUp = f4(v * (tanY / (scene.height / 2.0)));
-  p.cameraBack = f4(w);
+  gpu::GpuCamera p{};
+  p.origin = f4((c.from - origin) * scale);
+  p.right = f4(u * (tanX / (scene.width / 2.0)));
+  p.up = f4(v * (tanY / (scene.height / 2.0)));
+  p.back = f4(w);
   return p;
 }
 
-// The exactness cut-off's bounds (gpu_types.h, GpuPushConstants): what one hit can send at
+// The exactness cut-off's bounds (gpu_types.h, GpuCutoff): what one hit can send at
 // most, per channel, in absolute value, and the largest mirror weight. A channel without a
 // bound is +infinity, and the shader never cuts a path by it. Unbounded are: a point light
 // whose attenuation divisor c0 + c1 r + c2 r^2 can come near 0 for some r >= 0 (c0 = 0, or a
 // negative coefficient), and sums beyond float. A zero factor stays an exact 0 (never
 // 0 * infinity, which is NaN and which max() would drop, leaving an unbounded light out).
-void cutoffConstants(const SceneDesc& scene, gpu::GpuPushConstants& p) {
+gpu::GpuCutoff cutoffConstants(const SceneDesc& scene) {
   const double kUnbounded = std::numeric_limits<double>::infinity();
   bool nonNegative = true;
   auto track = [&nonNegative](const dvec3& c) {
@@ -98,19 +98,17 @@ void cutoffConstants(const SceneDesc& scene, gpu::GpuPushConstants& p) {
   auto toFloat = [](double v) {
     return v < double{std::numeric_limits<float>::max()} ? static_cast<float>(v) : std::numeric_limits<float>::infinity();
   };
-  p.cutoffBound = {toFloat(bound.x), toFloat(bound.y), toFloat(bound.z), nonNegative ? 1.0f : 0.0f};
-  p.cutoffSpecular = {toFloat(specular.x), toFloat(specular.y), toFloat(specular.z), 0.0f};
+  gpu::GpuCutoff p{};
+  p.bound = {toFloat(bound.x), toFloat(bound.y), toFloat(bound.z), nonNegative ? 1.0f : 0.0f};
+  p.specular = {toFloat(specular.x), toFloat(specular.y), toFloat(specular.z), 0.0f};
+  return p;
 }
 
 // The settings of SPEC-PATHTRACING in the shader's terms, and the camera.
-gpu::GpuPathParams pathParams(const SceneDesc& scene, const dvec3& origin, double scale) {
+gpu::GpuPathParams pathParams(const SceneDesc& scene, const gpu::GpuCamera& camera) {
   const PathSettings& s = scene.path;
-  const gpu::GpuPushConstants camera = cameraConstants(scene, origin, scale);
   gpu::GpuPathParams p{};
-  p.cameraOrigin = camera.cameraOrigin;
-  p.cameraRight = camera.cameraRight;
-  p.cameraUp = camera.cameraUp;
-  p.cameraBack = camera.cameraBack;
+  p.camera = camera;
   switch (s.integrator) {
     case Integrator::Raytracer: p.integrator = gpu::kIntegratorRaytracer; break;
     case Integrator::AnalyticDirect: p.integrator = gpu::kIntegratorAnalyticDirect; break;
@@ -174,8 +172,8 @@ GpuScene flatten(const SceneDesc& scene) {
   const double scale = floatFrameScale(scene, origin);
   g.origin = origin;
   g.scale = scale;
-  g.push = cameraConstants(scene, origin, scale);
-  cutoffConstants(scene, g.push);
+  g.camera = cameraConstants(scene, origin, scale);
+  g.cutoff = cutoffConstants(scene);
   // The ray offsets and the BVH do not depend on each other: the offsets on another thread.
   std::future<PrimitiveOffsets> offsetsLater =
       std::async(std::launch::async, [&scene] { return primitiveOffsets(scene); });
@@ -257,7 +255,7 @@ GpuScene flatten(const SceneDesc& scene) {
     gq.radiance = f4(q.radiance);
     g.quadLights.push_back(gq);
   }
-  g.path = pathParams(scene, origin, scale);
+  g.path = pathParams(scene, g.camera);
   const EmitterTable table = collectEmitters(scene);
   for (std::size_t e = 0; e < table.prims.size(); ++e)
     g.emitters.push_back({table.prims[e], static_cast<float>(table.cdf[e])});

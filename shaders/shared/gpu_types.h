@@ -307,25 +307,36 @@ GPU_CONST uint kPhaseShadow = 2u;    // any hit of the shadow ray
 GPU_CONST uint kPhaseDone = 3u;
 GPU_CONST uint kPhaseSampleEnd = 4u;   // pathtrace.comp: the sample is over (within a step, never saved)
 
+// The camera in the float32 frame, as both shaders take it (camera.glsl).
+struct GpuCamera {
+  vec4 origin;              // xyz = look-from, w unused
+  vec4 right;               // xyz = u * tan(fovx/2) / (W/2): one pixel to the right
+  vec4 up;                  // xyz = v * tan(fovy/2) / (H/2): one pixel up
+  vec4 back;                // xyz = w = normalize(from - at)
+};
+GPU_ASSERT_SIZE(GpuCamera, 64)
+
+// raytrace.comp's exactness cut-off: a mirror ray is not traced when the most that the rest
+// of the path can add or take away, |throughput| * bound * (1 + s + s^2 + ...) per channel
+// (s = specular), leaves every channel's byte as it is. bound bounds the |radiance| that one
+// hit can send (ambient + emission + every light at full strength); +infinity where there is
+// no bound (a point light without a constant attenuation term), and the shader never cuts by
+// such a channel (flatten.cpp, cutoffConstants).
+struct GpuCutoff {
+  vec4 bound;               // rgb = that bound per channel; w = 1 when no colour or attenuation term is negative
+  vec4 specular;            // rgb = the largest |specular| of any material, per channel; w unused
+};
+GPU_ASSERT_SIZE(GpuCutoff, 32)
+
 struct GpuPushConstants {
-  vec4 cameraOrigin;        // xyz = look-from, w unused
-  vec4 cameraRight;         // xyz = u * tan(fovx/2) / (W/2): one pixel to the right
-  vec4 cameraUp;            // xyz = v * tan(fovy/2) / (H/2): one pixel up
-  vec4 cameraBack;          // xyz = w = normalize(from - at)
-  // The exactness cut-off: a mirror ray is not traced when the most that the rest of the
-  // path can add or take away, |throughput| * cutoffBound * (1 + s + s^2 + ...) per channel
-  // (s = cutoffSpecular), leaves every channel's byte as it is. cutoffBound bounds the
-  // |radiance| that one hit can send (ambient + emission + every light at full strength);
-  // +infinity where there is no bound (a point light without a constant attenuation term),
-  // and the shader never cuts by such a channel (flatten.cpp, cutoffConstants).
-  vec4 cutoffBound;         // rgb = that bound per channel; w = 1 when no colour or attenuation term is negative
-  vec4 cutoffSpecular;      // rgb = the largest |specular| of any material, per channel; w unused
+  GpuCamera camera;
+  GpuCutoff cutoff;
   uint bandY0;              // first image row of this band
   uint resume;              // 0: every pixel starts fresh; 1: continue suspended pixels
   uint pad0, pad1;          // size 112 (push constants: at most 128 bytes)
 };
 GPU_ASSERT_SIZE(GpuPushConstants, 112)
-GPU_ASSERT_OFFSET(GpuPushConstants, cutoffBound, 64)
+GPU_ASSERT_OFFSET(GpuPushConstants, cutoff, 64)
 GPU_ASSERT_OFFSET(GpuPushConstants, bandY0, 96)
 
 // What one render's dispatches share, besides the scene: sizes, counts and loop bounds. Data,
@@ -459,12 +470,9 @@ GPU_ASSERT_SIZE(GpuEmitter, 8)
 GPU_ASSERT_OFFSET(GpuEmitter, cdf, 4)
 
 // One render's path settings, camera and sample range (a uniform buffer; std140 and std430
-// agree: vec4 and 4-byte scalar members only).
+// agree: vec4, 4-byte scalar and vec4-only struct members).
 struct GpuPathParams {
-  vec4 cameraOrigin;        // as GpuPushConstants: look-from, scene-centred frame
-  vec4 cameraRight;         // one pixel to the right
-  vec4 cameraUp;            // one pixel up
-  vec4 cameraBack;          // normalize(from - at)
+  GpuCamera camera;
   uint integrator;          // kIntegratorAnalyticDirect, kIntegratorDirect or kIntegratorPathTracer
   uint nextEvent;           // kNextEventOff, On or Mis
   uint sampling;            // kSamplingHemisphere, Cosine or Brdf

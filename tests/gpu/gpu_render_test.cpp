@@ -352,7 +352,7 @@ TEST(GpuCutoff, UnboundedLightsWithZeroChannelsChangeNoPixel) {
           "diffuse .1 .1 .1\nspecular .8 .8 .8\nshininess 50\nsphere -1.5 0 1 1\nsphere 1.5 0 1 1\nsphere 0 2 1 1\n";
   SceneDesc scene = parseScene(text, "unbounded-lights.test");
   GpuScene flat = flatten(scene);
-  for (int c = 0; c < 3; ++c) EXPECT_TRUE(std::isinf(flat.push.cutoffBound[c])) << "channel " << c;
+  for (int c = 0; c < 3; ++c) EXPECT_TRUE(std::isinf(flat.cutoff.bound[c])) << "channel " << c;
   VulkanTimings automatic;
   renderVulkan(*context, flat, VulkanOptions{}, nullptr, &automatic);
   EXPECT_NE(automatic.leftOut.find("exactness cut-off"), std::string::npos)

@@ -537,8 +537,8 @@ TEST(TinyVectors, ACameraWhoseViewSquaredOverflowsIsValid) {
   const SceneDesc s = parseScene("size 8 6\ncamera 1e300 0 0 -1e300 0 0 0 1e300 0 45\nsphere 0 0 0 1\n", "far.test");
   EXPECT_EQ(s.camera.from.x, 1e300);
   const GpuScene g = flatten(s);
-  EXPECT_EQ(g.push.cameraBack.x, 1.0f);
-  EXPECT_EQ(g.push.cameraBack.y, 0.0f);
-  EXPECT_GT(g.push.cameraUp.y, 0.0f);
-  EXPECT_LT(g.push.cameraRight.z, 0.0f);   // right = up x back = y x x = -z
+  EXPECT_EQ(g.camera.back.x, 1.0f);
+  EXPECT_EQ(g.camera.back.y, 0.0f);
+  EXPECT_GT(g.camera.up.y, 0.0f);
+  EXPECT_LT(g.camera.right.z, 0.0f);   // right = up x back = y x x = -z
 }

@@ -57,8 +57,8 @@ TEST(Flatten, CarriesValuesIntoGpuLayouts) {
   EXPECT_EQ(g.origin, dvec3(1.0, 0.0, 0.0));
   EXPECT_EQ(g.triangles[0].p1.x, 0.0f);
   EXPECT_EQ(g.triangles[0].p2.y, 1.0f);
-  EXPECT_EQ(g.push.cameraOrigin.z, 5.0f);
-  EXPECT_EQ(g.push.cameraOrigin.x, -1.0f);
+  EXPECT_EQ(g.camera.origin.z, 5.0f);
+  EXPECT_EQ(g.camera.origin.x, -1.0f);
   ASSERT_EQ(g.lights.size(), 2u);
   EXPECT_EQ(g.lights[0].positionOrDirection.w, gpu::kPointLight);
   EXPECT_EQ(g.lights[0].attenuation.z, 3.0f);
@@ -233,7 +233,7 @@ TEST(Flatten, CutoffBoundFollowsTheLights) {
                                  "diffuse 0.5 0.5 0.5\nspecular 0.25 0.25 0.25\nsphere 0 0 0 1\n",
                              "bound.test");
     if (attenuation != dvec3(0.0)) s.lights[0].attenuation = attenuation;   // (the parser refuses these)
-    return flatten(s).push.cutoffBound;
+    return flatten(s).cutoff.bound;
   };
   gpu::vec4 b = bound("attenuation 2 1 1\npoint 0 0 3 1 2 0\ndirectional 0 0 1 1 1 1\n");
   EXPECT_FLOAT_EQ(b.x, 0.1f + (0.5f + 1.0f) * 0.75f);
@@ -300,7 +300,7 @@ TEST(Flatten, QuadLightsMaterialFieldsAndPathSettings) {
   EXPECT_EQ(g.path.lightStrata, 3u);
   EXPECT_EQ(g.path.quadLightCount, 1u);
   EXPECT_EQ(g.spp, 16u);
-  EXPECT_EQ(g.path.cameraOrigin.x, g.push.cameraOrigin.x);
+  EXPECT_EQ(g.path.camera.origin.x, g.camera.origin.x);
 }
 
 // The emitter table: emissive triangles and spheres (not a quad light's triangles, not

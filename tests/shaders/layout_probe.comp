@@ -61,7 +61,7 @@ void main() {
   GpuQuadLight q = quadLights[1];
   put(q.corner); put(q.edgeAB); put(q.edgeAC); put(q.normal); put(q.radiance);
   GpuPathParams pp = pathParams;
-  put(pp.cameraOrigin); put(pp.cameraRight); put(pp.cameraUp); put(pp.cameraBack);
+  put(pp.camera.origin); put(pp.camera.right); put(pp.camera.up); put(pp.camera.back);
   put(pp.integrator); put(pp.nextEvent); put(pp.sampling); put(pp.russianRoulette);
   put(pp.maxDepth); put(pp.lightSamples); put(pp.lightStrata); put(pp.quadLightCount);
   put(pp.lightCount); put(pp.seed); put(pp.firstSample); put(pp.sampleCount);
@@ -81,6 +81,6 @@ void main() {
   GpuPathPush pp2 = pathPush[1];
   put(pp2.bandY0); put(pp2.resume); put(pp2.pad0); put(pp2.pad1);
   // The push constants: one block, not an array.
-  put(pc.cameraOrigin); put(pc.cameraRight); put(pc.cameraUp); put(pc.cameraBack);
-  put(pc.cutoffBound); put(pc.cutoffSpecular); put(pc.bandY0); put(pc.resume); put(pc.pad0); put(pc.pad1);
+  put(pc.camera.origin); put(pc.camera.right); put(pc.camera.up); put(pc.camera.back);
+  put(pc.cutoff.bound); put(pc.cutoff.specular); put(pc.bandY0); put(pc.resume); put(pc.pad0); put(pc.pad1);
 }
