@@ -1,5 +1,5 @@
 // brdf.glsl: the path integrators' BRDFs (doc/path-tracing.md, "BRDFs"): Phong and GGX, their
-// values, the pdf of the scatter step and its sampling by the rules of gpu_types.h. Include
+// values, the pdf of the scatter step and its sampling by the rules of gpu_rng.h. Include
 // in pathtrace.comp after the specialization constant kHasGgx and the functions sampling()
 // (the scatter rule) and randomAt() (the numbers of the current path vertex).
 // Material w fields: ambient.w = model, diffuse.w = GGX alpha, specular.w = Phong exponent.
@@ -12,7 +12,7 @@ float powSafe(float x, float s) { return x > 0.0 ? pow(x, s) : (s == 0.0 ? 1.0 :
 float average(vec3 c) { return (c.r + c.g + c.b) / 3.0; }
 
 // The direction at polar angle theta (sine, cosine) and azimuth phi around the unit axis n,
-// in the frame of gpu_types.h.
+// in the frame of the sampling rules (gpu_rng.h).
 vec3 aroundAxis(vec3 n, float sinTheta, float cosTheta, float phi) {
   vec3 a = abs(n.x) > 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
   vec3 t = normalize(cross(a, n));
@@ -85,7 +85,7 @@ float scatterPdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
   return (1.0 - t) * nDotI * kInvPi + t * specular;
 }
 
-// Draws w_i at the current vertex (the rules of gpu_types.h).
+// Draws w_i at the current vertex (the sampling rules of gpu_rng.h).
 vec3 sampleDirection(GpuMaterial m, vec3 n, vec3 wo) {
   float u = randomAt(kRngSlotDirectionU), v = randomAt(kRngSlotDirectionV);
   float phi = 2.0 * kPi * v;

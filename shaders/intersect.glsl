@@ -132,7 +132,7 @@ uint stackEntry(GpuBvhNode n) {
   return n.primCount > 0u ? kStackLeafBit | (n.primCount << kStackCountShift) | n.leftOrFirst : n.leftOrFirst;
 }
 
-// The secondary-ray offsets at p on a primitive (the policy: gpu_types.h, "Secondary rays");
+// The secondary-ray offsets at p on a primitive (the policy: gpu_limits.h);
 // p and the camera are in the frame centred on the geometry. Sets hitTMin and hitGrazing.
 void setSecondaryOffsets(float primitiveOffset, vec3 p, vec3 camera) {
   vec3 a = max(abs(p), abs(p - camera));

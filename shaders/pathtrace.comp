@@ -4,7 +4,7 @@
 // ray, then at each vertex emission, light samples (quad lights and emissive triangles and
 // spheres, by next-event estimation; point and directional lights always) with shadow rays,
 // and a scattered ray, as GpuPathParams says. Random numbers come from the counter-based
-// generator of gpu_types.h, drawn by the rules stated there, so that the CPU reference
+// generator of gpu_rng.h, drawn by the rules it points to, so that the CPU reference
 // follows the same paths.
 // Like raytrace.comp it is a state machine of bounded steps: a pixel that runs out of steps
 // saves its state (GpuPathTracerState) and the host dispatches again, so that no invocation
@@ -17,7 +17,7 @@
 
 layout(local_size_x = kWorkgroupSize, local_size_y = kWorkgroupSize) in;
 
-// Specialization constants: what the scene contains (gpu_types.h, kSpec*, kPathSpec*).
+// Specialization constants: what the scene contains (gpu_render.h, kSpec*; gpu_path.h, kPathSpec*).
 layout(constant_id = kSpecHasTriangles) const bool kHasTriangles = true;
 layout(constant_id = kSpecHasSpheres) const bool kHasSpheres = true;
 layout(constant_id = kSpecHasSmoothNormals) const bool kHasSmoothNormals = true;
@@ -92,7 +92,7 @@ uint bounce, sampleIndex;
 uint pixelX, pixelY, pixelIndex;   // in the full image; pixelIndex = y * fullWidth + x
 uint shadowRays = 0u, scatterRays = 0u, nonFinite = 0u;
 
-// ---- random numbers (gpu_types.h: the generator and how each number is used) ------------------
+// ---- random numbers (gpu_rng.h: the generator and how each number is used) ------------------
 
 uint sampleKey;   // rngSampleKey of the current sample
 void keySample() { sampleKey = rngSampleKey(path.seed, pixelIndex, path.firstSample + sampleIndex); }
@@ -121,7 +121,7 @@ vec3 polygonIrradianceVector(GpuQuadLight q, vec3 x) {
   return 0.5 * phi;
 }
 
-// ---- emissive triangles and spheres as lights (gpu_types.h, GpuEmitter) -----------------------
+// ---- emissive triangles and spheres as lights (gpu_scene.h, GpuEmitter) -----------------------
 
 // Whether next-event estimation samples the emitters (beyond the course: the path tracer's
 // `nexteventestimation on` and `mis`).
@@ -164,7 +164,7 @@ float emitterHitPdf(GpuMaterial m) {
 }
 
 // The least t of a ray leaving point p of a primitive whose offset is primitiveOffset at
-// |N.dir| = cosine (the policy of gpu_types.h, as setSecondaryOffsets and secondaryTMin).
+// |N.dir| = cosine (the policy of gpu_limits.h, as setSecondaryOffsets and secondaryTMin).
 float offsetAt(float primitiveOffset, vec3 p, float cosine) {
   vec3 a = max(abs(p), abs(p - path.camera.origin.xyz));
   float magnitude = max(max(a.x, a.y), a.z);
@@ -173,7 +173,7 @@ float offsetAt(float primitiveOffset, vec3 p, float cosine) {
 
 // ---- the state machine's steps -----------------------------------------------------------------
 
-// The camera ray of sample `sampleIndex` (gpu_types.h: the pixel centre, or jittered).
+// The camera ray of sample `sampleIndex` (gpu_rng.h: the pixel centre, or jittered).
 void startCamera() {
   keySample();
   float u = 0.5, v = 0.5;
@@ -314,7 +314,7 @@ void pointLightSample(uint i, GpuMaterial m, bool analytic) {
     startShadowRay(wi, tMax, cosSurface, c);
 }
 
-// Light sample k of N of the emissive triangles and spheres (the rules of gpu_types.h): an
+// Light sample k of N of the emissive triangles and spheres (the sampling rules of gpu_rng.h): an
 // emitter picked from the cumulative table, a point on it, and its shadow ray, which stops
 // short of the point by the emitter's secondary-ray offset there. Each iteration of the
 // table's binary search is a step of the budget.

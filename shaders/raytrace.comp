@@ -7,24 +7,24 @@
 // mirror loop carrying a throughput weight, bounded by maxdepth. Written as a state machine
 // of bounded steps so that no invocation exceeds llvmpipe's loop budget: an invocation that
 // runs out of steps saves its state (its pixel's, and which tile) and the host dispatches
-// again (see kDefaultStepBudget in gpu_types.h).
+// again (see kDefaultStepBudget in gpu_limits.h).
 // Its math is float32 and written independently of the CPU reference (host/cpu/).
 #version 450
 #extension GL_GOOGLE_include_directive : require
 
 #include "gpu_types.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;   // kWorkgroupSize
+layout(local_size_x = kWorkgroupSize, local_size_y = kWorkgroupSize) in;
 
-// Specialization constants: only what changes the code (gpu_types.h, kSpec*).
-layout(constant_id = 0) const bool kHasTriangles = true;
-layout(constant_id = 1) const bool kHasSpheres = true;
-layout(constant_id = 2) const bool kHasSmoothNormals = true;
-layout(constant_id = 3) const bool kHasPointLights = true;
-layout(constant_id = 4) const bool kHasDirectionalLights = true;
-layout(constant_id = 5) const bool kHasAttenuation = true;
-layout(constant_id = 6) const bool kHasSpecular = true;
-layout(constant_id = 7) const bool kCutoff = true;
+// Specialization constants: only what changes the code (gpu_render.h and gpu_whitted.h, kSpec*).
+layout(constant_id = kSpecHasTriangles) const bool kHasTriangles = true;
+layout(constant_id = kSpecHasSpheres) const bool kHasSpheres = true;
+layout(constant_id = kSpecHasSmoothNormals) const bool kHasSmoothNormals = true;
+layout(constant_id = kSpecHasPointLights) const bool kHasPointLights = true;
+layout(constant_id = kSpecHasDirectionalLights) const bool kHasDirectionalLights = true;
+layout(constant_id = kSpecHasAttenuation) const bool kHasAttenuation = true;
+layout(constant_id = kSpecHasSpecular) const bool kHasSpecular = true;
+layout(constant_id = kSpecCutoff) const bool kCutoff = true;
 
 layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance, w 1 once the pixel is done (see main)
 layout(std430, binding = kBindingPathStates) buffer PathStates { GpuWhittedState states[]; };   // one per invocation

@@ -1,5 +1,5 @@
 // scene_reads.glsl: how the compute shaders read the scene (raytrace.comp, pathtrace.comp):
-// the bindings of gpu_types.h and one load function per struct. Include after gpu_types.h;
+// the bindings of gpu_render.h and one load function per struct. Include after gpu_types.h;
 // depends on nothing else.
 // Scene reads: storage buffers, or (VKRT_TEXEL_READS) the same bytes through uint texel-buffer
 // views, which lavapipe reads 2.7-3x faster inside loops (bench/ measures both). Only uint

@@ -1,7 +1,6 @@
-// The BRDFs of the path integrators and how their directions are sampled (doc/path-tracing.md
-// sections 3-4, and the sampling rules of gpu_types.h "How each backend turns these numbers
-// into a path"), in double precision. Pure functions of a material and unit vectors; knows
-// nothing of scenes or rays.
+// The BRDFs of the path integrators and how their directions are sampled (doc/path-tracing.md,
+// "BRDFs", and doc/design.md, "Random numbers and sampling rules"), in double precision.
+// Pure functions of a material and unit vectors; knows nothing of scenes or rays.
 #pragma once
 
 #include "scene/scene_desc.h"

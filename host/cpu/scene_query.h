@@ -26,8 +26,7 @@ class SceneQuery {
   // material index.
   std::uint32_t surfaceAt(const Hit& hit, const dvec3& p, dvec3& normal) const;
 
-  // The offsets of secondary rays leaving hit point p of the hit's primitive (gpu_types.h,
-  // "Secondary rays").
+  // The offsets of secondary rays leaving hit point p of the hit's primitive (gpu_limits.h).
   SecondaryRayOffsets offsetsAt(const Hit& hit, const dvec3& p) const;
   // The same for a point p of triangle `triangle`.
   SecondaryRayOffsets triangleOffsetsAt(std::uint32_t triangle, const dvec3& p) const;
@@ -43,7 +42,7 @@ class SceneQuery {
   const Bvh& bvh_;
   dvec3 u_, v_, w_;
   double halfW_, halfH_, tanX_, tanY_;
-  PrimitiveOffsets offsets_;   // the secondary-ray offsets (gpu_types.h, "Secondary rays")
+  PrimitiveOffsets offsets_;   // the secondary-ray offsets (gpu_limits.h)
   dvec3 frameOrigin_;          // where the shader's float32 frame has its origin (flatten())
 };
 

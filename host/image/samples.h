@@ -13,7 +13,7 @@
 namespace vkrt {
 
 // Which samples an image is the mean of: for each seed, the sample indices [first, first +
-// count) of every pixel (gpu_types.h, "Random numbers"); and the gamma its output encodes with.
+// count) of every pixel (gpu_rng.h); and the gamma its output encodes with.
 struct SampleRange {
   std::uint32_t seed = 0;
   std::uint64_t first = 0, count = 0;

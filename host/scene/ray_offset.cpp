@@ -1,4 +1,4 @@
-// The secondary-ray offset of every primitive (the policy: gpu_types.h, "Secondary rays").
+// The secondary-ray offset of every primitive (the policy: gpu_limits.h and doc/design.md, "The secondary-ray offsets").
 #include "scene/ray_offset.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // The secondary-ray offset policy: how far a shadow or mirror ray leaving a primitive ignores
-// hits. The policy is stated once, in gpu_types.h ("Secondary rays"); both backends take their
+// hits. The policy is stated once, in gpu_limits.h; both backends take their
 // numbers from here. Depends on the scene description only.
 #pragma once
 

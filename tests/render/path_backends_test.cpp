@@ -1,5 +1,5 @@
 // The two backends follow the same paths: the CPU reference (double precision) and the shader
-// (float32) draw the same random numbers by the rules of gpu_types.h, so one seed gives nearly
+// (float32) draw the same random numbers by the rules of gpu_rng.h, so one seed gives nearly
 // the same image on both, pixel by pixel, on every CSE 168 course scene. Where a float32 ray
 // and its double twin part at an edge, the two paths go separate ways: a few pixels may differ.
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The grazing term of the secondary-ray offset (gpu_types.h, "Secondary rays";
+// The grazing term of the secondary-ray offset (gpu_limits.h;
 // setSecondaryOffsets in intersect.glsl, secondaryRayOffsets in host/scene/ray_offset.cpp) on
 // an image: a floor lit by a directional light 0.001 degrees above it, seen from about a
 // hundred units away. The float32 hit point lies up to a few ulps of its magnitude below the

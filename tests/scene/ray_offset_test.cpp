@@ -1,5 +1,5 @@
-// The secondary-ray offset policy (gpu_types.h, "Secondary rays"): objects, their offsets,
-// the offsets lowered near smaller objects, and pictures that a vast floor must not change.
+// The secondary-ray offset policy (doc/design.md, "The secondary-ray offsets"): objects, their
+// offsets, the offsets lowered near smaller objects, and pictures that a vast floor must not change.
 #include <cmath>
 #include <optional>
 #include <string>
