@@ -1,10 +1,9 @@
 // brdf.glsl: the path integrators' BRDFs (doc/path-tracing.md, "BRDFs"): Phong and GGX, their
 // values, the pdf of the scatter step and its sampling by the rules of gpu_rng.h. Include
-// in pathtrace.comp after the specialization constant kHasGgx and the functions sampling()
+// in pathtrace.comp after intersect.glsl (kPi), the specialization constant kHasGgx and the functions sampling()
 // (the scatter rule) and randomAt() (the numbers of the current path vertex).
 // Material w fields: ambient.w = model, diffuse.w = GGX alpha, specular.w = Phong exponent.
 
-const float kPi = 3.14159265358979;
 const float kInvPi = 0.318309886183791;
 
 // pow(x, s) for x >= 0 as C defines it: pow(0, 0) = 1 (GLSL leaves pow(0, s) undefined).

@@ -137,29 +137,11 @@ float emitterAreaDensity(GpuMaterial m) {
   return (abs(m.emission.r) + abs(m.emission.g) + abs(m.emission.b)) * path.emitterWeightScale;
 }
 
-// At the point of ellipsoid s whose object-space unit normal is nObject: the unit world
-// normal, and 1 / (|det M|^(1/3) |M^-T n|), M = the inverse of objectFromWorld.
-float sphereDensityFactor(GpuSphere s, vec3 nObject, out vec3 normal) {
-  mat3 o = mat3(s.objectFromWorld);
-  vec3 m = transpose(o) * nObject;   // M^-T n
-  float len = length(m);
-  normal = m / len;
-  return pow(abs(determinant(o)), 1.0 / 3.0) / len;
-}
-
 // The solid-angle density with which a light sample finds the current hit (an emissive
 // triangle or sphere of material m, at distance bestT along rayDir) from the vertex before.
 float emitterHitPdf(GpuMaterial m) {
   vec3 normal;
-  float factor = 1.0;
-  if (kHasSpheres && (!kHasTriangles || primKind(hitPrim) == kPrimSphere)) {
-    GpuSphere s = loadSphere(primIndex(hitPrim));
-    vec3 pObject = (s.objectFromWorld * vec4(hitPoint, 1.0)).xyz - s.centerRadius.xyz;
-    factor = sphereDensityFactor(s, normalize(pObject), normal);
-  } else {
-    GpuTriangle tri = loadTriangle(hitPrim);
-    normal = vec3(tri.p0.w, tri.p1.w, tri.p2.w);   // the face's (emission is two-sided)
-  }
+  float factor = densityFactorAt(hitPrim, hitPoint, normal);
   return emitterAreaDensity(m) * factor * bestT * bestT / abs(dot(normal, rayDir));
 }
 
@@ -339,25 +321,9 @@ void emitterSample(uint k, GpuMaterial m, inout uint step) {
   }
   uint prim = emitters[min(lo, path.emitterCount - 1u)].primRef;
   vec3 x, normal;
-  float factor = 1.0, primitiveOffset;
+  float factor, primitiveOffset;
   uint material;
-  if (kHasSpheres && (!kHasTriangles || primKind(prim) == kPrimSphere)) {
-    GpuSphere sp = loadSphere(primIndex(prim));
-    float z = 1.0 - 2.0 * s, r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * t;
-    vec3 nObject = vec3(r * cos(phi), r * sin(phi), z);
-    vec3 pObject = sp.centerRadius.xyz + sp.centerRadius.w * nObject;
-    x = inverse(mat3(sp.objectFromWorld)) * (pObject - sp.objectFromWorld[3].xyz);
-    factor = sphereDensityFactor(sp, nObject, normal);
-    material = sp.materialIndex;
-    primitiveOffset = sp.rayOffset;
-  } else {
-    GpuTriangle tri = loadTriangle(prim);
-    float su = sqrt(s);
-    x = (1.0 - su) * tri.p0.xyz + su * (1.0 - t) * tri.p1.xyz + su * t * tri.p2.xyz;
-    normal = vec3(tri.p0.w, tri.p1.w, tri.p2.w);
-    material = tri.materialIndex;
-    primitiveOffset = tri.rayOffset;
-  }
+  samplePoint(prim, s, t, x, normal, factor, material, primitiveOffset);
   GpuMaterial light = loadMaterial(material);
   vec3 d = x - hitPoint;
   float distance2 = dot(d, d);
