@@ -106,14 +106,14 @@ int main(int argc, char** argv) {
       double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - r0).count();
       double cpu = cpuSeconds() - rc0;
       auto millions = [](std::uint64_t n) { return static_cast<double>(n) * 1e-6; };
-      const std::uint64_t total = rays.primary + rays.shadow + rays.reflection;
+      const std::uint64_t total = rays.primary + rays.shadow + rays.secondary;
       std::printf(
           "run %d: wall %.3f s, cpu %.3f s | pipeline %.3f first dispatch %.3f dispatch %.3f readback %.3f | "
           "dispatches %u bands %u suspensions %llu | rays %.2f M (primary %.2f shadow %.2f scatter %.2f) "
           "%.2f Mrays/cpu-s | nonfinite %llu | image %016llx\n",
           run, wall, cpu, t.pipelineSeconds, t.firstDispatchSeconds, t.dispatchSeconds, t.readbackSeconds,
           t.dispatches, t.bands, static_cast<unsigned long long>(t.suspensions), millions(total), millions(rays.primary),
-          millions(rays.shadow), millions(rays.reflection), millions(total) / cpu,
+          millions(rays.shadow), millions(rays.secondary), millions(total) / cpu,
           static_cast<unsigned long long>(rays.nonFinite),
           static_cast<unsigned long long>(fnv1a(image.rgb.data(), image.rgb.size() * sizeof(float))));
       if (!rawPath.empty() && run == 0) {

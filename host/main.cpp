@@ -154,9 +154,9 @@ void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
   }
   std::fprintf(stderr, "  write   %9.1f ms\n", r.writeSeconds * ms);
   double mrays = r.renderSeconds > 0 ? static_cast<double>(r.rays.total()) / r.renderSeconds / 1e6 : 0.0;
-  std::fprintf(stderr, "  rays    %llu = primary %llu + shadow %llu + reflection %llu; %.1f Mrays/s\n",
+  std::fprintf(stderr, "  rays    %llu = primary %llu + shadow %llu + secondary %llu; %.1f Mrays/s\n",
                static_cast<unsigned long long>(r.rays.total()), static_cast<unsigned long long>(r.rays.primary),
-               static_cast<unsigned long long>(r.rays.shadow), static_cast<unsigned long long>(r.rays.reflection),
+               static_cast<unsigned long long>(r.rays.shadow), static_cast<unsigned long long>(r.rays.secondary),
                mrays);
 }
 
@@ -167,12 +167,12 @@ std::string reportJson(const vkrt::RenderReport& r) {
                 "{\"backend\":%s,\"seconds\":%.6f,\"parse_s\":%.6f,\"build_s\":%.6f,\"render_s\":%.6f,"
                 "\"instance_s\":%.6f,\"device_s\":%.6f,\"upload_s\":%.6f,\"pipeline_s\":%.6f,"
                 "\"first_dispatch_s\":%.6f,\"dispatch_s\":%.6f,\"readback_s\":%.6f,\"rays\":%llu,"
-                "\"shadow_rays\":%llu,\"reflection_rays\":%llu}",
+                "\"shadow_rays\":%llu,\"secondary_rays\":%llu}",
                 vkrt::jsonQuoted(r.backend).c_str(), r.parseSeconds + r.buildSeconds + r.renderSeconds, r.parseSeconds, r.buildSeconds,
                 r.renderSeconds, r.instanceSeconds, r.deviceSeconds, v.uploadSeconds, v.pipelineSeconds,
                 v.firstDispatchSeconds, v.dispatchSeconds, v.readbackSeconds,
                 static_cast<unsigned long long>(r.rays.total()), static_cast<unsigned long long>(r.rays.shadow),
-                static_cast<unsigned long long>(r.rays.reflection));
+                static_cast<unsigned long long>(r.rays.secondary));
   return buf;
 }
 

@@ -17,13 +17,9 @@
 
 layout(local_size_x = kWorkgroupSize, local_size_y = kWorkgroupSize) in;
 
-// Specialization constants: what the scene contains (gpu_render.h, kSpec*; gpu_path.h, kPathSpec*).
-layout(constant_id = kSpecHasTriangles) const bool kHasTriangles = true;
-layout(constant_id = kSpecHasSpheres) const bool kHasSpheres = true;
-layout(constant_id = kSpecHasSmoothNormals) const bool kHasSmoothNormals = true;
-layout(constant_id = kSpecHasPointLights) const bool kHasPointLights = true;
-layout(constant_id = kSpecHasDirectionalLights) const bool kHasDirectionalLights = true;
-layout(constant_id = kSpecHasAttenuation) const bool kHasAttenuation = true;
+// Specialization constants: what the scene contains, and the integrator settings (gpu_path.h,
+// kPathSpec*).
+#include "scene_features.glsl"
 layout(constant_id = kPathSpecHasQuadLights) const bool kHasQuadLights = true;
 layout(constant_id = kPathSpecHasGgx) const bool kHasGgx = true;
 layout(constant_id = kPathSpecIntegrator) const uint kSpecIntegrator = kPathSpecFromParams;
@@ -38,12 +34,12 @@ layout(constant_id = kPathSpecTestAll) const bool kTestAll = false;
 // rgb: the sum of the pixel's finished samples; w: 1 once all are done, 0 while suspended.
 layout(std430, binding = kBindingPixels) buffer Accumulation { vec4 accumulation[]; };
 layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathTracerState states[]; };
-layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
 
 layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
 layout(std140, binding = kBindingPathParams) uniform PathParams { GpuPathParams path; };
 layout(push_constant) uniform Push { GpuPathPush pc; };
 
+#include "counters.glsl"
 #include "scene_reads.glsl"
 #include "intersect.glsl"
 #include "traverse.glsl"
@@ -90,7 +86,6 @@ float lastPdf;         // solid-angle pdf of the scatter that made the current r
 vec3 pending;          // what the current shadow ray adds when nothing blocks it
 uint bounce, sampleIndex;
 uint pixelX, pixelY, pixelIndex;   // in the full image; pixelIndex = y * fullWidth + x
-uint shadowRays = 0u, scatterRays = 0u, nonFinite = 0u;
 
 // ---- random numbers (gpu_rng.h: the generator and how each number is used) ------------------
 
@@ -366,7 +361,7 @@ void scatter(GpuMaterial m) {
   }
   lastPdf = pdf;
   ++bounce;
-  ++scatterRays;
+  ++secondaryRays;
   startRay(hitPoint, wi, secondaryTMin(cosine));
 }
 
@@ -520,15 +515,10 @@ void main() {
     if (phase == kPhaseSampleEnd) endSample();
   }
 
-  if (shadowRays + scatterRays + nonFinite > 0u) {
-    atomicAdd(counters.shadowRays, shadowRays);
-    atomicAdd(counters.reflectionRays, scatterRays);
-    atomicAdd(counters.nonFinite, nonFinite);
-  }
+  addCounts(phase != kPhaseDone);
   if (phase != kPhaseDone) {
     saveState(slot);
     accumulation[slot] = vec4(0.0);
-    atomicAdd(counters.suspended, 1u);
     return;
   }
   accumulation[slot] = vec4(pixelSum, 1.0);

@@ -16,23 +16,19 @@
 
 layout(local_size_x = kWorkgroupSize, local_size_y = kWorkgroupSize) in;
 
-// Specialization constants: only what changes the code (gpu_render.h and gpu_whitted.h, kSpec*).
-layout(constant_id = kSpecHasTriangles) const bool kHasTriangles = true;
-layout(constant_id = kSpecHasSpheres) const bool kHasSpheres = true;
-layout(constant_id = kSpecHasSmoothNormals) const bool kHasSmoothNormals = true;
-layout(constant_id = kSpecHasPointLights) const bool kHasPointLights = true;
-layout(constant_id = kSpecHasDirectionalLights) const bool kHasDirectionalLights = true;
-layout(constant_id = kSpecHasAttenuation) const bool kHasAttenuation = true;
+// Specialization constants: only what changes the code: what the scene contains, and the
+// exactness cut-off (gpu_whitted.h, kSpec*).
+#include "scene_features.glsl"
 layout(constant_id = kSpecHasSpecular) const bool kHasSpecular = true;
 layout(constant_id = kSpecCutoff) const bool kCutoff = true;
 
 layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance, w 1 once the pixel is done (see main)
 layout(std430, binding = kBindingPathStates) buffer PathStates { GpuWhittedState states[]; };   // one per invocation
-layout(std430, binding = kBindingCounters) buffer Counters { GpuCounters counters; };
 
 layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
 layout(push_constant) uniform Push { GpuPushConstants pc; };
 
+#include "counters.glsl"
 #include "scene_reads.glsl"
 #include "intersect.glsl"
 #include "traverse.glsl"
@@ -47,7 +43,6 @@ uint runEnd, bandRows;   // the end of the invocation's run of tiles; the band's
 vec3 throughput, radiance;
 vec3 lightColor;   // of the current shadow ray: the light's colour over its attenuation
 uint depth;
-uint shadowRays = 0u, reflectionRays = 0u, nonFinite = 0u;
 
 // ---- the state machine's steps -----------------------------------------------------------------
 
@@ -87,7 +82,7 @@ void reflectOrFinish() {
   if (kHasSpecular && depth < params.maxDepth && any(notEqual(specular, vec3(0.0))) &&
       !(kCutoff && restCannotChangePixel(throughput * specular, depth + 1u))) {
     ++depth;
-    ++reflectionRays;
+    ++secondaryRays;
     throughput *= specular;
     vec3 mirror = normalize(rayDir - 2.0 * dot(rayDir, hitNormal) * hitNormal);
     startRay(hitPoint, mirror, secondaryTMin(abs(dot(mirror, hitNormal))));
@@ -254,14 +249,9 @@ void main() {
     if (phase == kPhaseDone) endPixel();
   }
 
-  if (shadowRays + reflectionRays + nonFinite > 0u) {
-    atomicAdd(counters.shadowRays, shadowRays);
-    atomicAdd(counters.reflectionRays, reflectionRays);
-    atomicAdd(counters.nonFinite, nonFinite);
-  }
+  addCounts(phase != kPhaseDone);
   if (phase != kPhaseDone) {
     saveState(invocation);
     pixels[lastPixel].w = 0.0;   // (stale from an earlier band, or 0 already)
-    atomicAdd(counters.suspended, 1u);
   }
 }

@@ -328,7 +328,7 @@ class PathIntegrator {
         if (!(rng.at(bounce, gpu::kRngSlotRoulette) < p)) break;
         beta /= p;
       }
-      ++counts.reflection;
+      ++counts.secondary;
       ray = {v.p, wi};
       tMin = v.offset.at(std::abs(nDotI));
     }

@@ -56,7 +56,7 @@ void shadeTiles(const PixelRect& region, int threads, std::uint64_t unitsPerPixe
     std::lock_guard lock(mutex);
     totals.primary += local.primary;
     totals.shadow += local.shadow;
-    totals.reflection += local.reflection;
+    totals.secondary += local.secondary;
     totals.nonFinite += local.nonFinite;
   };
 

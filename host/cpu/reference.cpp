@@ -79,7 +79,7 @@ class Tracer {
       radiance += throughput * localShading(m, p, normal, -ray.dir, offset, counts);
       // Possibly continue along the mirror direction.
       if (depth >= scene_.maxDepth || m.specular == dvec3(0.0)) break;
-      ++counts.reflection;
+      ++counts.secondary;
       throughput *= m.specular;
       dvec3 r = ray.dir - 2.0 * glm::dot(ray.dir, normal) * normal;
       ray = {p, glm::normalize(r)};

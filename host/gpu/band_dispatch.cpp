@@ -55,10 +55,10 @@ bool dispatchBand(ComputePipeline& pipeline, const void* push, std::uint32_t& re
     ++timings.dispatches;
     timings.suspensions += counter->suspended;
     rays.shadow += counter->shadowRays;
-    rays.reflection += counter->reflectionRays;
+    rays.secondary += counter->secondaryRays;
     rays.nonFinite += counter->nonFinite;
     counter->shadowRays = 0;
-    counter->reflectionRays = 0;
+    counter->secondaryRays = 0;
     counter->nonFinite = 0;
     resume = 1;
   } while (counter->suspended > 0);

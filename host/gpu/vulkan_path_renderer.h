@@ -40,7 +40,7 @@ struct VulkanPathOptions {
   std::optional<PixelRect> crop;
 };
 
-// RayCounts: primary = camera rays (pixels x samples), shadow = shadow rays, reflection =
+// RayCounts: primary = camera rays (pixels x samples), shadow = shadow rays, secondary =
 // scattered rays, nonFinite = samples whose radiance was NaN or infinite (left out of the mean).
 // Throws DeviceError (also for a scene beyond the backend's or the device's limits),
 // OutOfMemory, InternalError.

@@ -7,15 +7,16 @@
 namespace vkrt {
 
 struct RayCounts {
-  std::uint64_t primary = 0, shadow = 0, reflection = 0;
+  std::uint64_t primary = 0, shadow = 0;
+  std::uint64_t secondary = 0;   // mirror rays (the Whitted model) or scattered rays (the path integrators)
   // Pixels whose colour came out NaN or infinite (encoded as 0 or 1: image/encode.h); the
   // tests require 0 on every scene they render, and vkrt warns when it is not.
   std::uint64_t nonFinite = 0;
-  std::uint64_t total() const { return primary + shadow + reflection; }
+  std::uint64_t total() const { return primary + shadow + secondary; }
   RayCounts& operator+=(const RayCounts& o) {
     primary += o.primary;
     shadow += o.shadow;
-    reflection += o.reflection;
+    secondary += o.secondary;
     nonFinite += o.nonFinite;
     return *this;
   }

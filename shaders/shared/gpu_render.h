@@ -83,7 +83,7 @@ GPU_ASSERT_OFFSET(GpuRenderParams, fullHeight, 52)
 struct GpuCounters {
   uint suspended;           // invocations (raytrace.comp) or pixels (pathtrace.comp) of this dispatch that ran out of steps
   uint shadowRays;
-  uint reflectionRays;
+  uint secondaryRays;       // mirror (raytrace.comp) or scattered (pathtrace.comp) rays
   uint nonFinite;           // pixels whose radiance was NaN or infinite (RayCounts::nonFinite)
 };
 GPU_ASSERT_SIZE(GpuCounters, 16)

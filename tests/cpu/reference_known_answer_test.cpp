@@ -136,7 +136,7 @@ TEST(KnownAnswer, AMillionReflectionsBetweenParallelMirrors) {
   RayCounts rays;
   Image img = encodeImage(renderReference(scene, bvh, CpuOptions{}, &rays), 1.0);
   EXPECT_EQ(rays.primary, 1u);
-  EXPECT_EQ(rays.reflection, static_cast<std::uint64_t>(kDepth));
+  EXPECT_EQ(rays.secondary, static_cast<std::uint64_t>(kDepth));
   EXPECT_EQ(rays.nonFinite, 0u);
   for (int c = 0; c < 3; ++c) {
     double steps = 255.0 * parallelMirrorsRadiance(kParallelMirrorChannels[c], kDepth);

@@ -43,9 +43,9 @@ std::pair<std::uint64_t, std::uint64_t> expectCutoffChangesNoPixel(const std::st
   Image cut = encodeImage(renderVulkan(*context, flat, forced, &cutRays, nullptr), 1.0);
   Image all = encodeImage(renderVulkan(*context, flat, exact, &exactRays, nullptr), 1.0);
   EXPECT_TRUE(imagesClose("gpu-cutoff/" + name, cut, all, 0, 0));
-  EXPECT_LE(cutRays.reflection, exactRays.reflection);
+  EXPECT_LE(cutRays.secondary, exactRays.secondary);
   EXPECT_EQ(context->validationMessages(), 0);
-  return {cutRays.reflection, exactRays.reflection};
+  return {cutRays.secondary, exactRays.secondary};
 }
 
 }  // namespace
@@ -222,7 +222,7 @@ TEST(GpuLoopBudget, InvocationsTakingSeveralPixelsChangeNoPixel) {
                                      std::to_string(stateBytes);
             EXPECT_TRUE(imagesClose(name, image, expected, 0, 0)) << name;
             EXPECT_EQ(rays.shadow, expectedRays.shadow) << name;   // each pixel traced once
-            EXPECT_EQ(rays.reflection, expectedRays.reflection) << name;
+            EXPECT_EQ(rays.secondary, expectedRays.secondary) << name;
             EXPECT_EQ(rays.nonFinite, 0u) << name;
             if (budget == 3u) {
               EXPECT_GT(timings.suspensions, 0u) << name;

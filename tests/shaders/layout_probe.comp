@@ -77,7 +77,7 @@ void main() {
   put(ps.bounce); put(ps.sampleIndex); put(ps.pad0); put(ps.pad1);
   put(ps.trace);
   GpuCounters c = counters[1];
-  put(c.suspended); put(c.shadowRays); put(c.reflectionRays); put(c.nonFinite);
+  put(c.suspended); put(c.shadowRays); put(c.secondaryRays); put(c.nonFinite);
   GpuPathPush pp2 = pathPush[1];
   put(pp2.bandY0); put(pp2.resume); put(pp2.pad0); put(pp2.pad1);
   // The push constants: one block, not an array.
