@@ -130,11 +130,6 @@ RadianceImage renderPath(const SceneDesc& scene, VulkanPathOptions options = {},
   return image;
 }
 
-bool sameBits(const RadianceImage& a, const RadianceImage& b) {
-  return a.width == b.width && a.height == b.height && a.rgb.size() == b.rgb.size() &&
-         std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
-}
-
 // For a look at a failure: the image as a PNG (clamped, gamma 1) in the test-output folder.
 void save(const RadianceImage& r, const std::string& name) {
   Image img(r.width, r.height);

@@ -44,10 +44,6 @@ RadianceImage filled(int w, int h, float v, std::uint64_t samples) {
   return img;
 }
 
-bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
-}
-
 // A batch file as `vkrt --seed SEED --spp COUNT -o NAME.pfm` writes it (a path render).
 std::string writeBatch(const std::string& path, RadianceImage img, SampleRecord record) {
   img.text.emplace_back(kSamplesKeyword, formatSampleRecord(record));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -263,6 +264,14 @@ RunResult runCommand(const std::string& commandLine) {
 }
 
 // A test image whose every pixel differs from its neighbours in some channel.
+bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+bool sameBits(const RadianceImage& a, const RadianceImage& b) {
+  return a.width == b.width && a.height == b.height && sameBits(a.rgb, b.rgb);
+}
+
 Image gradient(int w, int h) {
   Image img(w, h);
   for (int y = 0; y < h; ++y)

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "image/image.h"
+#include "image/radiance_image.h"
 #include "gpu/context.h"
 #include "gpu/vulkan_renderer.h"
 #include "scene/scene_desc.h"
@@ -58,6 +59,10 @@ Image renderScene(const SceneDesc& scene);
 
 // A w x h image of distinct, deterministic pixel values (for image I/O tests).
 Image gradient(int w, int h);
+
+// Whether two float arrays, or two linear images of the same size, hold the same bits.
+bool sameBits(const std::vector<float>& a, const std::vector<float>& b);
+bool sameBits(const RadianceImage& a, const RadianceImage& b);
 
 // Compares two images: passes when at most `maxPixelsOver` pixels differ by more than
 // `stepTolerance` 8-bit steps in some channel. On failure writes actual.png, expected.png and
