@@ -102,7 +102,7 @@ void cutoffConstants(const SceneDesc& scene, gpu::GpuPushConstants& p) {
   p.cutoffSpecular = {toFloat(specular.x), toFloat(specular.y), toFloat(specular.z), 0.0f};
 }
 
-// The settings of SPEC-PATHTRACING in the shader's terms, and the camera.
+// The settings of doc/path-tracing.md, "Commands" in the shader's terms, and the camera.
 gpu::GpuPathParams pathParams(const SceneDesc& scene, const dvec3& origin, double scale) {
   const PathSettings& s = scene.path;
   const gpu::GpuPushConstants camera = cameraConstants(scene, origin, scale);

@@ -16,7 +16,7 @@ struct GpuScene {
   // below; lengths are multiplied by scale (a power of two), directions are as they are.
   dvec3 origin{0.0};
   double scale = 1.0;
-  gpu::GpuPushConstants push{};     // the push constants but the band's: camera (SPEC section 3), cut-off
+  gpu::GpuPushConstants push{};     // the push constants but the band's: camera (doc/scene-format.md, "Camera"), cut-off
   std::vector<gpu::GpuTriangle> triangles;
   std::vector<gpu::GpuTriangleNormals> triangleNormals;   // only for `trinormal` triangles
   std::vector<gpu::GpuSphere> spheres;
