@@ -1,8 +1,8 @@
 // The path integrators on the CPU. One path's loop follows pbrt-v4's PathIntegrator::Li: the
 // throughput `beta`, next-event estimation at each vertex, BRDF sampling for the next
 // direction, MIS weights by the power heuristic, then Russian roulette. Double precision; the
-// random numbers are gpu_types.h's, drawn by its rules ("How each backend turns these numbers
-// into a path").
+// random numbers are gpu_rng.h's, drawn by the rules of doc/design.md, "Random numbers and
+// sampling rules".
 #include "cpu/path_reference.h"
 
 #include <algorithm>
@@ -73,8 +73,10 @@ class PathIntegrator {
     switch (scene_.path.integrator) {
       case Integrator::AnalyticDirect: return analyticDirect(ray);
       case Integrator::Direct: return direct(ray, rng, counts);
-      default: return path(ray, rng, counts);
+      case Integrator::PathTracer: break;
+      case Integrator::Raytracer: break;   // never here: renderPathReference refuses it
     }
+    return path(ray, rng, counts);
   }
 
  private:
@@ -166,8 +168,9 @@ class PathIntegrator {
     return !(tMin < tMax && query_.intersect({p, dir}, tMin, tMax, true, blocker));
   }
 
-  // Point and directional lights (SPEC-PATHTRACING section 2: always sampled explicitly):
-  // f I cos / attenuation behind a shadow ray, the attenuation of SPEC.md.
+  // Point and directional lights (doc/path-tracing.md, "Emission and the other lights": always
+  // sampled explicitly): f I cos / attenuation behind a shadow ray, the attenuation of
+  // doc/scene-format.md, "Shading".
   dvec3 pointLights(const Vertex& v, RayCounts& counts) const {
     dvec3 sum(0.0);
     for (const Light& light : scene_.lights) {
@@ -266,7 +269,7 @@ class PathIntegrator {
     return radiance + pointLights(v, counts) + quadLights(v, 0, false, rng, counts);
   }
 
-  // pathtracer (SPEC-PATHTRACING section 4). Vertex b = 0 is the camera ray's hit; vertices
+  // pathtracer (doc/path-tracing.md, "Depth" and "Estimators"). Vertex b = 0 is the camera ray's hit; vertices
   // b < maxdepth scatter, and light reaching the last of them (by NEE or by hitting) counts.
   dvec3 path(Ray ray, const SampleNumbers& rng, RayCounts& counts) const {
     const PathSettings& settings = scene_.path;

@@ -64,6 +64,14 @@ inline std::string echoed(std::string_view text) {
   return escapedBytes(text.substr(0, kEchoedTokenBytes)) + "... (" + std::to_string(text.size()) + " bytes)";
 }
 
+// A token as messages quote it: in quotes, its non-printable bytes escaped, a long one cut
+// short (echoed()).
+inline std::string quoted(std::string_view token) { return "'" + echoed(token) + "'"; }
+
+// After this many warnings of one kind (unknown commands, repeated commands, ...) the rest
+// of that kind are summarised in one more: "... and N more of this kind".
+inline constexpr int kMaxWarningsPerKind = 3;
+
 // A scene that cannot be rendered. diagnostics() holds every problem found in the file, in
 // line order: at least one error, and the warnings beside them. what() lists them all, one
 // per line.

@@ -104,7 +104,7 @@ gpu::GpuCutoff cutoffConstants(const SceneDesc& scene) {
   return p;
 }
 
-// The settings of SPEC-PATHTRACING in the shader's terms, and the camera.
+// The settings of doc/path-tracing.md, "Commands" in the shader's terms, and the camera.
 gpu::GpuPathParams pathParams(const SceneDesc& scene, const gpu::GpuCamera& camera) {
   const PathSettings& s = scene.path;
   gpu::GpuPathParams p{};

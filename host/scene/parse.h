@@ -15,22 +15,13 @@ namespace vkrt {
 // Largest image edge we accept, in pixels (and so the largest image: 16384 x 16384).
 inline constexpr int kMaxImageEdge = 16384;
 
-// The most a scene file's line, and the whole file, may hold: reading stops past either
-// (a SceneError at that line), and at the first byte that is not text.
-inline constexpr std::size_t kMaxSceneLineBytes = std::size_t{1} << 20;    // 1 MiB
-inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{1} << 30;    // 1 GiB
-
-// After this many warnings of one kind (unknown commands, repeated commands, ...) the rest
-// of that kind are summarised in one more: "... and N more of this kind".
-inline constexpr int kMaxWarningsPerKind = 3;
-
 struct ParseOptions {
   bool strict = false;   // every warning is an error (for graders and CI)
 };
 
 struct ParsedScene {
   SceneDesc scene;
-  // What the file does that the format does not say but vkrt accepts (SPEC section 8),
+  // What the file does that the format does not say but vkrt accepts (doc/scene-format.md, "Warnings"),
   // in line order: each says how its line was read. Empty for a clean file.
   std::vector<Diagnostic> warnings;
 };
@@ -42,7 +33,7 @@ ParsedScene parseSceneWithWarnings(std::string_view text, const std::string& fil
                                    const ParseOptions& options = {});
 
 // Reads and parses a file. Throws IoError when it cannot be opened or read, SceneError for
-// a line or a file past the limits above, Interrupted when a signal stops a read (a FIFO).
+// a line or a file past the limits of scene_file.h, Interrupted when a signal stops a read (a FIFO).
 ParsedScene parseSceneFileWithWarnings(const std::string& path, const ParseOptions& options = {});
 
 // The same, for callers with no use for warnings (tests, tools): the warnings are dropped.

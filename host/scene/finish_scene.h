@@ -1,0 +1,49 @@
+// What happens after the last command: what only the whole file can say is checked (a `size`
+// and a `camera`; the integrator's settings, the integrator being known only now), the
+// settings the integrator does not use keep their defaults, the path integrators' Phong lobes
+// are clamped, and quad lights become geometry (doc/path-tracing.md, "Commands" and "Warnings
+// and errors"; doc/scene-format.md, "Warnings").
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "scene/commands.h"
+#include "scene/diagnostic_log.h"
+#include "scene/scene_desc.h"
+
+namespace vkrt {
+
+// A Phong exponent above this is clamped to it for the path integrators: a lobe narrower
+// than float32 resolves, whose normalisation (s + 2) / 2 pi squared by MIS would overflow
+// (doc/robustness.md, "Numerical robustness").
+inline constexpr double kMaxPathShininess = 1e9;
+
+// A settings command (integrator_table.h) and its line.
+struct SettingLine {
+  Command command;
+  int line;
+};
+
+// What the commands leave for the end of file: the lines of what is checked only there
+// (0: no such line), and what waits for the integrator.
+struct Deferred {
+  int firstSizeLine = 0;                 // the first `size`
+  int cameraLine = 0;                    // the last `camera`
+  int beforeSizeLine = 0;                // the first command before `size`...
+  std::string_view beforeSizeCommand;    // ...and its name
+  int shadedSurfaceLine = 0;             // the first object with a diffuse or specular colour
+  int integratorLine = 0;                // the last `integrator`
+  int lightSamplesLine = 0;              // the last `lightsamples`
+  int lightStratifyLine = 0;             // of the last `lightstratify`, when it said `on`
+  int unlimitedDepthLine = 0;            // of the last `maxdepth`, when it said -1
+  std::vector<int> steepShininessLines;  // `shininess` lines above kMaxPathShininess
+  std::vector<SettingLine> settings;     // every settings command, in file order
+  std::vector<QuadLight> quadLights;     // geometry once the integrator is known to use them
+};
+
+// Ends `scene`, whose file's last line is `lastLine` (1 for an empty file), with what the
+// commands left in `deferred`; the diagnostics go to `log`.
+void finishScene(SceneDesc& scene, const Deferred& deferred, int lastLine, DiagnosticLog& log);
+
+}  // namespace vkrt
