@@ -100,27 +100,6 @@ void checkUnlimitedDepth(const SceneDesc& scene, const Deferred& deferred, const
              "'russianroulette on'");
 }
 
-// The light, its own material (emission L and nothing else), and two triangles a, a+ac,
-// a+ab+ac and a, a+ab+ac, a+ab: each has face normal cross(p1 - p0, p2 - p0) along
-// cross(ac, ab), the side that emits.
-void addQuadLight(SceneDesc& scene, const QuadLight& q) {
-  const int index = static_cast<int>(scene.quadLights.size());
-  scene.quadLights.push_back(q);
-  Material m;
-  m.ambient = m.diffuse = m.specular = dvec3(0.0);
-  m.emission = q.radiance;
-  m.quadLight = index;
-  scene.materials.push_back(m);
-  const auto material = static_cast<std::uint32_t>(scene.materials.size() - 1);
-  const dvec3 a = q.a, b = q.a + q.ab, c = q.a + q.ab + q.ac, d = q.a + q.ac;
-  for (const auto& corners : {std::array<dvec3, 3>{a, d, c}, std::array<dvec3, 3>{a, c, b}}) {
-    Triangle t;
-    for (int k = 0; k < 3; ++k) t.p[k] = corners[k];
-    t.material = material;
-    scene.triangles.push_back(t);
-  }
-}
-
 // A Whitted scene with no point or directional light shows only ambient and emission. Said
 // when a light would change the image: some surface has a diffuse or specular colour (the
 // course's scene2 and scene3 colour theirs with ambient alone, as their authors meant). At
@@ -142,6 +121,27 @@ void warnIfUnlit(const SceneDesc& scene, const Deferred& deferred, DiagnosticLog
 }
 
 }  // namespace
+
+// The light, its own material (emission L and nothing else), and two triangles a, a+ac,
+// a+ab+ac and a, a+ab+ac, a+ab: each has face normal cross(p1 - p0, p2 - p0) along
+// cross(ac, ab), the side that emits.
+void addQuadLight(SceneDesc& scene, const QuadLight& q) {
+  const int index = static_cast<int>(scene.quadLights.size());
+  scene.quadLights.push_back(q);
+  Material m;
+  m.ambient = m.diffuse = m.specular = dvec3(0.0);
+  m.emission = q.radiance;
+  m.quadLight = index;
+  scene.materials.push_back(m);
+  const auto material = static_cast<std::uint32_t>(scene.materials.size() - 1);
+  const dvec3 a = q.a, b = q.a + q.ab, c = q.a + q.ab + q.ac, d = q.a + q.ac;
+  for (const auto& corners : {std::array<dvec3, 3>{a, d, c}, std::array<dvec3, 3>{a, c, b}}) {
+    Triangle t;
+    for (int k = 0; k < 3; ++k) t.p[k] = corners[k];
+    t.material = material;
+    scene.triangles.push_back(t);
+  }
+}
 
 void finishScene(SceneDesc& scene, const Deferred& deferred, int lastLine, DiagnosticLog& log) {
   checkRequired(deferred, lastLine, log);

@@ -42,6 +42,11 @@ struct Deferred {
   std::vector<QuadLight> quadLights;     // geometry once the integrator is known to use them
 };
 
+// `quadLight a ab ac L` as geometry: the light, its own material (emission L and nothing
+// else) and two triangles facing cross(ac, ab), the side that emits. Tests build their quad
+// lights with it too, so that they are the parser's.
+void addQuadLight(SceneDesc& scene, const QuadLight& q);
+
 // Ends `scene`, whose file's last line is `lastLine` (1 for an empty file), with what the
 // commands left in `deferred`; the diagnostics go to `log`.
 void finishScene(SceneDesc& scene, const Deferred& deferred, int lastLine, DiagnosticLog& log);

@@ -23,42 +23,6 @@ namespace {
 
 // ---- scenes --------------------------------------------------------------------------------
 
-std::uint32_t addMaterial(SceneDesc& s, Material m) {
-  s.materials.push_back(m);
-  return static_cast<std::uint32_t>(s.materials.size() - 1);
-}
-
-void addTriangle(SceneDesc& s, dvec3 a, dvec3 b, dvec3 c, std::uint32_t material) {
-  Triangle t;
-  t.p[0] = a;
-  t.p[1] = b;
-  t.p[2] = c;
-  t.material = material;
-  s.triangles.push_back(t);
-}
-
-// The quad a + u ab + v ac as two triangles whose face normal is normalize(cross(ab, ac)).
-void addQuad(SceneDesc& s, dvec3 a, dvec3 ab, dvec3 ac, std::uint32_t material) {
-  addTriangle(s, a, a + ab, a + ab + ac, material);
-  addTriangle(s, a, a + ab + ac, a + ac, material);
-}
-
-// `quadLight a ab ac L` as the parser makes it (scene_desc.h): the light and its two
-// triangles, facing cross(ac, ab), with a material that names it.
-void addQuadLight(SceneDesc& s, dvec3 a, dvec3 ab, dvec3 ac, dvec3 radiance) {
-  QuadLight q;
-  q.a = a;
-  q.ab = ab;
-  q.ac = ac;
-  q.radiance = radiance;
-  s.quadLights.push_back(q);
-  Material m;
-  m.ambient = dvec3(0.0);
-  m.emission = radiance;
-  m.quadLight = static_cast<int>(s.quadLights.size() - 1);
-  addQuad(s, a, ac, ab, addMaterial(s, m));
-}
-
 SceneDesc baseScene(int w, int h, Integrator integrator) {
   SceneDesc s;
   s.width = w;
@@ -95,15 +59,15 @@ SceneDesc boxScene(int size) {
   ggx.roughness = 0.3;
   std::uint32_t metal = addMaterial(s, ggx);
   // Walls facing inward: floor, ceiling, back, left, right.
-  addQuad(s, dvec3(-1, 0, 1), dvec3(2, 0, 0), dvec3(0, 0, -2), white);
-  addQuad(s, dvec3(-1, 2, -1), dvec3(2, 0, 0), dvec3(0, 0, 2), white);
-  addQuad(s, dvec3(-1, 0, -1), dvec3(2, 0, 0), dvec3(0, 2, 0), white);
-  addQuad(s, dvec3(-1, 0, 1), dvec3(0, 0, -2), dvec3(0, 2, 0), red);
-  addQuad(s, dvec3(1, 0, -1), dvec3(0, 0, 2), dvec3(0, 2, 0), green);
+  addQuad(s, dvec3(-1, 0, 1), dvec3(0, 0, -2), dvec3(2, 0, 0), white);
+  addQuad(s, dvec3(-1, 2, -1), dvec3(0, 0, 2), dvec3(2, 0, 0), white);
+  addQuad(s, dvec3(-1, 0, -1), dvec3(0, 2, 0), dvec3(2, 0, 0), white);
+  addQuad(s, dvec3(-1, 0, 1), dvec3(0, 2, 0), dvec3(0, 0, -2), red);
+  addQuad(s, dvec3(1, 0, -1), dvec3(0, 2, 0), dvec3(0, 0, 2), green);
   // A box (its top and two sides that face the camera).
-  addQuad(s, dvec3(-0.6, 0.6, 0.0), dvec3(0.5, 0, 0), dvec3(0, 0, -0.5), glossy);
-  addQuad(s, dvec3(-0.6, 0.0, 0.0), dvec3(0.5, 0, 0), dvec3(0, 0.6, 0), glossy);
-  addQuad(s, dvec3(-0.1, 0.0, 0.0), dvec3(0, 0, -0.5), dvec3(0, 0.6, 0), glossy);
+  addQuad(s, dvec3(-0.6, 0.6, 0.0), dvec3(0, 0, -0.5), dvec3(0.5, 0, 0), glossy);
+  addQuad(s, dvec3(-0.6, 0.0, 0.0), dvec3(0, 0.6, 0), dvec3(0.5, 0, 0), glossy);
+  addQuad(s, dvec3(-0.1, 0.0, 0.0), dvec3(0, 0.6, 0), dvec3(0, 0, -0.5), glossy);
   Sphere ball;
   ball.center = dvec3(0.45, 0.35, 0.2);
   ball.radius = 0.35;
@@ -219,7 +183,7 @@ SceneDesc floorUnderSquareLight(double h, bool cornerAbove, dvec3 kd, dvec3 radi
   Material floor;
   floor.ambient = dvec3(0.0);
   floor.diffuse = kd;
-  addQuad(s, dvec3(-10, 0, 10), dvec3(20, 0, 0), dvec3(0, 0, -20), addMaterial(s, floor));
+  addQuad(s, dvec3(-10, 0, 10), dvec3(0, 0, -20), dvec3(20, 0, 0), addMaterial(s, floor));
   dvec3 a = cornerAbove ? dvec3(0, h, 0) : dvec3(-1, h, -1);
   addQuadLight(s, a, dvec3(0, 0, 2), dvec3(2, 0, 0), radiance);   // cross(ac, ab) = -y: facing down
   return s;
@@ -239,12 +203,12 @@ SceneDesc furnaceScene(double albedo, double emission) {
   m.emission = dvec3(emission);
   std::uint32_t wall = addMaterial(s, m);
   const dvec3 x(2, 0, 0), y(0, 2, 0), z(0, 0, 2), o(-1, -1, -1);
-  addQuad(s, o, x, y, wall);           // back (z = -1), facing +z
-  addQuad(s, o + z, y, x, wall);       // front, facing -z
-  addQuad(s, o, z, x, wall);           // floor, facing +y
-  addQuad(s, o + y, x, z, wall);       // ceiling, facing -y
-  addQuad(s, o, y, z, wall);           // left, facing +x
-  addQuad(s, o + x, z, y, wall);       // right, facing -x
+  addQuad(s, o, y, x, wall);           // back (z = -1), facing +z
+  addQuad(s, o + z, x, y, wall);       // front, facing -z
+  addQuad(s, o, x, z, wall);           // floor, facing +y
+  addQuad(s, o + y, z, x, wall);       // ceiling, facing -y
+  addQuad(s, o, z, y, wall);           // left, facing +x
+  addQuad(s, o + x, y, z, wall);       // right, facing -x
   return s;
 }
 

@@ -6,6 +6,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/finish_scene.h"
+
 namespace vkrt::test {
 
 std::uint32_t addMaterial(SceneDesc& scene, const Material& m) {
@@ -26,11 +28,7 @@ void addQuad(SceneDesc& scene, const dvec3& a, const dvec3& ab, const dvec3& ac,
 void addQuadLight(SceneDesc& scene, const dvec3& a, const dvec3& ab, const dvec3& ac, const dvec3& radiance) {
   QuadLight q;
   q.a = a, q.ab = ab, q.ac = ac, q.radiance = radiance;
-  scene.quadLights.push_back(q);
-  Material m;
-  m.ambient = dvec3(0.0);
-  m.quadLight = static_cast<int>(scene.quadLights.size() - 1);
-  addQuad(scene, a, ab, ac, addMaterial(scene, m));
+  vkrt::addQuadLight(scene, q);
 }
 
 void setCamera(SceneDesc& scene, const dvec3& from, const dvec3& at, double fovyDegrees, int w, int h) {

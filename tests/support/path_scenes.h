@@ -17,8 +17,8 @@ std::uint32_t addMaterial(SceneDesc& scene, const Material& m);
 // normalize(cross(ac, ab)) (the side a quad light emits on).
 void addQuad(SceneDesc& scene, const dvec3& a, const dvec3& ab, const dvec3& ac, std::uint32_t material);
 
-// `quadLight a ab ac L` as the parser makes it: the light, and its two triangles with a
-// material of its own (black, quadLight set).
+// `quadLight a ab ac L` as the parser makes it (scene/finish_scene.h): the light, its own
+// material and its two triangles, facing cross(ac, ab).
 void addQuadLight(SceneDesc& scene, const dvec3& a, const dvec3& ab, const dvec3& ac, const dvec3& radiance);
 
 // A camera at `from` looking at `at`, image w x h.
