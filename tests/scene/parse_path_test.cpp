@@ -16,19 +16,6 @@ using namespace vkrt::test;
 
 namespace {
 
-const std::string kHeader = "size 64 48\ncamera 0 0 5 0 0 0 0 1 0 45\n";
-
-// Parses with --strict: these scenes must give no warning at all.
-SceneDesc parse(const std::string& body) {
-  return parseSceneWithWarnings(kHeader + body, "t.test", ParseOptions{true}).scene;
-}
-
-void expectNear(const dvec3& a, const dvec3& b, double eps = 1e-12) {
-  EXPECT_NEAR(a.x, b.x, eps);
-  EXPECT_NEAR(a.y, b.y, eps);
-  EXPECT_NEAR(a.z, b.z, eps);
-}
-
 dvec3 faceNormal(const Triangle& t) { return glm::normalize(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])); }
 
 // The triangles whose material belongs to quad light `index`.
@@ -74,7 +61,7 @@ void expectQuadGeometry(const SceneDesc& s, int index) {
 }  // namespace
 
 TEST(ParsePath, Defaults) {
-  SceneDesc s = parse("sphere 0 0 0 1\n");
+  SceneDesc s = parseBodyStrict("sphere 0 0 0 1\n");
   EXPECT_EQ(s.path.integrator, Integrator::Raytracer);
   EXPECT_EQ(s.path.spp, 1);
   EXPECT_EQ(s.path.lightSamples, 1);
@@ -92,7 +79,7 @@ TEST(ParsePath, Defaults) {
 }
 
 TEST(ParsePath, EverySettingIsRead) {
-  SceneDesc s = parse(
+  SceneDesc s = parseBodyStrict(
       "integrator pathtracer\nspp 256\nlightsamples 16\nlightstratify on\nnexteventestimation mis\n"
       "russianroulette on\nimportancesampling brdf\ngamma 2.2\nmaxdepth -1\n");
   EXPECT_EQ(s.path.integrator, Integrator::PathTracer);
@@ -107,37 +94,37 @@ TEST(ParsePath, EverySettingIsRead) {
 }
 
 TEST(ParsePath, EveryKeywordValue) {
-  EXPECT_EQ(parse("integrator raytracer\n").path.integrator, Integrator::Raytracer);
-  EXPECT_EQ(parse("integrator analyticdirect\n").path.integrator, Integrator::AnalyticDirect);
-  EXPECT_EQ(parse("integrator direct\n").path.integrator, Integrator::Direct);
-  EXPECT_EQ(parse("integrator pathtracer\n").path.integrator, Integrator::PathTracer);
+  EXPECT_EQ(parseBodyStrict("integrator raytracer\n").path.integrator, Integrator::Raytracer);
+  EXPECT_EQ(parseBodyStrict("integrator analyticdirect\n").path.integrator, Integrator::AnalyticDirect);
+  EXPECT_EQ(parseBodyStrict("integrator direct\n").path.integrator, Integrator::Direct);
+  EXPECT_EQ(parseBodyStrict("integrator pathtracer\n").path.integrator, Integrator::PathTracer);
   const std::string pt = "integrator pathtracer\n";
-  EXPECT_EQ(parse(pt + "nexteventestimation off\n").path.nextEvent, NextEvent::Off);
-  EXPECT_EQ(parse(pt + "nexteventestimation on\n").path.nextEvent, NextEvent::On);
-  EXPECT_EQ(parse(pt + "nexteventestimation mis\n").path.nextEvent, NextEvent::Mis);
-  EXPECT_EQ(parse(pt + "importancesampling hemisphere\n").path.sampling, Sampling::Hemisphere);
-  EXPECT_EQ(parse(pt + "importancesampling cosine\n").path.sampling, Sampling::Cosine);
-  EXPECT_EQ(parse(pt + "importancesampling brdf\n").path.sampling, Sampling::Brdf);
-  EXPECT_TRUE(parse(pt + "russianroulette on\n").path.russianRoulette);
-  EXPECT_FALSE(parse(pt + "russianroulette on\nrussianroulette off\n").path.russianRoulette);
-  EXPECT_FALSE(parse(pt + "lightstratify on\nlightstratify off\nlightsamples 3\n").path.lightStratify);
-  EXPECT_EQ(parse(pt + "brdf ggx\nsphere 0 0 0 1\n").materials[0].brdf, BrdfModel::Ggx);
-  EXPECT_EQ(parse(pt + "brdf ggx\nbrdf phong\nsphere 0 0 0 1\n").materials[0].brdf, BrdfModel::Phong);
+  EXPECT_EQ(parseBodyStrict(pt + "nexteventestimation off\n").path.nextEvent, NextEvent::Off);
+  EXPECT_EQ(parseBodyStrict(pt + "nexteventestimation on\n").path.nextEvent, NextEvent::On);
+  EXPECT_EQ(parseBodyStrict(pt + "nexteventestimation mis\n").path.nextEvent, NextEvent::Mis);
+  EXPECT_EQ(parseBodyStrict(pt + "importancesampling hemisphere\n").path.sampling, Sampling::Hemisphere);
+  EXPECT_EQ(parseBodyStrict(pt + "importancesampling cosine\n").path.sampling, Sampling::Cosine);
+  EXPECT_EQ(parseBodyStrict(pt + "importancesampling brdf\n").path.sampling, Sampling::Brdf);
+  EXPECT_TRUE(parseBodyStrict(pt + "russianroulette on\n").path.russianRoulette);
+  EXPECT_FALSE(parseBodyStrict(pt + "russianroulette on\nrussianroulette off\n").path.russianRoulette);
+  EXPECT_FALSE(parseBodyStrict(pt + "lightstratify on\nlightstratify off\nlightsamples 3\n").path.lightStratify);
+  EXPECT_EQ(parseBodyStrict(pt + "brdf ggx\nsphere 0 0 0 1\n").materials[0].brdf, BrdfModel::Ggx);
+  EXPECT_EQ(parseBodyStrict(pt + "brdf ggx\nbrdf phong\nsphere 0 0 0 1\n").materials[0].brdf, BrdfModel::Phong);
 }
 
 // `maxdepth -1` is no limit, for every integrator but the Whitted one, whichever line comes
 // first; a later maxdepth replaces it.
 TEST(ParsePath, UnlimitedDepthForThePathIntegrators) {
-  EXPECT_EQ(parse("maxdepth -1\nintegrator pathtracer\nrussianroulette on\n").maxDepth, -1);
-  EXPECT_EQ(parse("integrator direct\nmaxdepth -1\n").maxDepth, -1);
-  EXPECT_EQ(parse("integrator analyticdirect\nmaxdepth -1\n").maxDepth, -1);
-  EXPECT_EQ(parse("maxdepth 0\nintegrator pathtracer\n").maxDepth, 0);
-  EXPECT_EQ(parseScene(kHeader + "maxdepth -1\nmaxdepth 3\n", "t.test").maxDepth, 3);   // raytracer: fine
+  EXPECT_EQ(parseBodyStrict("maxdepth -1\nintegrator pathtracer\nrussianroulette on\n").maxDepth, -1);
+  EXPECT_EQ(parseBodyStrict("integrator direct\nmaxdepth -1\n").maxDepth, -1);
+  EXPECT_EQ(parseBodyStrict("integrator analyticdirect\nmaxdepth -1\n").maxDepth, -1);
+  EXPECT_EQ(parseBodyStrict("maxdepth 0\nintegrator pathtracer\n").maxDepth, 0);
+  EXPECT_EQ(parseBody("maxdepth -1\nmaxdepth 3\n").maxDepth, 3);   // raytracer: fine
 }
 
 // `brdf` and `roughness` are material state, captured per object like `diffuse`.
 TEST(ParsePath, BrdfAndRoughnessAreCapturedPerObject) {
-  SceneDesc s = parse(
+  SceneDesc s = parseBodyStrict(
       "integrator pathtracer\nbrdf ggx\nroughness 0.25\nsphere 0 0 0 1\nroughness 0.5\nsphere 1 0 0 1\n"
       "brdf phong\nsphere 2 0 0 1\n");
   ASSERT_EQ(s.spheres.size(), 3u);
@@ -154,7 +141,7 @@ TEST(ParsePath, BrdfAndRoughnessAreCapturedPerObject) {
 }
 
 TEST(ParsePath, QuadLightIsALightAndTwoTriangles) {
-  SceneDesc s = parse("integrator direct\ndiffuse 1 0 0\nquadLight -1 1 -1  0 0 2  2 0 0  5 4 3\n");
+  SceneDesc s = parseBodyStrict("integrator direct\ndiffuse 1 0 0\nquadLight -1 1 -1  0 0 2  2 0 0  5 4 3\n");
   ASSERT_EQ(s.quadLights.size(), 1u);
   const QuadLight& q = s.quadLights[0];
   EXPECT_EQ(q.a, dvec3(-1, 1, -1));
@@ -174,7 +161,7 @@ TEST(ParsePath, QuadLightIsALightAndTwoTriangles) {
 // Corners by the current transform: a as a point, ab and ac as differences of transformed
 // corners; the normal follows the transformed sides, also under a mirroring scale.
 TEST(ParsePath, QuadLightUnderATransform) {
-  SceneDesc s = parse(
+  SceneDesc s = parseBodyStrict(
       "integrator pathtracer\npushTransform\ntranslate 1 2 3\nrotate 0 0 1 90\nscale 2 3 4\n"
       "quadLight 1 0 0  0 1 0  0 0 1  7 7 7\npopTransform\nscale -1 1 1\nquadLight 0 0 0  1 0 0  0 1 0  1 1 1\n"
       "quadLight 0 5 0  1 0 0  0 1 0  2 2 2\n");
@@ -206,7 +193,7 @@ TEST(ParsePath, QuadLightUnderATransform) {
 // The integrator may come after the quad light; the light's material does not split the
 // material of the objects around it.
 TEST(ParsePath, IntegratorAfterQuadLight) {
-  SceneDesc s = parse(
+  SceneDesc s = parseBodyStrict(
       "vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\ndiffuse 0.5 0.5 0.5\ntri 0 1 2\n"
       "quadLight 0 2 0  1 0 0  0 0 1  1 1 1\ntri 0 2 1\nintegrator analyticdirect\n");
   ASSERT_EQ(s.quadLights.size(), 1u);

@@ -4,25 +4,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/parse.h"
+#include "test_support.h"
 
 using namespace vkrt;
-
-namespace {
-
-const char* kHeader = "size 64 48\ncamera 0 0 5 0 0 0 0 1 0 45\n";
-
-SceneDesc parse(const std::string& body) { return parseScene(std::string(kHeader) + body, "t.test"); }
-
-void expectNear(const dvec3& a, const dvec3& b, double eps = 1e-12) {
-  EXPECT_NEAR(a.x, b.x, eps);
-  EXPECT_NEAR(a.y, b.y, eps);
-  EXPECT_NEAR(a.z, b.z, eps);
-}
-
-}  // namespace
+using namespace vkrt::test;
 
 TEST(Parse, Defaults) {
-  SceneDesc s = parse("sphere 0 0 0 1\n");
+  SceneDesc s = parseBody("sphere 0 0 0 1\n");
   EXPECT_EQ(s.width, 64);
   EXPECT_EQ(s.height, 48);
   EXPECT_EQ(s.maxDepth, 5);
@@ -69,7 +57,7 @@ TEST(Parse, FileRulesOfSection1) {
 }
 
 TEST(Parse, MaterialsAreCapturedPerObject) {
-  SceneDesc s = parse(
+  SceneDesc s = parseBody(
       "ambient 0.1 0.2 0.3\ndiffuse 1 0 0\nspecular 0 1 0\nemission 0 0 1\nshininess 7\nsphere 0 0 0 1\n"
       "sphere 1 0 0 1\n"
       "diffuse 0 0.5 0\nsphere 2 0 0 1\n");
@@ -88,17 +76,17 @@ TEST(Parse, MaterialsAreCapturedPerObject) {
 
 TEST(Parse, TransformsRightMultiplyInFileOrder) {
   // translate then scale: p' = T * S * p.
-  SceneDesc s = parse("vertex 1 1 1\ntranslate 10 0 0\nscale 2 3 4\ntri 0 0 0\n");
+  SceneDesc s = parseBody("vertex 1 1 1\ntranslate 10 0 0\nscale 2 3 4\ntri 0 0 0\n");
   expectNear(s.triangles[0].p[0], {12, 3, 4});
 }
 
 TEST(Parse, RotateIsRightHandedDegreesAndNormalisesTheAxis) {
-  SceneDesc s = parse("vertex 1 0 0\nrotate 0 0 5 90\ntri 0 0 0\n");
+  SceneDesc s = parseBody("vertex 1 0 0\nrotate 0 0 5 90\ntri 0 0 0\n");
   expectNear(s.triangles[0].p[0], {0, 1, 0});
 }
 
 TEST(Parse, PushAndPopRestoreTheTransform) {
-  SceneDesc s = parse(
+  SceneDesc s = parseBody(
       "vertex 0 0 0\ntranslate 1 0 0\npushTransform\ntranslate 0 1 0\ntri 0 0 0\npopTransform\ntri 0 0 0\n"
       "pushTransform\npushTransform\n");   // unbalanced pushes at the end are valid
   ASSERT_EQ(s.triangles.size(), 2u);
@@ -107,7 +95,7 @@ TEST(Parse, PushAndPopRestoreTheTransform) {
 }
 
 TEST(Parse, SphereKeepsItsTransformAndInverse) {
-  SceneDesc s = parse("translate 1 2 3\nscale 2 1 1\nsphere 0.5 0 0 0.25\n");
+  SceneDesc s = parseBody("translate 1 2 3\nscale 2 1 1\nsphere 0.5 0 0 0.25\n");
   ASSERT_EQ(s.spheres.size(), 1u);
   const Sphere& sp = s.spheres[0];
   expectNear(sp.center, {0.5, 0, 0});
@@ -122,7 +110,7 @@ TEST(Parse, SphereKeepsItsTransformAndInverse) {
 
 TEST(Parse, TriNormalTransformsNormalsWithTheInverseTranspose) {
   // Scaling x by 2 turns the normal (1,1,0)/sqrt2 into (1,2,0)/sqrt5 (inverse transpose).
-  SceneDesc s = parse(
+  SceneDesc s = parseBody(
       "maxvertnorms 3\nvertexnormal 0 0 0 1 1 0\nvertexnormal 1 0 0 1 1 0\nvertexnormal 0 1 0 1 1 0\n"
       "scale 2 1 1\ntrinormal 0 1 2\n");
   ASSERT_EQ(s.triangles.size(), 1u);
@@ -133,7 +121,7 @@ TEST(Parse, TriNormalTransformsNormalsWithTheInverseTranspose) {
 }
 
 TEST(Parse, TriUsesVertexListAndTriNormalUsesItsOwn) {
-  SceneDesc s = parse(
+  SceneDesc s = parseBody(
       "maxverts 3\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nvertexnormal 5 5 5 0 0 1\n"
       "vertexnormal 6 5 5 0 0 1\nvertexnormal 5 6 5 0 0 1\ntri 0 1 2\ntrinormal 0 1 2\n");
   ASSERT_EQ(s.triangles.size(), 2u);
@@ -143,7 +131,7 @@ TEST(Parse, TriUsesVertexListAndTriNormalUsesItsOwn) {
 }
 
 TEST(Parse, LightsAreTransformedAndKeepTheirAttenuation) {
-  SceneDesc s = parse(
+  SceneDesc s = parseBody(
       "point 1 0 0 1 1 1\nattenuation 1 0.5 0.25\ntranslate 0 10 0\nrotate 0 0 1 90\n"
       "point 1 0 0 0.5 0.5 0.5\ndirectional 1 0 0 0.2 0.3 0.4\n");
   ASSERT_EQ(s.lights.size(), 3u);
@@ -158,7 +146,7 @@ TEST(Parse, LightsAreTransformedAndKeepTheirAttenuation) {
 }
 
 TEST(Parse, LaterCameraWins) {
-  SceneDesc s = parse("camera 0 0 9 0 0 0 0 1 0 60\n");
+  SceneDesc s = parseBody("camera 0 0 9 0 0 0 0 1 0 60\n");
   expectNear(s.camera.from, {0, 0, 9});
   EXPECT_EQ(s.camera.fovyDegrees, 60.0);
 }

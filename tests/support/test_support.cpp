@@ -264,6 +264,22 @@ RunResult runCommand(const std::string& commandLine) {
 }
 
 // A test image whose every pixel differs from its neighbours in some channel.
+namespace {
+const std::string kBodyHeader = "size 64 48\ncamera 0 0 5 0 0 0 0 1 0 45\n";
+}  // namespace
+
+SceneDesc parseBody(const std::string& body) { return parseScene(kBodyHeader + body, "t.test"); }
+
+SceneDesc parseBodyStrict(const std::string& body) {
+  return parseSceneWithWarnings(kBodyHeader + body, "t.test", ParseOptions{true}).scene;
+}
+
+void expectNear(const dvec3& a, const dvec3& b, double eps) {
+  EXPECT_NEAR(a.x, b.x, eps);
+  EXPECT_NEAR(a.y, b.y, eps);
+  EXPECT_NEAR(a.z, b.z, eps);
+}
+
 bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }

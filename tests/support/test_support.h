@@ -60,6 +60,15 @@ Image renderScene(const SceneDesc& scene);
 // A w x h image of distinct, deterministic pixel values (for image I/O tests).
 Image gradient(int w, int h);
 
+// The scene of `body` after a 64x48 `size` and a camera at (0, 0, 5) looking at the origin,
+// as file "t.test"; the strict one makes every warning an error (--strict), for scenes that
+// must give none.
+SceneDesc parseBody(const std::string& body);
+SceneDesc parseBodyStrict(const std::string& body);
+
+// Each component of a within eps of b's.
+void expectNear(const dvec3& a, const dvec3& b, double eps = 1e-12);
+
 // Whether two float arrays, or two linear images of the same size, hold the same bits.
 bool sameBits(const std::vector<float>& a, const std::vector<float>& b);
 bool sameBits(const RadianceImage& a, const RadianceImage& b);
