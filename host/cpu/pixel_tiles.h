@@ -21,7 +21,7 @@ float toFloat(double c);
 // `threads` threads (0: every hardware thread) and stores its colour in `image` (the region's
 // size) as float, counting non-finite colours. After each tile, progress(units done, units
 // total), with `unitsPerPixel` units a pixel (1, or its samples); `stop` is polled between
-// tiles. The workers' ray counts are added into *counts.
+// tiles. The workers' ray counts, summed, are stored in *counts (what it held is replaced).
 void shadeTiles(const PixelRect& region, int threads, std::uint64_t unitsPerPixel,
                 const std::function<dvec3(int x, int y, RayCounts& counts)>& shade, RadianceImage& image,
                 const std::function<void(std::uint64_t, std::uint64_t)>& progress, const std::function<bool()>& stop,
