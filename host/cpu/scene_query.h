@@ -19,7 +19,8 @@ class SceneQuery {
   // must outlive the query.
   SceneQuery(const SceneDesc& scene, const Bvh& bvh);
 
-  // Nearest hit with t in (tMin, tMax), or the first one found when anyHit.
+  // Nearest hit with t in (tMin, tMax), or the first one found when anyHit. On false, `hit`
+  // holds nothing to use (its t is overwritten).
   bool intersect(const Ray& ray, double tMin, double tMax, bool anyHit, Hit& hit) const;
 
   // The unit normal at hit point p (doc/scene-format.md, "Transforms": never flipped toward the ray); returns the
