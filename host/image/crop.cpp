@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "errors.h"
-#include "image/pfm.h"
+#include "image/image_file.h"
 
 namespace vkrt {
 namespace {
@@ -98,7 +98,7 @@ std::vector<std::pair<std::string, std::string>> readImageText(const std::string
   const auto fileSize = static_cast<std::uint64_t>(std::max<std::streamoff>(0, in.tellg()));
   in.seekg(0);
   if (fileSize == 0) throw cutShort("the file is empty");
-  if (isPfmFile(path)) return readPfmText(path);
+  if (isFloatImageFile(path)) return readFloatImageText(path);
   std::vector<std::pair<std::string, std::string>> text;
   unsigned char signature[8] = {};
   in.read(reinterpret_cast<char*>(signature), 8);

@@ -1,4 +1,5 @@
-// The writer for a file name: PFM for .pfm, PPM for .ppm, PNG otherwise.
+// The writer for a file name (PFM for .pfm, PPM for .ppm, PNG otherwise), and the reader of a
+// linear-float file.
 #include "image/image_file.h"
 
 #include <cctype>
@@ -50,6 +51,16 @@ void writeImageAtomic(const RadianceImage& image, const std::string& path, doubl
     case ImageFormat::Ppm: writePpmAtomic(encodeImage(image, gamma), path); break;
     case ImageFormat::Png: writePngAtomic(image, gamma, path); break;   // encoded row by row
   }
+}
+
+bool isFloatImageFile(const std::string& path) { return isPfmFile(path); }
+
+RadianceImage readFloatImage(const std::string& path) { return readPfm(path); }
+
+RadianceImage readFloatImageInfo(const std::string& path) { return readPfmInfo(path); }
+
+std::vector<std::pair<std::string, std::string>> readFloatImageText(const std::string& path) {
+  return readPfmText(path);
 }
 
 }  // namespace vkrt

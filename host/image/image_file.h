@@ -1,9 +1,11 @@
-// Image output by file name: `.pfm` (any case) writes a Portable Float Map (linear,
-// unquantized), `.ppm` binary PPM, anything else PNG. The one place that decides which writer
-// a path gets.
+// Image files by format: `.pfm` (any case) writes a Portable Float Map (linear,
+// unquantized), `.ppm` binary PPM, anything else PNG; and linear-float files are read here.
+// The one place that decides which writer a path gets and which reader a float file needs.
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "image/image.h"
 #include "image/radiance_image.h"
@@ -24,6 +26,17 @@ bool hasImageExtension(const std::string& path);
 // UsageError for a .pfm name (bytes are no linear radiance: PFM is written from a
 // RadianceImage).
 void writeImageAtomic(const Image& image, const std::string& path);
+
+// Linear-float image files (today PFM), read by what gathers float tiles and sample batches
+// (merge.cpp) and their records (crop.cpp), which ask these rather than a format by name.
+// Whether the file at `path` is one (by its first bytes, whatever its name).
+bool isFloatImageFile(const std::string& path);
+// Reads one whole (its records into `text`; `samples` left at 1), or only its size and
+// records after checking that its pixels are all there. Throws IoError.
+RadianceImage readFloatImage(const std::string& path);
+RadianceImage readFloatImageInfo(const std::string& path);
+// Its records. Throws IoError.
+std::vector<std::pair<std::string, std::string>> readFloatImageText(const std::string& path);
 
 // Writes a render: .pfm as it is (linear float, with its records), .png and .ppm encoded with
 // `gamma` (image/encode.h). Throws IoError.

@@ -14,7 +14,7 @@
 #include "counted.h"
 #include "errors.h"
 #include "image/crop.h"
-#include "image/pfm.h"
+#include "image/image_file.h"
 #include "image/png.h"
 #include "image/render_identity.h"
 #include "image/row_sink.h"
@@ -95,11 +95,11 @@ struct Tile {
   Records text;
 };
 
-Tile readTileRecords(const std::string& path, bool pfm) {
+Tile readTileRecords(const std::string& path, bool floatTiles) {
   Tile tile{path, {}, readImageText(path)};   // IoError: unreadable, empty, cut short
   int width = 0, height = 0;
-  if (pfm) {
-    RadianceImage info = readPfmInfo(path);
+  if (floatTiles) {
+    RadianceImage info = readFloatImageInfo(path);
     width = info.width;
     height = info.height;
   } else {
@@ -123,7 +123,7 @@ template <class Pixels>
 Pixels readTilePixels(const Tile& tile) {
   Pixels image;
   if constexpr (std::is_same_v<Pixels, RadianceImage>)
-    image = readPfm(tile.path);
+    image = readFloatImage(tile.path);
   else
     image = readImage(tile.path);
   // The file was checked a moment ago; one changed since is refused, not copied out of bounds.
@@ -144,11 +144,11 @@ struct CheckedTiles {
 };
 
 // Reads the tiles' records (no pixels) and checks them.
-CheckedTiles checkTiles(const std::vector<std::string>& tilePaths, bool allowGaps, bool pfm) {
+CheckedTiles checkTiles(const std::vector<std::string>& tilePaths, bool allowGaps, bool floatTiles) {
   if (tilePaths.empty()) throw UsageError("merge needs at least one tile");
   CheckedTiles checked;
   std::vector<Tile>& tiles = checked.tiles;
-  for (const std::string& path : tilePaths) tiles.push_back(readTileRecords(path, pfm));
+  for (const std::string& path : tilePaths) tiles.push_back(readTileRecords(path, floatTiles));
   const int fullWidth = tiles[0].record.fullWidth, fullHeight = tiles[0].record.fullHeight;
   std::uint64_t covered = 0;
   for (std::size_t i = 0; i < tiles.size(); ++i) {
@@ -219,12 +219,12 @@ void copyRows(const Tile& tile, const Pixels& image, int y0, Pixels& band) {
 // The checked tiles, read one at a time and copied into the whole merged image.
 template <class Pixels>
 Pixels placeTiles(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
-  constexpr bool pfm = std::is_same_v<Pixels, RadianceImage>;
-  CheckedTiles checked = checkTiles(tilePaths, allowGaps, pfm);
+  constexpr bool floatTiles = std::is_same_v<Pixels, RadianceImage>;
+  CheckedTiles checked = checkTiles(tilePaths, allowGaps, floatTiles);
   Pixels merged(checked.fullWidth, checked.fullHeight);
   for (const Tile& t : checked.tiles) copyRows(t, readTilePixels<Pixels>(t), 0, merged);
   if (checked.samples) {
-    if constexpr (pfm) merged.samples = checked.samples->total();
+    if constexpr (floatTiles) merged.samples = checked.samples->total();
   }
   merged.text = checked.text;
   fillReport(checked, report);
@@ -266,14 +266,14 @@ void streamTiles(const CheckedTiles& checked, const std::function<void(int, cons
 
 Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
   for (const std::string& path : tilePaths)
-    if (isPfmFile(path))
+    if (isFloatImageFile(path))
       throw UsageError("tile '" + path + "' is a PFM file: merge tiles of one kind (all PFM, or all PNG or PPM)");
   return placeTiles<Image>(tilePaths, allowGaps, report);
 }
 
 RadianceImage mergeFloatCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
   for (const std::string& path : tilePaths)
-    if (!isPfmFile(path))
+    if (!isFloatImageFile(path))
       throw UsageError("tile '" + path + "' is not a PFM file, and '" + tilePaths.front() +
                        "' is: merge tiles of one kind (all PFM, or all PNG or PPM)");
   return placeTiles<RadianceImage>(tilePaths, allowGaps, report);
@@ -282,12 +282,12 @@ RadianceImage mergeFloatCrops(const std::vector<std::string>& tilePaths, bool al
 void writeMergedCrops(const std::vector<std::string>& tilePaths, bool allowGaps, const std::string& outputPath,
                       MergeReport* report) {
   // All PFM: float tiles; else 8-bit ones, and a PFM among them is refused (mergeCrops).
-  const bool pfm = !tilePaths.empty() && std::all_of(tilePaths.begin(), tilePaths.end(), isPfmFile);
+  const bool floatTiles = !tilePaths.empty() && std::all_of(tilePaths.begin(), tilePaths.end(), isFloatImageFile);
   for (const std::string& path : tilePaths)
-    if (!pfm && isPfmFile(path))
+    if (!floatTiles && isFloatImageFile(path))
       throw UsageError("tile '" + path + "' is a PFM file: merge tiles of one kind (all PFM, or all PNG or PPM)");
-  CheckedTiles checked = checkTiles(tilePaths, allowGaps, pfm);
-  if (pfm) {
+  CheckedTiles checked = checkTiles(tilePaths, allowGaps, floatTiles);
+  if (floatTiles) {
     const double gamma = checked.samples ? checked.samples->gamma : 1.0;
     writeImageStreamed(outputPath, gamma, checked.fullWidth, checked.fullHeight, checked.text,
                        [&](const RowSink& sink) { streamTiles<RadianceImage>(checked, sink); });
@@ -324,10 +324,10 @@ RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeRep
   SampleRecord merged;
   std::uint64_t total = 0;
   for (const std::string& path : paths) {
-    if (!isPfmFile(path))
+    if (!isFloatImageFile(path))
       throw UsageError("batch '" + path + "' is not a PFM file: sample batches are averaged from linear float "
                        "images; render each batch with -o NAME.pfm");
-    RadianceImage info = readPfmInfo(path);   // IoError: unreadable or cut short
+    RadianceImage info = readFloatImageInfo(path);   // IoError: unreadable or cut short
     Batch batch{path, info.width, info.height, {}, onlyRecord(info.text, kCropKeyword, "batch", path)};
     std::optional<std::string> value = onlyRecord(info.text, kSamplesKeyword, "batch", path);
     if (!value)
@@ -384,7 +384,7 @@ RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeRep
   RadianceImage mean;
   mean.samples = 0;
   for (const Batch& b : batches) {
-    RadianceImage pixels = readPfm(b.path);
+    RadianceImage pixels = readFloatImage(b.path);
     if (pixels.width != b.width || pixels.height != b.height)
       throw IoError("cannot read image '" + b.path + "': it changed while being merged");
     pixels.samples = b.record.total();
