@@ -33,6 +33,10 @@ float boxEntry(GpuBvhNode n, vec3 origin, vec3 invDir, float tMin, float tMax) {
   return enter <= leave ? enter : kInfinity;
 }
 
+// Whether primitive reference `prim` is a sphere (else a triangle), known at compile time
+// when the scene holds one kind only.
+bool isSphere(uint prim) { return kHasSpheres && (!kHasTriangles || primKind(prim) == kPrimSphere); }
+
 // A BVH leaf's primitive reference: a sphere or a triangle.
 float hitPrimitive(uint ref, vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, out vec2 b) {
   b = vec2(0.0);
@@ -46,11 +50,17 @@ uint stackEntry(GpuBvhNode n) {
   return n.primCount > 0u ? kStackLeafBit | (n.primCount << kStackCountShift) | n.leftOrFirst : n.leftOrFirst;
 }
 
-// The secondary-ray offsets at p on a primitive (the policy: gpu_limits.h);
-// p and the camera are in the frame centred on the geometry. Sets hitTMin and hitGrazing.
-void setSecondaryOffsets(float primitiveOffset, vec3 p, vec3 camera) {
+// The secondary-ray offsets (the policy: gpu_limits.h). p and the camera are in the frame
+// centred on the geometry; m = max(|p|_max, |p - camera|_max).
+float offsetMagnitude(vec3 p, vec3 camera) {
   vec3 a = max(abs(p), abs(p - camera));
-  float magnitude = max(max(a.x, a.y), a.z);
+  return max(max(a.x, a.y), a.z);
+}
+
+// At p on a primitive whose offset is primitiveOffset: sets hitTMin and hitGrazing, the terms
+// of secondaryTMin.
+void setSecondaryOffsets(float primitiveOffset, vec3 p, vec3 camera) {
+  float magnitude = offsetMagnitude(p, camera);
   hitTMin = max(primitiveOffset, kOffsetPerMagnitude * magnitude);
   hitGrazing = kGrazingPerMagnitude * magnitude;
 }
@@ -58,13 +68,20 @@ void setSecondaryOffsets(float primitiveOffset, vec3 p, vec3 camera) {
 // The tMin of a secondary ray leaving the hit with |N.dir| = cosine.
 float secondaryTMin(float cosine) { return max(hitTMin, hitGrazing / max(cosine, 1e-30)); }
 
+// The same least t for a ray leaving another point p (a light sample's), whose primitive's
+// offset is primitiveOffset, at |N.dir| = cosine.
+float secondaryTMinAt(float primitiveOffset, vec3 p, vec3 camera, float cosine) {
+  float magnitude = offsetMagnitude(p, camera);
+  return max(max(primitiveOffset, kOffsetPerMagnitude * magnitude), kGrazingPerMagnitude * magnitude / max(cosine, 1e-30));
+}
+
 // At the nearest hit p = origin + t dir of primitive reference `prim` (barycentrics b of
 // p1 and p2 for a triangle): the unit shading normal and the material. Also sets the
 // secondary-ray offsets of p (setSecondaryOffsets).
 void surfaceAt(uint prim, vec3 origin, vec3 dir, float t, vec2 b, vec3 p, vec3 camera, out vec3 normal,
                out uint material) {
   float primitiveOffset;
-  if (kHasSpheres && (!kHasTriangles || primKind(prim) == kPrimSphere))
+  if (isSphere(prim))
     sphereSurface(primIndex(prim), origin, dir, t, normal, material, primitiveOffset);
   else
     triangleSurface(prim, b, normal, material, primitiveOffset);
@@ -77,7 +94,7 @@ void surfaceAt(uint prim, vec3 origin, vec3 dir, float t, vec2 b, vec3 p, vec3 c
 // the material and the primitive's secondary-ray offset.
 void samplePoint(uint prim, float s, float t, out vec3 x, out vec3 normal, out float factor, out uint material,
                  out float primitiveOffset) {
-  if (kHasSpheres && (!kHasTriangles || primKind(prim) == kPrimSphere))
+  if (isSphere(prim))
     sampleSphere(primIndex(prim), s, t, x, normal, factor, material, primitiveOffset);
   else
     sampleTriangle(prim, s, t, x, normal, factor, material, primitiveOffset);
@@ -86,7 +103,5 @@ void samplePoint(uint prim, float s, float t, out vec3 x, out vec3 normal, out f
 // At point p of primitive `prim`: the unit normal by which light leaving it is measured, and
 // the factor of samplePoint's density there.
 float densityFactorAt(uint prim, vec3 p, out vec3 normal) {
-  if (kHasSpheres && (!kHasTriangles || primKind(prim) == kPrimSphere)) return sphereDensityFactorAt(primIndex(prim), p, normal);
-  normal = triangleFaceNormal(loadTriangle(prim));   // emission is two-sided
-  return 1.0;
+  return isSphere(prim) ? sphereDensityFactorAt(primIndex(prim), p, normal) : triangleDensityFactorAt(prim, normal);
 }

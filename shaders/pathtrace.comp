@@ -140,14 +140,6 @@ float emitterHitPdf(GpuMaterial m) {
   return emitterAreaDensity(m) * factor * bestT * bestT / abs(dot(normal, rayDir));
 }
 
-// The least t of a ray leaving point p of a primitive whose offset is primitiveOffset at
-// |N.dir| = cosine (the policy of gpu_limits.h, as setSecondaryOffsets and secondaryTMin).
-float offsetAt(float primitiveOffset, vec3 p, float cosine) {
-  vec3 a = max(abs(p), abs(p - path.camera.origin.xyz));
-  float magnitude = max(max(a.x, a.y), a.z);
-  return max(max(primitiveOffset, kOffsetPerMagnitude * magnitude), kGrazingPerMagnitude * magnitude / max(cosine, 1e-30));
-}
-
 // ---- the state machine's steps -----------------------------------------------------------------
 
 // The camera ray of sample `sampleIndex` (gpu_rng.h: the pixel centre, or jittered).
@@ -332,7 +324,7 @@ void emitterSample(uint k, GpuMaterial m, inout uint step) {
     c *= powerHeuristic(lightPdf, scatterPdf(m, hitNormal, wi, -rayDir));
   }
   if (any(notEqual(c, vec3(0.0))))
-    startShadowRay(wi, distance - offsetAt(primitiveOffset, x, cosLight), cosSurface, c);
+    startShadowRay(wi, distance - secondaryTMinAt(primitiveOffset, x, path.camera.origin.xyz, cosLight), cosSurface, c);
 }
 
 // Leaves the vertex along a sampled direction, or ends the path.

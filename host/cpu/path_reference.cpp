@@ -269,8 +269,9 @@ class PathIntegrator {
     return radiance + pointLights(v, counts) + quadLights(v, 0, false, rng, counts);
   }
 
-  // pathtracer (doc/path-tracing.md, "Depth" and "Estimators"). Vertex b = 0 is the camera ray's hit; vertices
-  // b < maxdepth scatter, and light reaching the last of them (by NEE or by hitting) counts.
+  // pathtracer (doc/path-tracing.md, "Depth" and "Estimators"). Vertex b = 0 is the camera
+  // ray's hit; vertices b < maxdepth scatter, and light reaching the last of them (by NEE or
+  // by hitting) counts.
   dvec3 path(Ray ray, const SampleNumbers& rng, RayCounts& counts) const {
     const PathSettings& settings = scene_.path;
     const NextEvent nee = settings.nextEvent;

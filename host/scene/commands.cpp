@@ -3,17 +3,23 @@
 #include "scene/tokenizer.h"
 
 namespace vkrt {
+namespace {
 
-std::optional<Command> commandNamed(std::string_view name) {
+template <typename Same>
+std::optional<Command> findCommand(std::string_view name, Same same) {
   for (std::size_t i = 0; i < std::size(kCommandNames); ++i)
-    if (kCommandNames[i] == name) return static_cast<Command>(i);
+    if (same(kCommandNames[i], name)) return static_cast<Command>(i);
   return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<Command> commandNamed(std::string_view name) {
+  return findCommand(name, [](std::string_view a, std::string_view b) { return a == b; });
+}
+
 std::optional<Command> commandNamedIgnoringCase(std::string_view name) {
-  for (std::size_t i = 0; i < std::size(kCommandNames); ++i)
-    if (equalIgnoringCase(kCommandNames[i], name)) return static_cast<Command>(i);
-  return std::nullopt;
+  return findCommand(name, equalIgnoringCase);
 }
 
 }  // namespace vkrt

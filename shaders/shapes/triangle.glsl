@@ -117,6 +117,13 @@ void triangleSurface(uint index, vec2 b, out vec3 normal, out uint material, out
   primitiveOffset = tri.rayOffset;
 }
 
+// sampleTriangle's density factor (1), and the face normal by which light leaving the triangle
+// is measured (emission is two-sided).
+float triangleDensityFactorAt(uint index, out vec3 normal) {
+  normal = triangleFaceNormal(loadTriangle(index));
+  return 1.0;
+}
+
 // The point (1 - sqrt s) p0 + sqrt s (1 - t) p1 + sqrt s t p2, uniform in area (density
 // factor 1), with the face normal (emission is two-sided).
 void sampleTriangle(uint index, float s, float t, out vec3 x, out vec3 normal, out float factor, out uint material,
