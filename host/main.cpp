@@ -117,8 +117,8 @@ std::string lightsText(const vkrt::RenderReport::Lights& l) {
   auto add = [&](std::size_t n, const std::string& kind) {
     if (n > 0) kinds += (kinds.empty() ? "" : ", ") + kind;
   };
-  add(l.point, std::to_string(l.point) + " point");
-  add(l.directional, std::to_string(l.directional) + " directional");
+  for (std::size_t type = 0; type < vkrt::kLightTypeCount; ++type)
+    add(l.byType[type], std::to_string(l.byType[type]) + " " + std::string(vkrt::kLightTypeNames[type]));
   add(l.quad, std::to_string(l.quad) + " quad");
   add(l.emissiveTriangles, vkrt::counted(l.emissiveTriangles, "emissive triangle", "emissive triangles"));
   add(l.emissiveSpheres, vkrt::counted(l.emissiveSpheres, "emissive sphere", "emissive spheres"));

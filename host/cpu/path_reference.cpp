@@ -174,17 +174,10 @@ class PathIntegrator {
   dvec3 pointLights(const Vertex& v, RayCounts& counts) const {
     dvec3 sum(0.0);
     for (const Light& light : scene_.lights) {
-      dvec3 toLight;
-      double distance = kInfinity, divisor = 1.0;
-      if (light.type == LightType::Point) {
-        dvec3 d = light.vec - v.p;
-        distance = lengthOf(d);   // (a light 1e300 away: its square overflows)
-        if (distance == 0.0) continue;
-        toLight = d / distance;
-        divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
-      } else {
-        toLight = glm::normalize(light.vec);
-      }
+      LightArrival arrival;
+      if (!arrivalAt(light, v.p, arrival)) continue;
+      const dvec3& toLight = arrival.toLight;
+      const double distance = arrival.distance, divisor = arrival.divisor;
       double nDotL = glm::dot(v.n, toLight);
       if (nDotL <= 0.0) continue;
       dvec3 f = evalBrdf(*v.m, v.n, toLight, v.wo);

@@ -30,17 +30,10 @@ class Tracer {
                      RayCounts& counts) const {
     dvec3 color = m.ambient + m.emission;
     for (const Light& light : scene_.lights) {
-      dvec3 toLight;
-      double distance = kInf, divisor = 1.0;
-      if (light.type == LightType::Point) {
-        dvec3 v = light.vec - p;
-        distance = lengthOf(v);   // (a light 1e300 away: its square overflows)
-        if (distance == 0.0) continue;
-        toLight = v / distance;
-        divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
-      } else {
-        toLight = light.vec;
-      }
+      LightArrival arrival;
+      if (!arrivalAt(light, p, arrival)) continue;
+      const dvec3& toLight = arrival.toLight;
+      const double distance = arrival.distance, divisor = arrival.divisor;
       double nDotL = glm::dot(normal, toLight);
       if (nDotL <= 0.0) continue;   // doc/scene-format.md, "Conventions": no diffuse and no specular from behind
       ++counts.shadow;

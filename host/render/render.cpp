@@ -381,7 +381,7 @@ namespace {
 // only under the path tracer (found by its paths, and sampled by next-event estimation).
 RenderReport::Lights countLights(const SceneDesc& scene) {
   RenderReport::Lights n;
-  for (const Light& l : scene.lights) ++(l.type == LightType::Point ? n.point : n.directional);
+  for (const Light& l : scene.lights) ++n.byType[static_cast<std::size_t>(l.type)];
   n.quad = scene.quadLights.size();
   if (scene.path.integrator == Integrator::PathTracer)
     for (std::uint32_t prim : collectEmitters(scene).prims)

@@ -2,6 +2,7 @@
 // backend, in sample batches (render/progressive.h) -> RadianceImage -> PNG, PPM or PFM. Knows nothing of the command line; main() turns its exceptions into exit codes.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <future>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "gpu/vulkan_settings.h"
+#include "scene/light.h"
 #include "image/crop.h"
 #include "image/image.h"
 #include "image/radiance_image.h"
@@ -77,12 +79,18 @@ struct RenderReport {
   std::string backend;                 // "cpu" or "vulkan (DEVICE NAME)"
   int width = 0, height = 0, maxDepth = 0, threads = 0;
   std::size_t triangles = 0, spheres = 0, bvhNodes = 0;
-  // The lights the integrator uses: point and directional lights; quad lights (the path
-  // integrators'; the Whitted model ignores them); and for `pathtracer` the emissive
-  // triangles and spheres, which light the scene there too (scene/emitters.h).
+  // The lights the integrator uses: point and directional lights, by type (scene/light.h:
+  // kLightTypeNames); quad lights (the path integrators'; the Whitted model ignores them);
+  // and for `pathtracer` the emissive triangles and spheres, which light the scene there too
+  // (scene/emitters.h).
   struct Lights {
-    std::size_t point = 0, directional = 0, quad = 0, emissiveTriangles = 0, emissiveSpheres = 0;
-    std::size_t total() const { return point + directional + quad + emissiveTriangles + emissiveSpheres; }
+    std::array<std::size_t, kLightTypeCount> byType{};
+    std::size_t quad = 0, emissiveTriangles = 0, emissiveSpheres = 0;
+    std::size_t total() const {
+      std::size_t n = quad + emissiveTriangles + emissiveSpheres;
+      for (std::size_t k : byType) n += k;
+      return n;
+    }
   } lights;
   double parseSeconds = 0, buildSeconds = 0, renderSeconds = 0, writeSeconds = 0;
   // Vulkan only: context creation, then the renderer's own breakdown (parts of renderSeconds).

@@ -25,11 +25,6 @@ namespace {
 // Triangles are converted on two threads from this many on.
 constexpr std::size_t kParallelMinTriangles = 50000;
 
-constexpr double kFloatMax = std::numeric_limits<float>::max();
-// A point light farther than this from the frame's origin (max norm, frame units) is moved
-// to this distance (lightsFar, below).
-constexpr double kFarLight = 0x1p40;
-
 // The power of two that brings a sphere's radius into [1, 2) when it lies outside
 // [2^-8, 2^8], else 1 (the radius as it is).
 double radiusNormaliser(double radius) {
@@ -64,7 +59,6 @@ gpu::GpuCamera cameraConstants(const SceneDesc& scene, const dvec3& origin, doub
 // negative coefficient), and sums beyond float. A zero factor stays an exact 0 (never
 // 0 * infinity, which is NaN and which max() would drop, leaving an unbounded light out).
 gpu::GpuCutoff cutoffConstants(const SceneDesc& scene) {
-  const double kUnbounded = std::numeric_limits<double>::infinity();
   bool nonNegative = true;
   auto track = [&nonNegative](const dvec3& c) {
     nonNegative = nonNegative && c.x >= 0.0 && c.y >= 0.0 && c.z >= 0.0;
@@ -77,14 +71,9 @@ gpu::GpuCutoff cutoffConstants(const SceneDesc& scene) {
   };
   dvec3 lightSum(0.0);
   for (const Light& l : scene.lights) {
-    double strongest = 1.0;   // the largest 1 / attenuation divisor
-    if (l.type == LightType::Point) {
-      const dvec3& a = l.attenuation;
-      // c0 + c1 r + c2 r^2 >= c0 > 0 for every distance r when no term is negative; a
-      // negative term can also make the light negative.
-      if (a.x < 0.0 || a.y < 0.0 || a.z < 0.0) nonNegative = false;
-      strongest = a.x > 0.0 && a.y >= 0.0 && a.z >= 0.0 ? 1.0 / a.x : kUnbounded;
-    }
+    bool keepsSign = true;
+    const double strongest = strongestDivisorInverse(l, keepsSign);   // the largest 1 / attenuation divisor
+    nonNegative = nonNegative && keepsSign;
     lightSum += product(track(l.color), dvec3(strongest));
   }
   dvec3 bound(0.0), specular(0.0);
@@ -109,12 +98,7 @@ gpu::GpuPathParams pathParams(const SceneDesc& scene, const gpu::GpuCamera& came
   const PathSettings& s = scene.path;
   gpu::GpuPathParams p{};
   p.camera = camera;
-  switch (s.integrator) {
-    case Integrator::Raytracer: p.integrator = gpu::kIntegratorRaytracer; break;
-    case Integrator::AnalyticDirect: p.integrator = gpu::kIntegratorAnalyticDirect; break;
-    case Integrator::Direct: p.integrator = gpu::kIntegratorDirect; break;
-    case Integrator::PathTracer: p.integrator = gpu::kIntegratorPathTracer; break;
-  }
+  p.integrator = static_cast<gpu::uint>(s.integrator);   // the GPU id (integrator_table.h)
   p.nextEvent = s.nextEvent == NextEvent::On ? gpu::kNextEventOn
                 : s.nextEvent == NextEvent::Mis ? gpu::kNextEventMis
                                                 : gpu::kNextEventOff;
@@ -212,31 +196,7 @@ GpuScene flatten(const SceneDesc& scene) {
     gs.materialIndex = s.material;
     g.spheres.push_back(gs);
   }
-  for (const Light& l : scene.lights) {
-    gpu::GpuLight gl{};
-    bool point = l.type == LightType::Point;
-    gl.positionOrDirection = point ? f4((l.vec - origin) * scale, gpu::kPointLight) : f4(l.vec, 0.0f);
-    gl.color = f4(l.color);
-    // The divisor c0 + c1 r + c2 r^2 with r in the frame's units; a coefficient beyond float
-    // is the largest float (the light is then as good as 0 wherever r is not).
-    const dvec3& c = l.attenuation;
-    gl.attenuation = f4(glm::min(dvec3(c.x, c.y / scale, c.z / scale / scale), dvec3(kFloatMax)));
-    const dvec3 position = (l.vec - origin) * scale;
-    const double far = std::max({std::abs(position.x), std::abs(position.y), std::abs(position.z)});
-    if (point && far > kFarLight) {
-      // So far beyond the geometry (whose frame coordinates are at most a few units) that its
-      // direction and distance are the same from every point of it, to far below float32's
-      // resolution (2^-39): moved to kFarLight along the same line, its colour divided by the
-      // attenuation at its distance in double (float32 would overflow squaring that distance).
-      const dvec3 unit = unitVector(position);
-      const double distance = glm::dot(position * (1.0 / far), unit) * far / scale;   // in world units
-      const double divisor = c.x + c.y * distance + c.z * distance * distance;
-      gl.positionOrDirection = f4(unit * kFarLight, gpu::kPointLight);
-      gl.color = f4(glm::clamp(l.color / divisor, dvec3(-kFloatMax), dvec3(kFloatMax)));
-      gl.attenuation = {1.0f, 0.0f, 0.0f, 0.0f};
-    }
-    g.lights.push_back(gl);
-  }
+  for (const Light& l : scene.lights) g.lights.push_back(toGpu(l, origin, scale));
   for (const Material& m : scene.materials) {
     g.materials.push_back({f4(m.ambient, m.brdf == BrdfModel::Ggx ? gpu::kBrdfGgx : gpu::kBrdfPhong),
                            f4(m.diffuse, static_cast<float>(m.roughness)),

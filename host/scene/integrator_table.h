@@ -1,5 +1,5 @@
-// The integrator table (doc/path-tracing.md, "Integrators" and "Commands"): each integrator's
-// keyword and the settings commands it uses, said once, here. The parser reads `integrator`
+// The integrator table (doc/path-tracing.md, "Integrators" and "Commands"): the integrators,
+// each one's keyword and the settings commands it uses, said once, here. The parser reads `integrator`
 // by these keywords; finish_scene.cpp derives from the rows the warning for each setting that
 // the scene's integrator does not use (the setting then keeps its default).
 #pragma once
@@ -10,10 +10,19 @@
 #include <initializer_list>
 #include <string_view>
 
+#include "gpu_types.h"
 #include "scene/commands.h"
-#include "scene/scene_desc.h"
 
 namespace vkrt {
+
+// The algorithm (`integrator`). Each value is the id the path shader knows it by (gpu_path.h),
+// so that the GPU parameters take it as it is; the values count 0, 1, ... (kIntegratorCount).
+enum class Integrator : std::uint32_t {
+  Raytracer = gpu::kIntegratorRaytracer,
+  AnalyticDirect = gpu::kIntegratorAnalyticDirect,
+  Direct = gpu::kIntegratorDirect,
+  PathTracer = gpu::kIntegratorPathTracer,
+};
 
 // A set of commands: a bit per Command.
 using CommandSet = std::uint64_t;

@@ -8,13 +8,16 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/integrator_table.h"
+#include "scene/light.h"
+
 namespace vkrt {
 
 using glm::dmat4;
 using glm::dvec3;
 
-// doc/path-tracing.md, "Commands": the algorithm, and the path integrators' settings.
-enum class Integrator { Raytracer, AnalyticDirect, Direct, PathTracer };
+// doc/path-tracing.md, "Commands": the path integrators' settings (the algorithm, Integrator:
+// integrator_table.h).
 enum class NextEvent { Off, On, Mis };
 enum class Sampling { Hemisphere, Cosine, Brdf };
 enum class BrdfModel { Phong, Ggx };
@@ -46,15 +49,6 @@ struct Sphere {         // (center, radius) in object space, under worldFromObje
   dvec3 center{0.0};
   double radius = 1.0;
   std::uint32_t material = 0;
-};
-
-enum class LightType { Directional, Point };
-
-struct Light {
-  LightType type = LightType::Directional;
-  dvec3 vec{0.0};                // point: world position; directional: world direction toward the light
-  dvec3 color{0.0};
-  dvec3 attenuation{1, 0, 0};    // constant, linear, quadratic; used by point lights only
 };
 
 // `quadLight a ab ac L` (doc/path-tracing.md, "Quad lights"), world space: the parallelogram with
