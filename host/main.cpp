@@ -22,8 +22,6 @@
 #include "image/encode.h"
 #include "image/image_file.h"
 #include "image/merge.h"
-#include "image/pfm.h"
-#include "image/png.h"
 #include "interrupt.h"
 #include "render/render.h"
 #include "scene/diagnostic.h"
@@ -62,7 +60,7 @@ std::string samplesNote(const vkrt::RenderReport& r) {
          (r.timeUp ? " when the time was up" : "");
 }
 
-// The heatmap of --diff, when asked for (PNG, or PPM for a .ppm name).
+// The heatmap of --diff, when asked for, in the 8-bit format of its name.
 void writeHeatmap(const vkrt::Options& o, const vkrt::ImageDiff& diff) {
   if (o.heatmapPath) vkrt::writeImageAtomic(vkrt::differenceHeatmap(diff, o.heatmapScale), *o.heatmapPath);
 }

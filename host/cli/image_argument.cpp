@@ -3,10 +3,11 @@
 
 #include <cstring>
 #include <fstream>
-#include <utility>
 #include <string_view>
 
 #include <sys/stat.h>
+
+#include "image/image_file.h"
 
 namespace vkrt {
 namespace {
@@ -32,16 +33,17 @@ std::optional<std::string> imageKind(const std::string& path) {
     char head[8] = {};
     if (in.read(head, sizeof head) || in.gcount() > 0) {
       const std::size_t n = static_cast<std::size_t>(in.gcount());
-      if (n == 8 && std::memcmp(head, "\x89PNG\r\n\x1a\n", 8) == 0) return "PNG";
+      for (const ImageFormat& format : imageFormats())
+        if (format.isFile(path)) return std::string(format.name);
+      // Kinds vkrt reads (stb_image) and does not write.
       if (n >= 3 && std::memcmp(head, "\xFF\xD8\xFF", 3) == 0) return "JPEG";
-      if (n >= 3 && head[0] == 'P' && (head[1] == '6' || head[1] == '3') && blank(head[2])) return "PPM";
-      if (n >= 3 && head[0] == 'P' && (head[1] == 'F' || head[1] == 'f') && blank(head[2])) return "PFM";
+      if (n >= 3 && head[0] == 'P' && head[1] == '3' && blank(head[2])) return "PPM";   // ASCII
       return std::nullopt;   // read, and not an image: a scene, or the parser says what is wrong
     }
   }
-  for (auto [suffix, kind] : {std::pair{".png", "PNG"}, std::pair{".ppm", "PPM"}, std::pair{".pfm", "PFM"},
-                              std::pair{".jpg", "JPEG"}, std::pair{".jpeg", "JPEG"}})
-    if (endsWithIgnoringCase(path, suffix)) return kind;
+  if (hasImageExtension(path)) return std::string(imageFormatFor(path).name);
+  for (std::string_view suffix : {".jpg", ".jpeg"})
+    if (endsWithIgnoringCase(path, suffix)) return "JPEG";
   return std::nullopt;
 }
 

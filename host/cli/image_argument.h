@@ -7,11 +7,12 @@
 
 namespace vkrt {
 
-// "PNG", "PPM", "PFM" or "JPEG" when `path` is an image: a regular file that starts as one
-// (the PNG signature, "P6"/"P3", "PF"/"Pf" and a blank, the JPEG marker), or, when no such
-// file can be read, a name ending in .png, .ppm, .pfm, .jpg or .jpeg (any case). Nothing for
-// anything else: a text file is a scene whatever its name. Reads at most 8 bytes, and only
-// from a regular file (a FIFO's bytes are left for the parser).
+// The name of a format of image/image_file.h's table ("PNG"), or "JPEG" or "PPM" for an
+// ASCII PPM (read, not written), when `path` is an image: a regular file that starts as one
+// (ImageFormat::isFile; the JPEG marker; "P3" and a blank), or, when no such file can be
+// read, a name with an extension of the table, .jpg or .jpeg (any case). Nothing for anything
+// else: a text file is a scene whatever its name. Reads only the first bytes of a regular
+// file (a FIFO's bytes are left for the parser).
 std::optional<std::string> imageKind(const std::string& path);
 
 }  // namespace vkrt

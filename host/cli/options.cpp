@@ -19,25 +19,77 @@
 
 namespace vkrt {
 
-const char* usageText() {
+namespace {
+
+constexpr std::size_t kHelpWidth = 88;
+const std::string kHelpIndent(25, ' ');
+
+// `text` filled into lines of at most kHelpWidth characters (a longer word alone on its
+// line), the first after `first`, the others after `indent`; each line ends in a newline.
+std::string filled(const std::string& first, const std::string& indent, const std::string& text) {
+  std::string out, line = first;
+  bool empty = true;   // no word on `line` yet
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t space = std::min(text.find(' ', at), text.size());
+    const std::string word = text.substr(at, space - at);
+    at = space + 1;
+    if (!empty && line.size() + 1 + word.size() > kHelpWidth) {
+      out += line + "\n";
+      line = indent, empty = true;
+    }
+    line += (empty ? "" : " ") + word;
+    empty = false;
+  }
+  return out + line + "\n";
+}
+
+// "PNG/PPM": the names of `which` joined by '/'.
+std::string slashed(FormatsOf which) {
+  std::string text;
+  for (const std::string& name : imageFormatNames(which)) text += (text.empty() ? "" : "/") + name;
+  return text;
+}
+
+// The first linear-float format's extension: a float file's name in the examples.
+std::string floatExtension() {
+  for (const ImageFormat& format : imageFormats())
+    if (format.linearFloat) return "." + std::string(format.extensions.front());
+  return "";
+}
+
+// "PNG, or PPM for FILE.ppm": what the 8-bit heatmap is written as, by name.
+std::string heatmapNamesText() {
+  std::string others;
+  for (const ImageFormat& format : imageFormats())
+    if (!format.linearFloat && &format != &imageFormats().front())
+      others += (others.empty() ? "" : ", ") + std::string(format.name) + " for FILE." +
+                std::string(format.extensions.front());
+  return std::string(imageFormats().front().name) + (others.empty() ? "" : ", or " + others);
+}
+
+std::string makeUsageText() {
+  const std::string ext = defaultImageExtension(), floatExt = floatExtension();
+  const std::string floats = imageFormatNamesText(FormatsOf::LinearFloat), standard = imageFormatNames().front();
   return "usage: vkrt [options] SCENE.test [SCENE.test ...]\n"
-         "       vkrt diff [comparison options] A.png B.png\n"
-         "       vkrt merge [--allow-gaps] -o OUT.png|OUT.pfm TILE [TILE ...]   (all PNG/PPM or all PFM)\n"
-         "       vkrt merge -o OUT.pfm|OUT.png BATCH.pfm [BATCH.pfm ...]\n"
+         "       vkrt diff [comparison options] A" + ext + " B" + ext + "\n"
+         "       vkrt merge [--allow-gaps] -o OUT" + ext + "|OUT" + floatExt + " TILE [TILE ...]   (all " +
+         slashed(FormatsOf::Bytes) + " or all " + slashed(FormatsOf::LinearFloat) + ")\n"
+         "       vkrt merge -o OUT" + floatExt + "|OUT" + ext + " BATCH" + floatExt + " [BATCH" + floatExt + " ...]\n"
          "\n"
-         "Renders CSE167 (and CSE168) scene files to PNG, PPM or PFM images, or compares two images.\n"
+         "Renders CSE167 (and CSE168) scene files to " + imageFormatNamesText() + " images, or compares two images.\n"
          "Several scenes are rendered in one run, one line each, then a summary; the exit\n"
          "status is then the highest of theirs.\n"
          "\n"
          "options:\n"
-         "  -o, --output FILE      write the image to FILE (overrides the scene's 'output');\n"
-         "                         FILE.ppm writes binary PPM, FILE.pfm linear float (PFM, no\n"
-         "                         quantization or gamma), any other name PNG. An existing FILE is\n"
-         "                         replaced whole, keeping its permissions; a symbolic link is\n"
-         "                         written through. Refused: '-', a file the run reads, a device,\n"
-         "                         FIFO or directory, a file with several hard links\n"
+         "  -o, --output FILE      write the image to FILE (overrides the scene's 'output');\n" +
+         filled(kHelpIndent, kHelpIndent,
+                imageNamesHelpText("FILE") +
+                    ". An existing FILE is replaced whole, keeping its permissions; a symbolic link is "
+                    "written through. Refused: '-', a file the run reads, a device, FIFO or directory, a "
+                    "file with several hard links") +
          "  -o, --output DIR/      write each image into DIR (a trailing '/'): under the file name\n"
-         "                         of the scene's 'output', or the scene's stem + .png without one\n"
+         "                         of the scene's 'output', or the scene's stem + " + ext + " without one\n"
          "  --size WxH             render at W x H pixels instead of the scene's size (same camera)\n"
          "  --scale F              render at the scene's size times F (rounded, at least 1x1)\n"
          "  --crop X0,Y0,X1,Y1     render only the pixels [X0,X1) x [Y0,Y1) of the full image (the\n"
@@ -63,34 +115,38 @@ const char* usageText() {
          "  --no-cutoff            the same as --cutoff off\n"
          "  --threads N            worker threads for the CPU backend (default: all cores)\n"
          "  --stats                print a timing breakdown and ray counts on stderr\n"
-         "  --check REF.png        compare the rendered image with REF.png (exit 5 when it fails);\n"
+         "  --check REF" + ext + "        compare the rendered image with REF" + ext + " (exit 5 when it fails);\n"
          "                         REF is read before the render (exit 4 when it cannot be)\n"
          "  --compare              render with both backends (nothing written) and print each\n"
          "                         one's times and the difference between their images\n"
          "  --strict               every warning is an error, nothing written: the scene's (exit 2:\n"
          "                         unknown commands, repeated commands and the like, NaN pixels)\n"
-         "                         and the command line's (exit 1: --spp for a Whitted scene, an\n"
-         "                         output name not .png, .ppm or .pfm)\n"
+         "                         and the command line's (exit 1: --spp for a Whitted scene, an\n" +
+         filled(kHelpIndent, kHelpIndent, "output name not " + imageExtensionsText() + ")") +
          "\n"
          "comparison options (diff and --check):\n"
          "  --max-pixels-over S:L  fail when more than L pixels (a count, or a share with %,\n"
          "                         e.g. 2:0.1%) differ by more than S/255; may be repeated\n"
          "  --max-diff N           fail when any channel differs by more than N/255\n"
          "                         (with neither, any difference fails)\n"
-         "  --json                 print the metrics as one JSON object on stdout\n"
-         "  --diff FILE.png        write a heatmap of the differences, with its legend (PNG, or\n"
-         "                         PPM for FILE.ppm)\n"
+         "  --json                 print the metrics as one JSON object on stdout\n" +
+         filled("  --diff FILE" + ext + "        ", kHelpIndent,
+                "write a heatmap of the differences, with its legend (" + heatmapNamesText() + ")") +
          "  --diff-scale N         differences of N/255 or more are red in the heatmap (default 16)\n"
          "\n"
          "merge: puts crops (--crop) back together into their full image, each where its record\n"
          "says; tiles of different full images, overlapping tiles, pixels no tile covers (unless\n"
-         "--allow-gaps: they stay black) and a tile without a record are usage errors (1).\n"
-         "PFM crops merge into linear float (PFM, or PNG with the recorded gamma); the tiles\n"
-         "must be of one kind, and PFM tiles of one render (the same vkrt-samples record).\n"
-         "With sample batches of one path-traced render (PFM images carrying a vkrt-samples\n"
-         "record, rendered with different --seed), merge averages them weighted by their sample\n"
-         "counts, into PFM or PNG (the recorded gamma); batches of different sizes, places or\n"
-         "gammas, or sharing samples, are usage errors (1).\n"
+         "--allow-gaps: they stay black) and a tile without a record are usage errors (1).\n" +
+         filled("", "",
+                floats + " crops merge into linear float (" + floats + ", or " + standard +
+                    " with the recorded gamma); the tiles must be of one kind, and " + floats +
+                    " tiles of one render (the same vkrt-samples record).") +
+         filled("", "",
+                "With sample batches of one path-traced render (" + floats +
+                    " images carrying a vkrt-samples record, rendered with different --seed), merge averages "
+                    "them weighted by their sample counts, into " + floats + " or " + standard +
+                    " (the recorded gamma); batches of different sizes, places or gammas, or sharing samples, "
+                    "are usage errors (1).") +
          "\n"
          "  -q, --quiet            print nothing but errors (no warnings, no progress)\n"
          "  -h, --help             show this help\n"
@@ -112,6 +168,13 @@ const char* usageText() {
          "  128+N  stopped by signal N (130: Ctrl-C, 143: SIGTERM, 129: SIGHUP); nothing written,\n"
          "       no temporary file left\n"
          "  several scenes: the highest of their statuses (a signal stops the run)\n";
+}
+
+}  // namespace
+
+const char* usageText() {
+  static const std::string text = makeUsageText();
+  return text.c_str();
 }
 
 namespace {
@@ -221,6 +284,13 @@ void refuseStandardOutput(const std::string& option, const std::string& path) {
                      "name a file ('./-' for a file named '-')");
 }
 
+// "output file 'x.bmp' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name":
+// `what` at `path`, which may be named as any of `which`.
+std::string unnamedWarning(const std::string& what, const std::string& path, FormatsOf which) {
+  return what + " '" + abbreviated(path) + "' is not named " + imageExtensionsText(which) + ": vkrt writes " +
+         std::string(imageFormats().front().name) + ", under that name";
+}
+
 // vkrt merge [--allow-gaps] -o OUT.png TILE.png ...
 Options parseMergeOptions(const std::vector<std::string>& args) {
   Options o;
@@ -249,15 +319,16 @@ Options parseMergeOptions(const std::vector<std::string>& args) {
       o.help = true;
     } else {
       throw UsageError(
-          unknownOption("merge option", a, "(merge takes -o OUT.png, --allow-gaps, -q)", kMergeLongOptions));
+          unknownOption("merge option", a, "(merge takes -o OUT" + defaultImageExtension() + ", --allow-gaps, -q)",
+                        kMergeLongOptions));
     }
   }
   if (o.help) return o;
-  if (o.mergeOutput.empty()) throw UsageError("merge needs the output image: vkrt merge -o OUT.png TILE.png ...");
-  if (o.mergeTiles.empty()) throw UsageError("merge needs at least one tile: vkrt merge -o OUT.png TILE.png ...");
+  const std::string ext = defaultImageExtension(), example = "vkrt merge -o OUT" + ext + " TILE" + ext + " ...";
+  if (o.mergeOutput.empty()) throw UsageError("merge needs the output image: " + example);
+  if (o.mergeTiles.empty()) throw UsageError("merge needs at least one tile: " + example);
   if (!hasImageExtension(o.mergeOutput))
-    o.warnings.push_back("output file '" + abbreviated(o.mergeOutput) +
-                         "' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name");
+    o.warnings.push_back(unnamedWarning("output file", o.mergeOutput, FormatsOf::All));
   return o;
 }
 
@@ -393,17 +464,18 @@ Options parseOptions(const std::vector<std::string>& args) {
   }
   if (const char* v = std::getenv("VKRT_VALIDATION"); v && std::string(v) == "1") o.request.validation = true;
   if (o.heatmapPath) {
-    if (imageFormatFor(*o.heatmapPath) == ImageFormat::Pfm)
-      throw UsageError("--diff " + abbreviated(*o.heatmapPath) + ": the heatmap is an 8-bit image; name it .png or .ppm");
+    if (holdsLinearFloat(*o.heatmapPath))
+      throw UsageError("--diff " + abbreviated(*o.heatmapPath) + ": the heatmap is an 8-bit image; name it " +
+                       imageExtensionsText(FormatsOf::Bytes));
     if (!hasImageExtension(*o.heatmapPath)) {
-      std::string w = "heatmap file '" + abbreviated(*o.heatmapPath) +
-                      "' is not named .png or .ppm: vkrt writes PNG, under that name";
+      std::string w = unnamedWarning("heatmap file", *o.heatmapPath, FormatsOf::Bytes);
       if (o.request.strict) throw UsageError(w + " [--strict]");
       o.warnings.push_back(w);
     }
   }
   if (o.diffCommand) {
-    if (images.size() != 2) throw UsageError("diff needs two images: vkrt diff A.png B.png");
+    if (images.size() != 2)
+      throw UsageError("diff needs two images: vkrt diff A" + defaultImageExtension() + " B" + defaultImageExtension());
     o.diffA = images[0];
     o.diffB = images[1];
     return o;
@@ -411,7 +483,8 @@ Options parseOptions(const std::vector<std::string>& args) {
   refuseImagesAsScenes(scenes);
   bool comparing = o.thresholds.any() || o.json || o.heatmapPath;
   if (comparing && !o.checkAgainst && !o.compare)
-    throw UsageError("--max-pixels-over, --max-diff, --json and --diff need --check REF.png or --compare (or vkrt diff)");
+    throw UsageError("--max-pixels-over, --max-diff, --json and --diff need --check REF" + defaultImageExtension() +
+                     " or --compare (or vkrt diff)");
   if (o.compare && o.checkAgainst) throw UsageError("--compare and --check do not go together");
   if (o.compare && output)
     throw UsageError("--compare writes no image (it renders with both backends and compares them): -o " +
@@ -425,7 +498,7 @@ Options parseOptions(const std::vector<std::string>& args) {
                        " scenes: give a folder (-o DIR/, with the '/') or leave -o out");
     o.request.output = *output;
     if (!hasImageExtension(*output)) {
-      std::string w = "output file '" + abbreviated(*output) + "' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name";
+      std::string w = unnamedWarning("output file", *output, FormatsOf::All);
       if (o.request.strict) throw UsageError(w + " [--strict]");
       o.warnings.push_back(w);
     }

@@ -1,4 +1,5 @@
-// Crop rectangles, their record, and reading the text records of PNG, PPM and PFM files.
+// Crop rectangles, their record, and reading the text records of image files (through
+// image/image_file.h).
 #include "image/crop.h"
 
 #include <algorithm>
@@ -36,10 +37,6 @@ std::vector<std::string> split(const std::string& s, char sep) {
     if (at == std::string::npos) return parts;
     start = at + 1;
   }
-}
-
-std::uint32_t bigEndian(const unsigned char* p) {
-  return std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | std::uint32_t{p[3]};
 }
 
 }  // namespace
@@ -91,75 +88,7 @@ std::optional<CropRecord> parseCropRecord(const std::string& value, std::string*
 }
 
 std::vector<std::pair<std::string, std::string>> readImageText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
-  auto cutShort = [&](const std::string& what) { return IoError("cannot read image '" + path + "': " + what); };
-  in.seekg(0, std::ios::end);
-  const auto fileSize = static_cast<std::uint64_t>(std::max<std::streamoff>(0, in.tellg()));
-  in.seekg(0);
-  if (fileSize == 0) throw cutShort("the file is empty");
-  if (isFloatImageFile(path)) return readFloatImageText(path);
-  std::vector<std::pair<std::string, std::string>> text;
-  unsigned char signature[8] = {};
-  in.read(reinterpret_cast<char*>(signature), 8);
-  static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  if (in.gcount() == 8 && std::memcmp(signature, kPng, 8) == 0) {
-    // Chunks: length, type, data, CRC. The text comes before IDAT in our files, but a PNG may
-    // put it anywhere before IEND; the image data is skipped, not read. A file that ends
-    // before IEND is cut short.
-    unsigned char head[8];
-    std::uint64_t at = 8;
-    for (;;) {
-      if (at + 8 > fileSize || !in.read(reinterpret_cast<char*>(head), 8))
-        throw cutShort("the PNG is truncated (it ends before its IEND chunk)");
-      const std::uint64_t length = bigEndian(head);
-      std::string type(reinterpret_cast<char*>(head) + 4, 4);
-      if (length > 0x7fffffffu) throw cutShort("the PNG is malformed (a chunk length beyond 2^31)");
-      at += 8 + length + 4;
-      if (at > fileSize) throw cutShort("the PNG is truncated (its " + type + " chunk is cut short)");
-      if (type == "IEND") break;
-      if (type == "tEXt" && length <= (1u << 20)) {
-        std::string data(length, '\0');
-        if (!in.read(data.data(), static_cast<std::streamsize>(length))) throw cutShort("the PNG is truncated");
-        std::size_t nul = data.find('\0');
-        if (nul != std::string::npos) text.emplace_back(data.substr(0, nul), data.substr(nul + 1));
-        in.seekg(4, std::ios::cur);
-      } else {
-        in.seekg(static_cast<std::streamoff>(length) + 4, std::ios::cur);
-      }
-    }
-  } else if (in.gcount() >= 2 && signature[0] == 'P' && signature[1] == '6') {
-    // The header's comment lines, "# KEY VALUE", up to the maxval; then the raster, which
-    // must be all there.
-    in.clear();
-    in.seekg(2);
-    std::uint64_t numbers[3] = {};
-    int count = 0;
-    while (count < 3) {
-      int c = in.peek();
-      if (c == EOF) throw cutShort("the PPM header is truncated");
-      if (c == '#') {
-        std::string line;
-        std::getline(in, line);
-        std::size_t space = line.find(' ', 2);
-        if (line.size() > 2 && line[1] == ' ' && space != std::string::npos)
-          text.emplace_back(line.substr(2, space - 2), line.substr(space + 1));
-      } else if (c == ' ' || c == '\n' || c == '\r' || c == '\t') {
-        in.get();
-      } else {
-        std::string word;
-        in >> word;
-        if (word.empty() || word.size() > 9 || word.find_first_not_of("0123456789") != std::string::npos)
-          throw cutShort("the PPM header is malformed ('" + word + "')");
-        numbers[count++] = std::stoull(word);
-      }
-    }
-    in.get();   // the single whitespace byte after the maxval
-    const std::uint64_t raster = numbers[0] * numbers[1] * 3 * (numbers[2] > 255 ? 2 : 1);
-    const auto rasterStart = static_cast<std::uint64_t>(std::max<std::streamoff>(0, in.tellg()));
-    if (!in || rasterStart + raster > fileSize) throw cutShort("the PPM raster is truncated");
-  }
-  return text;
+  return readImageFileText(path);
 }
 
 }  // namespace vkrt

@@ -47,10 +47,9 @@ std::optional<PixelRect> parseCropOption(const std::string& text);
 // Why `rect` is not a crop of a W x H image ("" when it is one): empty or outside.
 std::string cropProblem(const PixelRect& rect, int fullWidth, int fullHeight);
 
-// The text records of an image file: PNG tEXt chunks (keyword, text), or the "# KEY VALUE"
-// comment lines of a PPM header, or the trailer of a PFM (image/pfm.h). Throws IoError when
-// the file cannot be read, is empty, or is a PNG, PPM or PFM cut short (a PNG without its
-// IEND chunk, a raster shorter than its header says); a file of another kind gives none.
+// The text records of an image file, as its format keeps them (readImageFileText,
+// image/image_file.h). Throws IoError when the file cannot be read, is empty, or is cut short
+// (ends before what its header says); a file of no format vkrt writes gives none.
 std::vector<std::pair<std::string, std::string>> readImageText(const std::string& path);
 
 }  // namespace vkrt

@@ -1,14 +1,31 @@
-// The writer for a file name (PFM for .pfm, PPM for .ppm, PNG otherwise), and the reader of a
-// linear-float file.
+// The table of image formats, the writers and readers by format, and the texts that name
+// formats. A format's own file (image/<format>.{h,cpp}) holds its bytes; here is its row.
 #include "image/image_file.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 
 #include "errors.h"
+#include "image/atomic_file.h"
 #include "image/encode.h"
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/ppm.h"
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wconversion"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wdouble-promotion"
+#include <stb_image.h>
+#pragma GCC diagnostic pop
 
 namespace vkrt {
 namespace {
@@ -24,43 +41,197 @@ std::string extensionOf(const std::string& path) {
   return ext;
 }
 
-}  // namespace
-
-ImageFormat imageFormatFor(const std::string& path) {
-  std::string ext = extensionOf(path);
-  return ext == "pfm" ? ImageFormat::Pfm : ext == "ppm" ? ImageFormat::Ppm : ImageFormat::Png;
+// The row of `path`'s extension, or nullptr.
+const ImageFormat* formatNamed(const std::string& path) {
+  const std::string ext = extensionOf(path);
+  for (const ImageFormat& format : imageFormats())
+    if (std::find(format.extensions.begin(), format.extensions.end(), ext) != format.extensions.end()) return &format;
+  return nullptr;
 }
 
-bool hasImageExtension(const std::string& path) {
-  std::string ext = extensionOf(path);
-  return ext == "png" || ext == "ppm" || ext == "pfm";
+bool isOf(const ImageFormat& format, FormatsOf which) {
+  return which == FormatsOf::All || format.linearFloat == (which == FormatsOf::LinearFloat);
+}
+
+// "a", "a or b", "a, b or c".
+std::string orList(const std::vector<std::string>& items) {
+  std::string text;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == items.size() ? " or " : ", ") + items[i];
+  return text;
+}
+
+std::string firstExtension(const ImageFormat& format) { return "." + std::string(format.extensions.front()); }
+
+// An 8-bit band of `image`'s rows [y0, y0 + rows), encoded with `gamma`, into `band`.
+void encodeBand(const RadianceImage& image, int y0, int rows, double gamma, Image& band) {
+  band.width = image.width, band.height = rows;
+  band.rgb.resize(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(rows) * 3);
+  encodeRow(image.pixel(0, y0), band.rgb.size(), gamma, band.rgb.data());
+}
+
+}  // namespace
+
+void RowWriter::radianceRows(int, const RadianceImage&) {
+  throw InternalError("RowWriter: radiance rows for an 8-bit format");
+}
+
+void RowWriter::byteRows(int, const Image&) { throw InternalError("RowWriter: 8-bit rows for a linear-float format"); }
+
+// To add a format: its file image/<format>.{h,cpp} with the functions of a row, and the row.
+const std::vector<ImageFormat>& imageFormats() {
+  static const std::vector<ImageFormat> formats = {
+      {.name = "PNG",
+       .extensions = {"png"},
+       .linearFloat = false,
+       .description = "PNG",
+       .isFile = isPngFile,
+       .openRows = openPngRows,
+       .readText = readPngText},
+      {.name = "PPM",
+       .extensions = {"ppm"},
+       .linearFloat = false,
+       .description = "binary PPM",
+       .isFile = isPpmFile,
+       .openRows = openPpmRows,
+       .readText = readPpmText},
+      {.name = "PFM",
+       .extensions = {"pfm"},
+       .linearFloat = true,
+       .description = "linear float (PFM, no quantization or gamma)",
+       .isFile = isPfmFile,
+       .openRows = openPfmRows,
+       .readText = readPfmText,
+       .read = readPfm,
+       .readInfo = readPfmInfo},
+  };
+  return formats;
+}
+
+const ImageFormat& imageFormatFor(const std::string& path) {
+  const ImageFormat* format = formatNamed(path);
+  return format ? *format : imageFormats().front();
+}
+
+bool hasImageExtension(const std::string& path) { return formatNamed(path) != nullptr; }
+
+bool holdsLinearFloat(const std::string& path) { return imageFormatFor(path).linearFloat; }
+
+std::vector<std::string> imageFormatNames(FormatsOf which) {
+  std::vector<std::string> names;
+  for (const ImageFormat& format : imageFormats())
+    if (isOf(format, which)) names.emplace_back(format.name);
+  return names;
+}
+
+std::string imageExtensionsText(FormatsOf which) {
+  std::vector<std::string> extensions;
+  for (const ImageFormat& format : imageFormats())
+    if (isOf(format, which)) extensions.push_back(firstExtension(format));
+  return orList(extensions);
+}
+
+std::string imageFormatNamesText(FormatsOf which) { return orList(imageFormatNames(which)); }
+
+std::string defaultImageExtension() { return firstExtension(imageFormats().front()); }
+
+std::string imageNamesHelpText(const std::string& stem) {
+  std::string text;
+  for (const ImageFormat& format : imageFormats()) {
+    if (&format == &imageFormats().front()) continue;
+    text += (text.empty() ? "" : ", ") + stem + firstExtension(format) + (text.empty() ? " writes " : " ") +
+            std::string(format.description);
+  }
+  return text + (text.empty() ? "" : ", ") + "any other name " + std::string(imageFormats().front().name);
+}
+
+std::string bytesAsFloatMessage(const std::string& path) {
+  return "'" + path + "': a " + firstExtension(imageFormatFor(path)) +
+         " holds linear radiance, and this image is 8-bit; write " + imageExtensionsText(FormatsOf::Bytes);
+}
+
+void writeRowsAtomic(const std::string& path, const ImageFormat& format, int width, int height,
+                     const ImageRecords& records, const std::function<void(RowWriter&)>& write) {
+  const std::string suffix = firstExtension(format) + ".tmp";
+  writeFileAtomic(path, suffix.c_str(), [&](int fd) {
+    std::unique_ptr<RowWriter> writer = format.openRows(fd, width, height, records, path);
+    write(*writer);
+    writer->finish();
+  });
 }
 
 void writeImageAtomic(const Image& image, const std::string& path) {
-  if (imageFormatFor(path) == ImageFormat::Pfm)
-    throw UsageError("'" + path + "': a .pfm holds linear radiance, and this image is 8-bit; write .png or .ppm");
-  if (imageFormatFor(path) == ImageFormat::Ppm)
-    writePpmAtomic(image, path);
-  else
-    writePngAtomic(image, path);
+  const ImageFormat& format = imageFormatFor(path);
+  if (format.linearFloat) throw UsageError(bytesAsFloatMessage(path));
+  writeRowsAtomic(path, format, image.width, image.height, image.text,
+                  [&](RowWriter& writer) { writer.byteRows(0, image); });
 }
 
 void writeImageAtomic(const RadianceImage& image, const std::string& path, double gamma) {
-  switch (imageFormatFor(path)) {
-    case ImageFormat::Pfm: writePfmAtomic(image, path); break;
-    case ImageFormat::Ppm: writePpmAtomic(encodeImage(image, gamma), path); break;
-    case ImageFormat::Png: writePngAtomic(image, gamma, path); break;   // encoded row by row
-  }
+  const ImageFormat& format = imageFormatFor(path);
+  writeRowsAtomic(path, format, image.width, image.height, image.text, [&](RowWriter& writer) {
+    if (format.linearFloat) return writer.radianceRows(0, image);
+    // A band at a time: no 8-bit copy of the whole image.
+    constexpr int kBandRows = 64;
+    Image band;
+    for (int y = 0; y < image.height; y += kBandRows) {
+      encodeBand(image, y, std::min(kBandRows, image.height - y), gamma, band);
+      writer.byteRows(y, band);
+    }
+  });
 }
 
-bool isFloatImageFile(const std::string& path) { return isPfmFile(path); }
+const ImageFormat* floatImageFormatOf(const std::string& path) {
+  for (const ImageFormat& format : imageFormats())
+    if (format.linearFloat && format.isFile(path)) return &format;
+  return nullptr;
+}
 
-RadianceImage readFloatImage(const std::string& path) { return readPfm(path); }
+bool isFloatImageFile(const std::string& path) { return floatImageFormatOf(path) != nullptr; }
 
-RadianceImage readFloatImageInfo(const std::string& path) { return readPfmInfo(path); }
+namespace {
 
-std::vector<std::pair<std::string, std::string>> readFloatImageText(const std::string& path) {
-  return readPfmText(path);
+// The linear-float format of the file at `path`. Throws IoError for any other file.
+const ImageFormat& floatFormatOrThrow(const std::string& path) {
+  if (const ImageFormat* format = floatImageFormatOf(path)) return *format;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
+  throw IoError("cannot read image '" + path + "': not a linear-float image (" +
+                imageFormatNamesText(FormatsOf::LinearFloat) + ")");
+}
+
+}  // namespace
+
+RadianceImage readFloatImage(const std::string& path) { return floatFormatOrThrow(path).read(path); }
+
+RadianceImage readFloatImageInfo(const std::string& path) { return floatFormatOrThrow(path).readInfo(path); }
+
+ImageRecords readFloatImageText(const std::string& path) { return floatFormatOrThrow(path).readText(path); }
+
+ImageRecords readImageFileText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
+  if (in.peek() == std::ifstream::traits_type::eof())
+    throw IoError("cannot read image '" + path + "': the file is empty");
+  for (const ImageFormat& format : imageFormats())
+    if (format.isFile(path)) return format.readText(path);
+  return {};
+}
+
+Image readImage(const std::string& path) {
+  int w = 0, h = 0, channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
+  if (!data) throw IoError("cannot read image '" + path + "': " + stbi_failure_reason());
+  Image img(w, h);
+  std::memcpy(img.rgb.data(), data, img.rgb.size());
+  stbi_image_free(data);
+  return img;
+}
+
+void readImageSize(const std::string& path, int& width, int& height) {
+  int channels = 0;
+  if (!stbi_info(path.c_str(), &width, &height, &channels))
+    throw IoError("cannot read image '" + path + "': " + stbi_failure_reason());
 }
 
 }  // namespace vkrt

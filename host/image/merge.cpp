@@ -15,7 +15,6 @@
 #include "errors.h"
 #include "image/crop.h"
 #include "image/image_file.h"
-#include "image/png.h"
 #include "image/render_identity.h"
 #include "image/row_sink.h"
 
@@ -262,30 +261,37 @@ void streamTiles(const CheckedTiles& checked, const std::function<void(int, cons
   }
 }
 
+// "WHY: merge tiles of one kind (all PFM, or all PNG or PPM)".
+std::string mixedTiles(const std::string& why) {
+  return why + ": merge tiles of one kind (all " + imageFormatNamesText(FormatsOf::LinearFloat) + ", or all " +
+         imageFormatNamesText(FormatsOf::Bytes) + ")";
+}
+
 }  // namespace
 
 Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
   for (const std::string& path : tilePaths)
     if (isFloatImageFile(path))
-      throw UsageError("tile '" + path + "' is a PFM file: merge tiles of one kind (all PFM, or all PNG or PPM)");
+      throw UsageError(mixedTiles("tile '" + path + "' is a " + std::string(floatImageFormatOf(path)->name) + " file"));
   return placeTiles<Image>(tilePaths, allowGaps, report);
 }
 
 RadianceImage mergeFloatCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
   for (const std::string& path : tilePaths)
     if (!isFloatImageFile(path))
-      throw UsageError("tile '" + path + "' is not a PFM file, and '" + tilePaths.front() +
-                       "' is: merge tiles of one kind (all PFM, or all PNG or PPM)");
+      throw UsageError(mixedTiles("tile '" + path + "' is not a " + imageFormatNamesText(FormatsOf::LinearFloat) +
+                                  " file, and '" + tilePaths.front() + "' is"));
   return placeTiles<RadianceImage>(tilePaths, allowGaps, report);
 }
 
 void writeMergedCrops(const std::vector<std::string>& tilePaths, bool allowGaps, const std::string& outputPath,
                       MergeReport* report) {
-  // All PFM: float tiles; else 8-bit ones, and a PFM among them is refused (mergeCrops).
+  // All linear float: float tiles; else 8-bit ones, and a float tile among them is refused
+  // (mergeCrops).
   const bool floatTiles = !tilePaths.empty() && std::all_of(tilePaths.begin(), tilePaths.end(), isFloatImageFile);
   for (const std::string& path : tilePaths)
     if (!floatTiles && isFloatImageFile(path))
-      throw UsageError("tile '" + path + "' is a PFM file: merge tiles of one kind (all PFM, or all PNG or PPM)");
+      throw UsageError(mixedTiles("tile '" + path + "' is a " + std::string(floatImageFormatOf(path)->name) + " file"));
   CheckedTiles checked = checkTiles(tilePaths, allowGaps, floatTiles);
   if (floatTiles) {
     const double gamma = checked.samples ? checked.samples->gamma : 1.0;
@@ -325,8 +331,9 @@ RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeRep
   std::uint64_t total = 0;
   for (const std::string& path : paths) {
     if (!isFloatImageFile(path))
-      throw UsageError("batch '" + path + "' is not a PFM file: sample batches are averaged from linear float "
-                       "images; render each batch with -o NAME.pfm");
+      throw UsageError("batch '" + path + "' is not a " + imageFormatNamesText(FormatsOf::LinearFloat) +
+                       " file: sample batches are averaged from linear float images; render each batch with -o NAME" +
+                       imageExtensionsText(FormatsOf::LinearFloat));
     RadianceImage info = readFloatImageInfo(path);   // IoError: unreadable or cut short
     Batch batch{path, info.width, info.height, {}, onlyRecord(info.text, kCropKeyword, "batch", path)};
     std::optional<std::string> value = onlyRecord(info.text, kSamplesKeyword, "batch", path);

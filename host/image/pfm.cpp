@@ -90,7 +90,7 @@ void PfmRowWriter::writeAt(const std::uint8_t* data, std::size_t size, std::uint
   }
 }
 
-void PfmRowWriter::rows(int y0, const RadianceImage& band) {
+void PfmRowWriter::radianceRows(int y0, const RadianceImage& band) {
   if (band.width != width_ || y0 < 0 || band.height > height_ - y0)
     throw InternalError("PfmRowWriter: rows " + std::to_string(y0) + "+" + std::to_string(band.height) + " of a " +
                         std::to_string(width_) + "x" + std::to_string(height_) + " image");
@@ -119,10 +119,15 @@ void PfmRowWriter::finish() {
   writeAt(reinterpret_cast<const std::uint8_t*>(trailer.data()), trailer.size(), end);
 }
 
+std::unique_ptr<RowWriter> openPfmRows(int fd, int width, int height, const ImageRecords& records,
+                                       const std::string& path) {
+  return std::make_unique<PfmRowWriter>(fd, width, height, records, path);
+}
+
 void writePfmAtomic(const RadianceImage& image, const std::string& path) {
   writeFileAtomic(path, ".pfm.tmp", [&](int fd) {
     PfmRowWriter pfm(fd, image.width, image.height, image.text, path);
-    pfm.rows(0, image);
+    pfm.radianceRows(0, image);
     pfm.finish();
   });
 }

@@ -11,10 +11,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "image/image_file.h"   // RowWriter
 #include "image/radiance_image.h"
 
 namespace vkrt {
@@ -23,13 +25,13 @@ namespace vkrt {
 // the header at construction, each band at its place with pwrite (the raster is the bottom
 // row first, so the top band goes at the end), the records' trailer at finish(). Memory: a
 // row. Throws IoError, Interrupted, InternalError for rows outside the image or missing.
-class PfmRowWriter {
+class PfmRowWriter : public RowWriter {
  public:
   PfmRowWriter(int fd, int width, int height, const std::vector<std::pair<std::string, std::string>>& records,
                const std::string& path);
   // Rows [y0, y0 + band.height) of the image (band.width == width).
-  void rows(int y0, const RadianceImage& band);
-  void finish();
+  void radianceRows(int y0, const RadianceImage& band) override;
+  void finish() override;
 
  private:
   void writeAt(const std::uint8_t* data, std::size_t size, std::uint64_t offset);
@@ -39,6 +41,10 @@ class PfmRowWriter {
   std::uint64_t headerBytes_ = 0, written_ = 0;
   std::vector<std::uint32_t> row_;
 };
+
+// A PfmRowWriter, as the table's openRows (image/image_file.h, ImageFormat).
+std::unique_ptr<RowWriter> openPfmRows(int fd, int width, int height, const ImageRecords& records,
+                                       const std::string& path);
 
 // Writes `image` (and its records) atomically. Throws IoError (and Interrupted).
 void writePfmAtomic(const RadianceImage& image, const std::string& path);

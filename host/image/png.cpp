@@ -1,12 +1,14 @@
 // PNG writing, streamed row by row through zlib (memory: about a megabyte besides the rows
 // handed in, so a render's bands can be encoded as they come; and a Ctrl-C is seen between
-// rows), and reading
-// with stb_image. stb_image_write cannot stream: it builds the filtered image and the whole
-// compressed stream in memory, three times the image in all.
+// rows), and reading its records. stb_image_write cannot stream: it builds the filtered image
+// and the whole compressed stream in memory, three times the image in all.
 #include "image/png.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -17,20 +19,14 @@
 #include "image/encode.h"
 #include "interrupt.h"
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wconversion"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wdouble-promotion"
-#include <stb_image.h>
-#pragma GCC diagnostic pop
-
 namespace vkrt {
 namespace {
+
+constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+
+std::uint32_t bigEndian(const unsigned char* p) {
+  return std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | std::uint32_t{p[3]};
+}
 
 void putBigEndian(std::vector<std::uint8_t>& out, std::uint32_t v) {
   for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>(v >> shift));
@@ -90,7 +86,6 @@ PngRowEncoder::PngRowEncoder(int fd, int width, int height,
                              const std::vector<std::pair<std::string, std::string>>& records, const std::string& path)
     : fd_(fd), height_(height), rowBytes_(static_cast<std::size_t>(width) * 3), path_(path),
       state_(std::make_unique<State>()) {
-  static const std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   writeAll(fd, kSignature, sizeof kSignature, path);
   std::vector<std::uint8_t> header;
   putBigEndian(header, static_cast<std::uint32_t>(width));
@@ -168,24 +163,55 @@ void writePngAtomic(const RadianceImage& image, double gamma, const std::string&
   });
 }
 
-Image readImage(const std::string& path) {
-  int w = 0, h = 0, channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
-  if (!data) throw IoError("cannot read image '" + path + "': " + stbi_failure_reason());
-  Image img(w, h);
-  std::memcpy(img.rgb.data(), data, img.rgb.size());
-  stbi_image_free(data);
-  return img;
+void PngRowEncoder::byteRows(int, const Image& band) {
+  for (int y = 0; y < band.height; ++y) row(band.pixel(0, y));
 }
 
-}  // namespace vkrt
+std::unique_ptr<RowWriter> openPngRows(int fd, int width, int height, const ImageRecords& records,
+                                       const std::string& path) {
+  return std::make_unique<PngRowEncoder>(fd, width, height, records, path);
+}
 
-namespace vkrt {
+bool isPngFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char signature[8] = {};
+  in.read(reinterpret_cast<char*>(signature), 8);
+  return in.gcount() == 8 && std::memcmp(signature, kSignature, 8) == 0;
+}
 
-void readImageSize(const std::string& path, int& width, int& height) {
-  int channels = 0;
-  if (!stbi_info(path.c_str(), &width, &height, &channels))
-    throw IoError("cannot read image '" + path + "': " + stbi_failure_reason());
+ImageRecords readPngText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
+  auto cutShort = [&](const std::string& what) { return IoError("cannot read image '" + path + "': " + what); };
+  in.seekg(0, std::ios::end);
+  const auto fileSize = static_cast<std::uint64_t>(std::max<std::streamoff>(0, in.tellg()));
+  in.seekg(8);
+  // Chunks: length, type, data, CRC. The text comes before IDAT in our files, but a PNG may
+  // put it anywhere before IEND; the image data is skipped, not read. A file that ends
+  // before IEND is cut short.
+  ImageRecords text;
+  unsigned char head[8];
+  std::uint64_t at = 8;
+  for (;;) {
+    if (at + 8 > fileSize || !in.read(reinterpret_cast<char*>(head), 8))
+      throw cutShort("the PNG is truncated (it ends before its IEND chunk)");
+    const std::uint64_t length = bigEndian(head);
+    std::string type(reinterpret_cast<char*>(head) + 4, 4);
+    if (length > 0x7fffffffu) throw cutShort("the PNG is malformed (a chunk length beyond 2^31)");
+    at += 8 + length + 4;
+    if (at > fileSize) throw cutShort("the PNG is truncated (its " + type + " chunk is cut short)");
+    if (type == "IEND") break;
+    if (type == "tEXt" && length <= (1u << 20)) {
+      std::string data(length, '\0');
+      if (!in.read(data.data(), static_cast<std::streamsize>(length))) throw cutShort("the PNG is truncated");
+      std::size_t nul = data.find('\0');
+      if (nul != std::string::npos) text.emplace_back(data.substr(0, nul), data.substr(nul + 1));
+      in.seekg(4, std::ios::cur);
+    } else {
+      in.seekg(static_cast<std::streamoff>(length) + 4, std::ios::cur);
+    }
+  }
+  return text;
 }
 
 }  // namespace vkrt

@@ -1,4 +1,5 @@
-// PNG files: atomic writing (temporary file + rename) and reading (for tests and diffs).
+// PNG files: the streamed writer, atomic writing (temporary file + rename), and reading the
+// records. The default format of image/image_file.cpp's table.
 #pragma once
 
 #include <cstddef>
@@ -11,6 +12,7 @@
 #include "errors.h"
 #include "image/atomic_file.h"   // checkOutputWritable
 #include "image/image.h"
+#include "image/image_file.h"   // RowWriter; readImage, which reads PNG
 #include "image/radiance_image.h"
 
 namespace vkrt {
@@ -19,15 +21,17 @@ namespace vkrt {
 // chunks) at construction, each row (width * 3 bytes) filtered and deflated as it comes, the
 // end at finish(). Memory: a few rows and zlib's state. Throws IoError, OutOfMemory,
 // Interrupted (polled per row), InternalError for more or fewer rows than `height`.
-class PngRowEncoder {
+class PngRowEncoder : public RowWriter {
  public:
   PngRowEncoder(int fd, int width, int height, const std::vector<std::pair<std::string, std::string>>& records,
                 const std::string& path);
-  ~PngRowEncoder();
+  ~PngRowEncoder() override;
   PngRowEncoder(const PngRowEncoder&) = delete;
   PngRowEncoder& operator=(const PngRowEncoder&) = delete;
   void row(const std::uint8_t* rgb);
-  void finish();
+  // Each row of `band` through row(); y0 is not checked here (the rows must follow on).
+  void byteRows(int y0, const Image& band) override;
+  void finish() override;
 
  private:
   struct State;
@@ -46,11 +50,12 @@ void writePngAtomic(const Image& image, const std::string& path);
 // 8-bit copy of the image is made.
 void writePngAtomic(const RadianceImage& image, double gamma, const std::string& path);
 
-// Reads a PNG, a binary PPM (P6) or a JPEG as 8-bit RGB. Throws IoError.
-Image readImage(const std::string& path);
-
-// The width and height readImage would give, from the file's header, without decoding its
-// pixels. Throws IoError for a file readImage cannot read.
-void readImageSize(const std::string& path, int& width, int& height);
+// The table's functions (image/image_file.h, ImageFormat): a PngRowEncoder; whether the file
+// starts with the PNG signature; its tEXt chunks, read without decoding the image. readPngText
+// throws IoError for a file that cannot be read or ends before its IEND chunk.
+std::unique_ptr<RowWriter> openPngRows(int fd, int width, int height, const ImageRecords& records,
+                                       const std::string& path);
+bool isPngFile(const std::string& path);
+ImageRecords readPngText(const std::string& path);
 
 }  // namespace vkrt

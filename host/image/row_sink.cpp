@@ -1,16 +1,10 @@
-// The streamed writers: one RowSink per format over an open temporary file.
+// The streamed writers: the sink over the path's format's RowWriter (image/image_file.h),
+// on a temporary file renamed over the path when every row has come.
 #include "image/row_sink.h"
 
-#include <cstdint>
-
 #include "errors.h"
-#include "image/atomic_file.h"
 #include "image/encode.h"
 #include "image/image_file.h"
-#include "image/pfm.h"
-#include "image/png.h"
-#include "image/ppm.h"
-#include "interrupt.h"
 
 namespace vkrt {
 
@@ -41,8 +35,9 @@ class RowOrder {
 void writeImageStreamed(const std::string& path, double gamma, int width, int height,
                         const std::vector<std::pair<std::string, std::string>>& records,
                         const std::function<void(const RowSink&)>& render) {
-  if (imageFormatFor(path) != ImageFormat::Pfm) {
-    // PNG and PPM take bytes: each band is encoded (gamma, 8 bits) as it comes.
+  const ImageFormat& format = imageFormatFor(path);
+  if (!format.linearFloat) {
+    // An 8-bit format takes bytes: each band is encoded (gamma, 8 bits) as it comes.
     writeBytesStreamed(path, width, height, records, [&](const ByteRowSink& bytes) {
       Image encoded;
       render([&](int y0, const RadianceImage& band) {
@@ -54,50 +49,32 @@ void writeImageStreamed(const std::string& path, double gamma, int width, int he
     });
     return;
   }
-  // Rows must come in order, each once (the byte encoders cannot seek back; the PFM writer
-  // places rows, but a band missing would leave a hole).
+  // Rows must come in order, each once (a writer may place rows, as PFM's does, but a band
+  // missing would leave a hole).
   RowOrder order(width, height);
-  writeFileAtomic(path, ".pfm.tmp", [&](int fd) {
-    PfmRowWriter pfm(fd, width, height, records, path);
+  writeRowsAtomic(path, format, width, height, records, [&](RowWriter& writer) {
     render([&](int y0, const RadianceImage& band) {
       order.take(y0, band.width, band.height);
-      pfm.rows(y0, band);
+      writer.radianceRows(y0, band);
     });
     order.complete();
-    pfm.finish();
   });
 }
 
 void writeBytesStreamed(const std::string& path, int width, int height,
                         const std::vector<std::pair<std::string, std::string>>& records,
                         const std::function<void(const ByteRowSink&)>& render) {
+  const ImageFormat& format = imageFormatFor(path);
+  if (format.linearFloat) throw UsageError(bytesAsFloatMessage(path));
+  // In order, each row once: a byte writer (an encoder) cannot seek back.
   RowOrder order(width, height);
-  switch (imageFormatFor(path)) {
-    case ImageFormat::Pfm:
-      throw UsageError("'" + path + "': a .pfm holds linear radiance, and this image is 8-bit; write .png or .ppm");
-    case ImageFormat::Png:
-      writeFileAtomic(path, ".png.tmp", [&](int fd) {
-        PngRowEncoder png(fd, width, height, records, path);
-        render([&](int y0, const Image& band) {
-          order.take(y0, band.width, band.height);
-          for (int y = 0; y < band.height; ++y) png.row(band.pixel(0, y));
-        });
-        order.complete();
-        png.finish();
-      });
-      break;
-    case ImageFormat::Ppm:
-      writeFileAtomic(path, ".ppm.tmp", [&](int fd) {
-        writePpmHeader(fd, width, height, records, path);
-        render([&](int y0, const Image& band) {
-          order.take(y0, band.width, band.height);
-          throwIfInterrupted();
-          writeAll(fd, band.rgb.data(), band.rgb.size(), path);
-        });
-        order.complete();
-      });
-      break;
-  }
+  writeRowsAtomic(path, format, width, height, records, [&](RowWriter& writer) {
+    render([&](int y0, const Image& band) {
+      order.take(y0, band.width, band.height);
+      writer.byteRows(y0, band);
+    });
+    order.complete();
+  });
 }
 
 }  // namespace vkrt

@@ -20,8 +20,8 @@ using RowSink = std::function<void(int y0, const RadianceImage& band)>;
 
 // Writes a `width` x `height` image with `records` to `path`, atomically, in the format of
 // imageFormatFor(path) (image/image_file.h): `render(sink)` must call sink with every row;
-// PNG and PPM rows are encoded with `gamma` as they come, PFM rows written at their place in
-// the file. Throws what `render` throws (nothing is written then: the temporary file goes),
+// for an 8-bit format each band is encoded with `gamma` as it comes, a linear-float format
+// takes it as it is. Throws what `render` throws (nothing is written then: the temporary file goes),
 // IoError, and InternalError when `render` returns without every row.
 void writeImageStreamed(const std::string& path, double gamma, int width, int height,
                         const std::vector<std::pair<std::string, std::string>>& records,
@@ -30,8 +30,8 @@ void writeImageStreamed(const std::string& path, double gamma, int width, int he
 // The same for 8-bit rows (an image already quantized: merged 8-bit tiles), as they are.
 using ByteRowSink = std::function<void(int y0, const Image& band)>;
 
-// writeImageStreamed for 8-bit rows: PNG or PPM (a .pfm name is a UsageError, as
-// writeImageAtomic's for an Image, before anything is created).
+// writeImageStreamed for 8-bit rows, into an 8-bit format (a linear-float name is a
+// UsageError, as writeImageAtomic's for an Image, before anything is created).
 void writeBytesStreamed(const std::string& path, int width, int height,
                         const std::vector<std::pair<std::string, std::string>>& records,
                         const std::function<void(const ByteRowSink&)>& render);

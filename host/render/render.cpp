@@ -22,12 +22,12 @@
 #include "cpu/reference.h"
 #include "gpu/vulkan_path_renderer.h"
 #include "gpu/vulkan_renderer.h"
+#include "image/atomic_file.h"
 #include "image/encode.h"
 #include "image/image_file.h"
 #include "image/render_identity.h"
 #include "image/row_sink.h"
 #include "image/samples.h"
-#include "image/png.h"
 #include "interrupt.h"
 #include "render/progressive.h"
 #include "scene/emitters.h"
@@ -318,11 +318,12 @@ void applySizeOverride(const RenderRequest& request, SceneDesc& scene) {
   scene.height = h;
 }
 
-// -o DIR/: the file name of the scene's `output` line, or the scene file's stem + ".png".
+// -o DIR/: the file name of the scene's `output` line, or the scene file's stem + the default
+// format's extension.
 std::string pathInOutputDir(const SceneDesc& scene, const std::string& dir) {
   std::filesystem::path name = scene.outputLine > 0 ? std::filesystem::path(scene.output).filename()
                                                     : std::filesystem::path(scene.sourcePath).stem();
-  if (scene.outputLine == 0) name += ".png";
+  if (scene.outputLine == 0) name += defaultImageExtension();
   return (std::filesystem::path(dir) / name).string();
 }
 

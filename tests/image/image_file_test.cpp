@@ -1,7 +1,10 @@
-// Output formats by file name: .ppm writes binary PPM (atomically, as PNG), any other name
-// PNG; a name vkrt does not write as named gets a warning.
+// Output formats by file name (the table of image/image_file.h, each row walked): .ppm writes
+// binary PPM (atomically, as PNG), any other name PNG; a name vkrt does not write as named
+// gets a warning.
+#include <cctype>
 #include <cstring>
 #include <filesystem>
+#include <string_view>
 
 #include <gtest/gtest.h>
 
@@ -34,15 +37,81 @@ Image readP6(const std::string& path) {
 }  // namespace
 
 TEST(ImageFile, FormatByExtension) {
-  EXPECT_EQ(imageFormatFor("a.ppm"), ImageFormat::Ppm);
-  EXPECT_EQ(imageFormatFor("dir.png/A.PPM"), ImageFormat::Ppm);
-  EXPECT_EQ(imageFormatFor("a.png"), ImageFormat::Png);
-  EXPECT_EQ(imageFormatFor("a.bmp"), ImageFormat::Png);
-  EXPECT_EQ(imageFormatFor("dir.ppm/a"), ImageFormat::Png);
+  EXPECT_EQ(imageFormatFor("a.ppm").name, "PPM");
+  EXPECT_EQ(imageFormatFor("dir.png/A.PPM").name, "PPM");
+  EXPECT_EQ(imageFormatFor("a.png").name, "PNG");
+  EXPECT_EQ(imageFormatFor("a.bmp").name, "PNG");
+  EXPECT_EQ(imageFormatFor("dir.ppm/a").name, "PNG");
   EXPECT_TRUE(hasImageExtension("x.PNG"));
   EXPECT_TRUE(hasImageExtension("x.ppm"));
   EXPECT_FALSE(hasImageExtension("x.bmp"));
   EXPECT_FALSE(hasImageExtension("x.ppm/y"));
+}
+
+// Every row of the format table: each extension (any case) gives its row and counts as a
+// known name; the texts list it; an 8-bit image written under a linear-float name is a usage
+// error with nothing created; a linear-float image comes back through the row's readers bit
+// for bit, with its records, and is known by its first bytes; an 8-bit one's records come
+// back too. The default (first) row is an 8-bit format.
+TEST(ImageFile, EveryFormatOfTheTable) {
+  std::string dir = freshDir("image-file/table");
+  ASSERT_FALSE(imageFormats().empty());
+  EXPECT_FALSE(imageFormats().front().linearFloat);
+  const Image bytes = gradient(5, 3);
+  RadianceImage radiance(5, 3);
+  for (std::size_t i = 0; i < radiance.rgb.size(); ++i) radiance.rgb[i] = 0.37f * static_cast<float>(i) - 1.5f;
+  radiance.text = {{"vkrt-test", "a record"}, {"vkrt-other", "1 2 3"}};
+  int n = 0;
+  for (const ImageFormat& format : imageFormats()) {
+    SCOPED_TRACE(std::string(format.name));
+    ASSERT_FALSE(format.extensions.empty());
+    ASSERT_TRUE(format.isFile && format.openRows && format.readText);
+    for (std::string_view ext : format.extensions) {
+      std::string upper(ext);
+      for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      EXPECT_EQ(&imageFormatFor("d.x/a." + std::string(ext)), &format);
+      EXPECT_EQ(&imageFormatFor("a." + upper), &format);
+      EXPECT_TRUE(hasImageExtension("a." + upper));
+      EXPECT_EQ(holdsLinearFloat("a." + std::string(ext)), format.linearFloat);
+    }
+    const std::string ext = "." + std::string(format.extensions.front());
+    EXPECT_NE(imageExtensionsText().find(ext), std::string::npos);
+    EXPECT_NE(imageFormatNamesText().find(format.name), std::string::npos);
+    const std::string path = dir + "/f" + std::to_string(n++) + ext;
+    if (format.linearFloat) {
+      ASSERT_TRUE(format.read && format.readInfo);
+      EXPECT_THROW(writeImageAtomic(bytes, path), UsageError);
+      EXPECT_FALSE(fileExists(path));
+      EXPECT_NE(imageExtensionsText(FormatsOf::LinearFloat).find(ext), std::string::npos);
+      EXPECT_EQ(imageExtensionsText(FormatsOf::Bytes).find(ext), std::string::npos);
+      writeImageAtomic(radiance, path, 2.2);
+      EXPECT_TRUE(isFloatImageFile(path));
+      EXPECT_EQ(floatImageFormatOf(path), &format);
+      RadianceImage back = readFloatImage(path);
+      ASSERT_EQ(back.width, 5);
+      ASSERT_EQ(back.height, 3);
+      EXPECT_EQ(std::memcmp(back.rgb.data(), radiance.rgb.data(), radiance.rgb.size() * sizeof(float)), 0);
+      EXPECT_EQ(back.text, radiance.text);
+      RadianceImage info = readFloatImageInfo(path);
+      EXPECT_EQ(info.width, 5);
+      EXPECT_TRUE(info.rgb.empty());
+      EXPECT_EQ(readFloatImageText(path), radiance.text);
+    } else {
+      EXPECT_EQ(format.read, nullptr);
+      EXPECT_NE(imageExtensionsText(FormatsOf::Bytes).find(ext), std::string::npos);
+      Image withText = bytes;
+      withText.text = radiance.text;
+      writeImageAtomic(withText, path);
+      EXPECT_TRUE(format.isFile(path));
+      EXPECT_FALSE(isFloatImageFile(path));
+      EXPECT_EQ(readImageFileText(path), radiance.text);
+    }
+    EXPECT_EQ(readImageFileText(path), radiance.text);
+    for (const ImageFormat& other : imageFormats()) {
+      if (&other == &format) continue;
+      EXPECT_FALSE(other.isFile(path)) << other.name;
+    }
+  }
 }
 
 TEST(ImageFile, PpmHeaderBytesAndAtomicReplacement) {
