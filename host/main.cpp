@@ -21,6 +21,7 @@
 #include "gpu/context.h"
 #include "image/encode.h"
 #include "image/image_file.h"
+#include "image/image_read.h"
 #include "image/merge.h"
 #include "interrupt.h"
 #include "render/render.h"
@@ -85,8 +86,10 @@ void printComparisonText(const vkrt::Options& o, const vkrt::ImageDiff& diff, co
 
 // Compares `actual` with `expected` (diff and --check): the report on stdout (text or JSON),
 // the heatmap if asked for; kExitDiffers when a threshold is exceeded. Throws IoError.
+// `linear`: for two linear-float images, their difference in radiance units, reported beside
+// the 8-bit figures (which the thresholds judge).
 int reportComparison(const vkrt::Options& o, const vkrt::Image& actual, const vkrt::Image& expected,
-                     const std::string& what) {
+                     const std::string& what, const std::optional<vkrt::LinearDifference>& linear = std::nullopt) {
   if (actual.width != expected.width || actual.height != expected.height) {
     std::string msg = "sizes differ: " + std::to_string(actual.width) + "x" + std::to_string(actual.height) +
                       " vs " + std::to_string(expected.width) + "x" + std::to_string(expected.height);
@@ -100,9 +103,17 @@ int reportComparison(const vkrt::Options& o, const vkrt::Image& actual, const vk
   std::vector<std::string> failures = vkrt::failedThresholds(diff, o.thresholds);
   if (o.json) {
     writeHeatmap(o, diff);
-    std::printf("%s\n", vkrt::diffReportJson(diff, failures).c_str());
+    std::string json = vkrt::diffReportJson(diff, failures);
+    if (linear) {
+      char extra[96];
+      std::snprintf(extra, sizeof extra, ",\"linear_max_diff\":%.9g,\"linear_rmse\":%.9g}", linear->maxDiff, linear->rmse);
+      json = json.substr(0, json.size() - 1) + extra;
+    }
+    std::printf("%s\n", json.c_str());
   } else {
     std::printf("%s\n", what.c_str());
+    if (linear)
+      std::printf("  linear      max diff %.6g, RMSE %.6g (radiance, before encoding)\n", linear->maxDiff, linear->rmse);
     printComparisonText(o, diff, failures);
     if (failures.empty()) std::printf("PASS\n");
   }
@@ -319,9 +330,25 @@ int diff(const vkrt::Options& options) {
   files.addInput(options.diffA, "image A");
   files.addInput(options.diffB, "image B");
   claimHeatmap(options, files);
-  vkrt::Image a = vkrt::readImage(options.diffA);   // A first: its error, if both have one
-  vkrt::Image b = vkrt::readImage(options.diffB);
-  return reportComparison(options, a, b, options.diffA + " vs " + options.diffB);
+  vkrt::Image a = vkrt::readImageAsBytes(options.diffA);   // A first: its error, if both have one
+  vkrt::Image b = vkrt::readImageAsBytes(options.diffB);
+  std::optional<vkrt::LinearDifference> linear;
+  if (vkrt::readsAsRadiance(options.diffA) && vkrt::readsAsRadiance(options.diffB))
+    linear = vkrt::linearDifference(vkrt::readFloatImage(options.diffA), vkrt::readFloatImage(options.diffB));
+  return reportComparison(options, a, b, options.diffA + " vs " + options.diffB, linear);
+}
+
+// vkrt convert IN OUT: IN is an input, never written; OUT is written whole or not at all.
+int convert(const vkrt::Options& options) {
+  vkrt::RunFiles files;
+  files.addInput(options.convertInput, "the image to convert");
+  files.addOutput(options.convertOutput, "the converted image");
+  vkrt::checkOutputWritable(options.convertOutput);
+  vkrt::convertImage(options.convertInput, options.convertOutput);
+  if (!options.quiet)
+    std::fprintf(stderr, "vkrt: wrote %s (%s) from %s\n", options.convertOutput.c_str(),
+                 std::string(vkrt::imageFormatFor(options.convertOutput).name).c_str(), options.convertInput.c_str());
+  return kExitOk;
 }
 
 // One scene: the scene file and the --check reference are inputs; the heatmap and the image
@@ -333,7 +360,7 @@ int renderOne(vkrt::Options& options) {
   if (options.checkAgainst) files.addInput(*options.checkAgainst, "the reference image (--check)");
   claimHeatmap(options, files);
   std::optional<vkrt::Image> reference;
-  if (options.checkAgainst) reference = vkrt::readImage(*options.checkAgainst);
+  if (options.checkAgainst) reference = vkrt::readImageAsBytes(*options.checkAgainst);
   options.request.onOutput = [&files](const std::string& path) { files.checkOutput(path, "the image"); };
   vkrt::ProgressBar progress(!options.quiet);
   vkrt::Image image;
@@ -374,6 +401,7 @@ int main(int argc, char** argv) {
   try {
     if (options.mergeCommand) return merge(options);
     if (options.diffCommand) return diff(options);
+    if (options.convertCommand) return convert(options);
     if (options.listDevices) {
       auto devices = vkrt::listDevices();
       for (std::size_t i = 0; i < devices.size(); ++i)

@@ -3,7 +3,7 @@
 # renders with --seed BASE+i into a PFM batch) and a merge job that starts when every batch
 # succeeded and averages them, weighted by their sample counts. Prints the two job ids.
 #
-#   submit-samples.sh [--batches N] [--spp K] [--seed BASE] [--time S] [--vkrt PATH] [--work DIR] [--wait] SCENE.test OUT.png|OUT.pfm [-- VKRT OPTIONS]
+#   submit-samples.sh [--batches N] [--spp K] [--seed BASE] [--time S] [--vkrt PATH] [--work DIR] [--wait] SCENE.test OUT.png|OUT.ppm|OUT.pfm|OUT.exr [-- VKRT OPTIONS]
 #
 # --batches   the number of batches (default 4); --spp samples per pixel in each batch
 #             (default: the scene's spp), so N x K in all; --seed the first batch's seed
@@ -48,8 +48,8 @@ for option in "${extra[@]}"; do
   esac
 done
 case "$output" in
-  *.png|*.pfm) ;;
-  *) echo "submit-samples: the merged image is .png or .pfm: $output" >&2; exit 1 ;;
+  *.png|*.ppm|*.pfm|*.exr) ;;
+  *) echo "submit-samples: the merged image is .png, .ppm, .pfm or .exr: $output" >&2; exit 1 ;;
 esac
 
 work=$(realpath -m "${work:-$output.batches}")

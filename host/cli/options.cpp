@@ -76,6 +76,7 @@ std::string makeUsageText() {
          "       vkrt merge [--allow-gaps] -o OUT" + ext + "|OUT" + floatExt + " TILE [TILE ...]   (all " +
          slashed(FormatsOf::Bytes) + " or all " + slashed(FormatsOf::LinearFloat) + ")\n"
          "       vkrt merge -o OUT" + floatExt + "|OUT" + ext + " BATCH" + floatExt + " [BATCH" + floatExt + " ...]\n"
+         "       vkrt convert IN OUT   (any of " + imageExtensionsText() + " to any; JPEG in)\n"
          "\n"
          "Renders CSE167 (and CSE168) scene files to " + imageFormatNamesText() + " images, or compares two images.\n"
          "Several scenes are rendered in one run, one line each, then a summary; the exit\n"
@@ -181,12 +182,13 @@ namespace {
 
 // The subcommands, and the long options of --help (without their dashes), for "did you
 // mean" after a typo.
-constexpr std::string_view kSubcommands[] = {"diff", "merge"};
+constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert"};
 constexpr std::string_view kLongOptions[] = {
     "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "maxdepth",
     "spp", "seed", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
     "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version"};
 constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "quiet", "help"};
+constexpr std::string_view kConvertLongOptions[] = {"quiet", "help"};
 
 // "unknown option '--bakcend'; did you mean '--backend'?": the option without its dashes
 // (and without =VALUE) against the long options.
@@ -332,6 +334,38 @@ Options parseMergeOptions(const std::vector<std::string>& args) {
   return o;
 }
 
+// vkrt convert [-q] IN OUT
+Options parseConvertOptions(const std::vector<std::string>& args) {
+  Options o;
+  o.convertCommand = true;
+  std::vector<std::string> files;
+  bool endOfOptions = false;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
+      files.push_back(a);
+    } else if (a == "--") {
+      endOfOptions = true;
+    } else if (a == "-q" || a == "--quiet") {
+      o.quiet = true;
+    } else if (a == "-h" || a == "--help") {
+      o.help = true;
+    } else {
+      throw UsageError(unknownOption("convert option", a, "(convert takes -q)", kConvertLongOptions));
+    }
+  }
+  if (o.help) return o;
+  const std::string example = "vkrt convert IN" + floatExtension() + " OUT" + defaultImageExtension();
+  if (files.size() != 2) throw UsageError("convert needs two images, the one to read and the one to write: " + example);
+  o.convertInput = files[0];
+  o.convertOutput = files[1];
+  for (const std::string& f : files) refuseStandardOutput("convert", f);
+  if (!hasImageExtension(o.convertOutput))
+    throw UsageError("convert: '" + echoed(o.convertOutput) + "' is not named " + imageExtensionsText() +
+                     ": the name says which format to write");
+  return o;
+}
+
 }  // namespace
 
 Options parseOptions(const std::vector<std::string>& args) {
@@ -346,6 +380,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     first = 1;
   }
   if (!args.empty() && args[0] == "merge") return parseMergeOptions(args);
+  if (!args.empty() && args[0] == "convert") return parseConvertOptions(args);
   refuseMistypedSubcommand(args);
   for (std::size_t i = first; i < args.size(); ++i) {
     const std::string& a = args[i];

@@ -31,6 +31,9 @@ struct Options {
   std::vector<std::string> mergeTiles;
   std::string mergeOutput;
   bool allowGaps = false;       // merge: pixels no tile covers stay black
+  // `vkrt convert IN OUT`: the image IN written in the format of OUT's name.
+  bool convertCommand = false;
+  std::string convertInput, convertOutput;
 
   // `vkrt --compare SCENE`: render with both backends, report both and their difference.
   bool compare = false;

@@ -11,6 +11,7 @@
 #include "errors.h"
 #include "image/atomic_file.h"
 #include "image/encode.h"
+#include "image/exr.h"
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/ppm.h"
@@ -104,6 +105,15 @@ const std::vector<ImageFormat>& imageFormats() {
        .readText = readPfmText,
        .read = readPfm,
        .readInfo = readPfmInfo},
+      {.name = "EXR",
+       .extensions = {"exr"},
+       .linearFloat = true,
+       .description = "OpenEXR (32-bit float RGB, linear, with its records as header attributes)",
+       .isFile = isExrFile,
+       .openRows = openExrRows,
+       .readText = readExrText,
+       .read = readExr,
+       .readInfo = readExrInfo},
   };
   return formats;
 }

@@ -218,8 +218,9 @@ class Parser {
     args_.ignoreExtra("output", 1, usage);
     std::string_view name = args_[0];
     if (!hasImageExtension(std::string(name)))
-      warn(WarningKind::OutputName, "output file " + quoted(name) +
-                                        " is not named .png or .ppm: vkrt writes PNG, under that name");
+      warn(WarningKind::OutputName, "output file " + quoted(name) + " is not named " + imageExtensionsText() +
+                                        ": vkrt writes " + std::string(imageFormats().front().name) +
+                                        ", under that name");
     scene_.output = std::string(name);
     scene_.outputLine = line_;
   }

@@ -137,7 +137,7 @@ TEST(Messages, AnImageUnderAnotherNameIsWarnedOf) {
   ASSERT_EQ(runIn(dir, "-q --backend cpu --crop 0,0,20,15 -o t.png s.test").exitCode, 0);
   RunResult merge = runIn(dir, "merge -o x.bmp t.png");
   EXPECT_EQ(merge.exitCode, 0) << merge.output;
-  EXPECT_TRUE(contains(merge.output, "vkrt: warning: output file 'x.bmp' is not named .png, .ppm or .pfm: vkrt "
+  EXPECT_TRUE(contains(merge.output, "vkrt: warning: output file 'x.bmp' is not named .png, .ppm, .pfm or .exr: vkrt "
                                      "writes PNG, under that name"))
       << merge.output;
   ASSERT_EQ(runIn(dir, "-q --backend cpu -o a.png s.test").exitCode, 0);

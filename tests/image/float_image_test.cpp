@@ -394,7 +394,7 @@ TEST(MergeBatches, MismatchedBatchesAreRefusedWithClearMessages) {
   Image png = encodeImage(img, 1.0);
   png.text.emplace_back(kSamplesKeyword, "4 gamma 1 seeds 2:0+4");
   writeImageAtomic(png, dir + "/b.png");
-  refused({a, dir + "/b.png"}, "batch '" + dir + "/b.png' is not a PFM file");
+  refused({a, dir + "/b.png"}, "batch '" + dir + "/b.png' is not a PFM or EXR file: sample batches are averaged from linear float images");
   writePfmAtomic(img, dir + "/plain.pfm");
   refused({a, dir + "/plain.pfm"}, "batch '" + dir + "/plain.pfm' has no vkrt-samples record");
   RadianceImage bad = img;

@@ -80,10 +80,10 @@ std::vector<Accepted> acceptedInputs() {
       {"ExtraArgumentsToOutput", kOk + "output a.png b.png\n", 3, "'output' takes 1 argument",
        [](const SceneDesc& s) { EXPECT_EQ(s.output, "a.png"); }},
       {"OutputNotPngOrPpm", kOk + "output render.bmp\n", 3,
-       "output file 'render.bmp' is not named .png or .ppm: vkrt writes PNG, under that name",
+       "output file 'render.bmp' is not named .png, .ppm, .pfm or .exr: vkrt writes PNG, under that name",
        [](const SceneDesc& s) { EXPECT_EQ(s.output, "render.bmp"); }},
       {"OutputWithoutExtension", kOk + "output out.d/render\n", 3,
-       "output file 'out.d/render' is not named .png or .ppm",
+       "output file 'out.d/render' is not named .png, .ppm, .pfm or .exr",
        [](const SceneDesc& s) { EXPECT_EQ(s.output, "out.d/render"); }},
       // doc/path-tracing.md, "Commands": what the scene's integrator does not use is ignored (the
       // setting keeps its default), decided at the end of file.
