@@ -16,6 +16,7 @@
 #include "counted.h"
 #include "cli/options.h"
 #include "cli/run_files.h"
+#include "cli/watch.h"
 #include "errors.h"
 #include "image/atomic_file.h"
 #include "gpu/context.h"
@@ -409,6 +410,7 @@ int main(int argc, char** argv) {
       return kExitOk;
     }
     if (options.compare) return compareBackends(options);
+    if (options.watch) return vkrt::watchScene(options);
     if (options.scenes.size() > 1) return renderBatch(options);
     return renderOne(options);
   } catch (...) {

@@ -120,6 +120,9 @@ std::string makeUsageText() {
          "                         REF is read before the render (exit 4 when it cannot be)\n"
          "  --compare              render with both backends (nothing written) and print each\n"
          "                         one's times and the difference between their images\n"
+         "  --watch                render, then render again each time the scene file changes (one\n"
+         "                         process: the device and compiled shaders kept); a path-traced\n"
+         "                         scene refines with more samples until the next change; Ctrl-C ends\n"
          "  --strict               every warning is an error, nothing written: the scene's (exit 2:\n"
          "                         unknown commands, repeated commands and the like, NaN pixels)\n"
          "                         and the command line's (exit 1: --spp for a Whitted scene, an\n" +
@@ -186,7 +189,7 @@ constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert"};
 constexpr std::string_view kLongOptions[] = {
     "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "maxdepth",
     "spp", "seed", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
-    "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version"};
+    "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version", "watch"};
 constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "quiet", "help"};
 constexpr std::string_view kConvertLongOptions[] = {"quiet", "help"};
 
@@ -469,6 +472,8 @@ Options parseOptions(const std::vector<std::string>& args) {
       o.request.threads = integerValue(name, take(name), 1, 1024);
     } else if (a == "--compare") {
       o.compare = true;
+    } else if (a == "--watch") {
+      o.watch = true;
     } else if (name == "--check") {
       o.checkAgainst = take(name);
     } else if (name == "--max-pixels-over") {
@@ -538,9 +543,15 @@ Options parseOptions(const std::vector<std::string>& args) {
       o.warnings.push_back(w);
     }
   }
-  if (scenes.size() > 1 && (o.compare || o.checkAgainst))
-    throw UsageError(std::string(o.compare ? "--compare" : "--check") + " takes one scene, got " +
+  if (scenes.size() > 1 && (o.compare || o.checkAgainst || o.watch))
+    throw UsageError(std::string(o.compare ? "--compare" : o.watch ? "--watch" : "--check") + " takes one scene, got " +
                      std::to_string(scenes.size()));
+  if (o.watch && (o.compare || o.checkAgainst || o.json || o.heatmapPath))
+    throw UsageError(std::string("--watch renders and writes the image at each change; ") +
+                     (o.compare ? "--compare" : o.checkAgainst ? "--check" : o.json ? "--json" : "--diff") +
+                     " does not go with it");
+  if (o.watch && o.request.timeLimitSeconds > 0)
+    throw UsageError("--watch refines a path-traced image until the next change; --time does not go with it");
   if (!o.help && !o.version && !o.listDevices) {
     if (scenes.empty()) throw UsageError("no scene file given");
     o.request.scenePath = scenes.front();

@@ -37,6 +37,8 @@ struct Options {
 
   // `vkrt --compare SCENE`: render with both backends, report both and their difference.
   bool compare = false;
+  // `vkrt --watch SCENE`: render again at each change of the scene file (cli/watch.h).
+  bool watch = false;
   // `vkrt SCENE --check REF.png`: compare the render with REF.
   std::optional<std::string> checkAgainst;
   CheckThresholds thresholds;   // for diff and --check

@@ -1,6 +1,9 @@
 // Compute pipeline creation and synchronous dispatch.
 #include "gpu/compute_pipeline.h"
 
+#include "gpu/context.h"
+#include "gpu/pipeline_cache.h"
+
 #include <algorithm>
 #include <cstdint>
 
@@ -11,43 +14,64 @@ ComputePipeline::ComputePipeline(const Context& context, const std::uint32_t* sp
                                  const std::vector<std::uint32_t>& specConstants, std::uint32_t pushConstantBytes)
     : context_(context), device_(context.device()), pushConstantBytes_(pushConstantBytes) {
   const auto bindingCount = static_cast<std::uint32_t>(bindingTypes.size());
+  // The shader and its layouts: compiled once per context (gpu/pipeline_cache.h).
+  auto make = [&]() {
+    CompiledPipeline made;
+    VkDevice device = device_;
+    auto destroy = [&]() {
+      if (made.pipeline) vk::vkDestroyPipeline(device, made.pipeline, nullptr);
+      if (made.layout) vk::vkDestroyPipelineLayout(device, made.layout, nullptr);
+      if (made.setLayout) vk::vkDestroyDescriptorSetLayout(device, made.setLayout, nullptr);
+    };
+    try {
+      std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
+      for (std::uint32_t i = 0; i < bindingCount; ++i)
+        bindings[i] = {i, bindingTypes[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+      VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+      setInfo.bindingCount = bindingCount;
+      setInfo.pBindings = bindings.data();
+      VK_CHECK(vk::vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &made.setLayout));
+
+      VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
+      VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+      layoutInfo.setLayoutCount = 1;
+      layoutInfo.pSetLayouts = &made.setLayout;
+      layoutInfo.pushConstantRangeCount = pushConstantBytes ? 1 : 0;
+      layoutInfo.pPushConstantRanges = &range;
+      VK_CHECK(vk::vkCreatePipelineLayout(device, &layoutInfo, nullptr, &made.layout));
+
+      VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+      moduleInfo.codeSize = spirvBytes;
+      moduleInfo.pCode = spirv;
+      VkShaderModule module = VK_NULL_HANDLE;
+      VK_CHECK(vk::vkCreateShaderModule(device, &moduleInfo, nullptr, &module));
+      std::vector<VkSpecializationMapEntry> entries(specConstants.size());
+      for (std::uint32_t i = 0; i < entries.size(); ++i)
+        entries[i] = {i, i * static_cast<std::uint32_t>(sizeof(std::uint32_t)), sizeof(std::uint32_t)};
+      VkSpecializationInfo spec{static_cast<std::uint32_t>(entries.size()), entries.data(),
+                                specConstants.size() * sizeof(std::uint32_t), specConstants.data()};
+      VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+      pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+      pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+      pipelineInfo.stage.module = module;
+      pipelineInfo.stage.pName = "main";
+      pipelineInfo.stage.pSpecializationInfo = specConstants.empty() ? nullptr : &spec;
+      pipelineInfo.layout = made.layout;
+      VkResult r = vk::vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &made.pipeline);
+      vk::vkDestroyShaderModule(device, module, nullptr);
+      VK_CHECK(r);
+    } catch (...) {
+      destroy();
+      throw;
+    }
+    return made;
+  };
   try {
-    std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
-    for (std::uint32_t i = 0; i < bindingCount; ++i)
-      bindings[i] = {i, bindingTypes[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = bindingCount;
-    setInfo.pBindings = bindings.data();
-    VK_CHECK(vk::vkCreateDescriptorSetLayout(device_, &setInfo, nullptr, &setLayout_));
-
-    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout_;
-    layoutInfo.pushConstantRangeCount = pushConstantBytes ? 1 : 0;
-    layoutInfo.pPushConstantRanges = &range;
-    VK_CHECK(vk::vkCreatePipelineLayout(device_, &layoutInfo, nullptr, &layout_));
-
-    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    moduleInfo.codeSize = spirvBytes;
-    moduleInfo.pCode = spirv;
-    VkShaderModule module = VK_NULL_HANDLE;
-    VK_CHECK(vk::vkCreateShaderModule(device_, &moduleInfo, nullptr, &module));
-    std::vector<VkSpecializationMapEntry> entries(specConstants.size());
-    for (std::uint32_t i = 0; i < entries.size(); ++i)
-      entries[i] = {i, i * static_cast<std::uint32_t>(sizeof(std::uint32_t)), sizeof(std::uint32_t)};
-    VkSpecializationInfo spec{static_cast<std::uint32_t>(entries.size()), entries.data(),
-                              specConstants.size() * sizeof(std::uint32_t), specConstants.data()};
-    VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    pipelineInfo.stage.module = module;
-    pipelineInfo.stage.pName = "main";
-    pipelineInfo.stage.pSpecializationInfo = specConstants.empty() ? nullptr : &spec;
-    pipelineInfo.layout = layout_;
-    VkResult r = vk::vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline_);
-    vk::vkDestroyShaderModule(device_, module, nullptr);
-    VK_CHECK(r);
+    const CompiledPipeline& compiled = context.pipelines().get(
+        PipelineKey{spirv, spirvBytes, bindingTypes, specConstants, pushConstantBytes}, make, reused_);
+    setLayout_ = compiled.setLayout;
+    layout_ = compiled.layout;
+    pipeline_ = compiled.pipeline;
 
     std::vector<VkDescriptorPoolSize> poolSizes;
     for (VkDescriptorType type : bindingTypes) {
@@ -93,9 +117,7 @@ void ComputePipeline::release() {
   if (fence_) vk::vkDestroyFence(device_, fence_, nullptr);
   if (commandPool_) vk::vkDestroyCommandPool(device_, commandPool_, nullptr);
   if (pool_) vk::vkDestroyDescriptorPool(device_, pool_, nullptr);
-  if (pipeline_) vk::vkDestroyPipeline(device_, pipeline_, nullptr);
-  if (layout_) vk::vkDestroyPipelineLayout(device_, layout_, nullptr);
-  if (setLayout_) vk::vkDestroyDescriptorSetLayout(device_, setLayout_, nullptr);
+  // (the pipeline and its layouts belong to the context's PipelineCache)
   fence_ = VK_NULL_HANDLE;
   commandPool_ = VK_NULL_HANDLE;
   pool_ = VK_NULL_HANDLE;

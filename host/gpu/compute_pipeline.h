@@ -1,6 +1,8 @@
 // A compute pipeline over buffers at bindings 0..N-1 of set 0 (storage buffers, uniform texel
 // buffers or uniform buffers), with uint specialization constants (ids 0..) and a push-constant
-// block, plus the command buffer and fence to run it synchronously.
+// block, plus the command buffer and fence to run it synchronously. The compiled pipeline
+// comes from the context's PipelineCache (made there the first time); the descriptor set,
+// the command buffer and the fence are this object's own.
 #pragma once
 
 #include <cstdint>
@@ -33,6 +35,9 @@ class ComputePipeline {
   // then submits and waits.
   void run(const void* pushConstants, std::uint32_t groups, const Buffer* clear = nullptr);
 
+  // Whether the compiled pipeline was one the context kept from an earlier render.
+  bool reused() const { return reused_; }
+
  private:
   // Destroys every handle made so far; safe to call on a partly constructed pipeline.
   void release();
@@ -50,6 +55,7 @@ class ComputePipeline {
   VkFence fence_ = VK_NULL_HANDLE;
   std::vector<VkBufferView> views_;
   std::uint32_t pushConstantBytes_;
+  bool reused_ = false;
 };
 
 }  // namespace vkrt

@@ -224,6 +224,7 @@ Context::Context(const ContextOptions& options) {
     deviceInfo.pQueueCreateInfos = &queueInfo;
     VK_CHECK(vk::vkCreateDevice(physical_, &deviceInfo, nullptr, &device_));
     vk::vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+    pipelines_ = std::make_unique<PipelineCache>(device_);
     deviceSeconds_ = secondsSince(t0);
   } catch (...) {
     if (messenger_) vk::vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
@@ -235,6 +236,7 @@ Context::Context(const ContextOptions& options) {
 Context::~Context() {
   if (device_) {
     vk::vkDeviceWaitIdle(device_);
+    pipelines_.reset();
     vk::vkDestroyDevice(device_, nullptr);
   }
   if (messenger_) vk::vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <atomic>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "gpu/pipeline_cache.h"
 #include "gpu/vulkan_api.h"
 
 namespace vkrt {
@@ -45,6 +47,9 @@ class Context {
   int validationMessages() const { return validationMessages_.load(); }
   double instanceSeconds() const { return instanceSeconds_; }
   double deviceSeconds() const { return deviceSeconds_; }
+  // The compiled pipelines kept for the renders on this context (their users on one thread
+  // at a time, or through the cache's own lock).
+  PipelineCache& pipelines() const { return *pipelines_; }
 
  private:
   static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
@@ -60,6 +65,7 @@ class Context {
   VkPhysicalDeviceMemoryProperties memory_{};
   std::atomic<int> validationMessages_{0};
   double instanceSeconds_ = 0, deviceSeconds_ = 0;
+  std::unique_ptr<PipelineCache> pipelines_;   // made with the device, destroyed before it
 };
 
 }  // namespace vkrt

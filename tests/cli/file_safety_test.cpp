@@ -77,21 +77,6 @@ std::string memoryCap(long kb) {
 #endif
 }
 
-// waitVkrt, but a process still running after `seconds` is killed (SIGKILL: exit 137), so
-// that a vkrt that does not stop fails the test instead of hanging it.
-Finished waitVkrtWithin(const Spawned& p, double seconds) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  siginfo_t info{};
-  while (std::chrono::steady_clock::now() < deadline) {
-    info.si_pid = 0;
-    if (::waitid(P_PID, static_cast<id_t>(p.pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid != 0)
-      return waitVkrt(p);
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  ::kill(p.pid, SIGKILL);
-  return waitVkrt(p);
-}
-
 }  // namespace
 
 // --check REF where the render's own output is REF (the scene's `output` line, -o, another

@@ -10,7 +10,10 @@
 #include <fstream>
 #include <sstream>
 
+#include <chrono>
+#include <csignal>
 #include <memory>
+#include <thread>
 
 #include <fcntl.h>
 #include <sys/resource.h>
@@ -244,6 +247,19 @@ Finished waitVkrt(const Spawned& process) {
   f.peakRssKb = usage.ru_maxrss;
   f.output = readFile(process.logPath);
   return f;
+}
+
+Finished waitVkrtWithin(const Spawned& p, double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  siginfo_t info{};
+  while (std::chrono::steady_clock::now() < deadline) {
+    info.si_pid = 0;
+    if (::waitid(P_PID, static_cast<id_t>(p.pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid != 0)
+      return waitVkrt(p);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ::kill(p.pid, SIGKILL);
+  return waitVkrt(p);
 }
 
 RunResult runVkrt(const std::string& args, const std::string& env) {

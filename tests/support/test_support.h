@@ -132,6 +132,9 @@ struct Finished {
   std::string output;
 };
 Finished waitVkrt(const Spawned& process);
+// waitVkrt, but a process still running after `seconds` is killed (SIGKILL: exit 137), so
+// that a vkrt that does not stop fails the test instead of hanging it.
+Finished waitVkrtWithin(const Spawned& process, double seconds);
 
 }  // namespace vkrt::test
 

@@ -1,0 +1,131 @@
+// The watch loop: render, refine, wait for a change, render again.
+#include "cli/watch.h"
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+
+#include "cli/exit_status.h"
+#include "cli/file_watch.h"
+#include "cli/run_files.h"
+#include "counted.h"
+#include "image/image_file.h"
+#include "image/samples.h"
+#include "interrupt.h"
+#include "render/render.h"
+
+namespace vkrt {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The vkrt-samples record of `image` (every path integrator's image has one).
+SampleRecord samplesOf(const RadianceImage& image) {
+  for (const auto& [keyword, text] : image.text)
+    if (keyword == kSamplesKeyword)
+      if (std::optional<SampleRecord> r = parseSampleRecord(text)) return *r;
+  throw InternalError("a path-traced image without its samples record");
+}
+
+void setSamples(RadianceImage& image, const SampleRecord& record) {
+  for (auto& [keyword, text] : image.text)
+    if (keyword == kSamplesKeyword) text = formatSampleRecord(record);
+}
+
+class Watcher {
+ public:
+  explicit Watcher(Options& options) : o_(options), watch_(options.request.scenePath) {}
+
+  int run() {
+    for (int round = 1;; ++round) {
+      bool changed = false;
+      try {
+        changed = renderAndRefine(round);
+      } catch (const Interrupted&) {
+        throw;
+      } catch (...) {
+        const int status = reportError(std::current_exception(), {o_.request.scenePath, o_.quiet}, stderr);
+        // Nothing rendered yet and nothing the scene can fix (no device, no memory): no use waiting.
+        if (round == 1 && status != kExitScene && status != kExitIo && status != kExitUsage) return status;
+        std::fprintf(stderr, "vkrt: watch: %s, nothing written; waiting for the next change of %s\n",
+                     exitStatusName(status).c_str(), o_.request.scenePath.c_str());
+      }
+      if (!changed) watch_.waitForChange(-1);
+    }
+  }
+
+ private:
+  // One render, then for a path integrator further batches until the file changes (true) or
+  // the batches are all in (false).
+  bool renderAndRefine(int round) {
+    const auto t0 = std::chrono::steady_clock::now();
+    RenderRequest request = o_.request;
+    std::size_t warnings = 0;
+    request.onWarnings = [&](const std::vector<Diagnostic>& w) {
+      warnings = w.size();
+      if (!o_.quiet)
+        for (const Diagnostic& d : w) std::fprintf(stderr, "%s\n", d.format().c_str());
+    };
+    request.onOptionWarning = [&](const std::string& w) {
+      if (!o_.quiet && round == 1) std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str());
+    };
+    // Named anew each round: an editor that saves by renaming gives the scene another inode,
+    // and its old one may come back as the image's.
+    RunFiles files;
+    files.addInput(o_.request.scenePath, "the scene file");
+    request.onOutput = [&files](const std::string& path) { files.checkOutput(path, "the image"); };
+    ProgressBar progress(!o_.quiet);
+    RenderReport report;
+    RadianceImage mean = renderSceneInMemory(request, progress, report, true, &session_);
+    writeImageAtomic(mean, report.outputPath, report.gamma);
+    if (!o_.quiet)
+      std::fprintf(stderr, "vkrt: watch: [%d] wrote %s (%dx%d%s) in %.3f s%s\n", round, report.outputPath.c_str(),
+                   report.width, report.height,
+                   report.pathIntegrator ? (", " + counted(mean.samples, "sample", "samples") + " per pixel").c_str() : "",
+                   secondsSince(t0),
+                   warnings ? (", " + counted(warnings, "warning", "warnings")).c_str() : "");
+    if (!report.pathIntegrator) return false;
+    SampleRecord record = samplesOf(mean);
+    const std::uint32_t seed = o_.request.seed.value_or(0);
+    for (int batch = 1; batch < kMaxWatchBatches; ++batch) {
+      if (watch_.waitForChange(0)) return true;
+      const auto tb = std::chrono::steady_clock::now();
+      RenderRequest more = request;
+      more.seed = seed + static_cast<std::uint32_t>(batch);
+      more.onWarnings = nullptr;
+      more.onOptionWarning = nullptr;
+      RenderReport batchReport;
+      ProgressBar quietBar(false);
+      RadianceImage next = renderSceneInMemory(more, quietBar, batchReport, true, &session_);
+      const SampleRecord added = samplesOf(next);
+      record.ranges.insert(record.ranges.end(), added.ranges.begin(), added.ranges.end());
+      accumulateMean(mean, std::move(next));
+      setSamples(mean, record);
+      writeImageAtomic(mean, report.outputPath, report.gamma);
+      if (!o_.quiet)
+        std::fprintf(stderr, "vkrt: watch: [%d] refined %s to %s per pixel (%d of %d batches) in %.3f s\n", round,
+                     report.outputPath.c_str(), counted(mean.samples, "sample", "samples").c_str(), batch + 1,
+                     kMaxWatchBatches, secondsSince(tb));
+    }
+    return false;
+  }
+
+  Options& o_;
+  RenderSession session_;
+  FileWatch watch_;
+};
+
+}  // namespace
+
+int watchScene(Options& options) {
+  try {
+    return Watcher(options).run();
+  } catch (const Interrupted& stop) {
+    if (!options.quiet) std::fprintf(stderr, "vkrt: watch: stopped\n");
+    return kExitSignalBase + stop.signal();
+  }
+}
+
+}  // namespace vkrt

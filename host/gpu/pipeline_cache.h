@@ -1,0 +1,59 @@
+// The compiled compute pipelines a Vulkan context keeps for the renders that follow: a scene
+// rendered again (vkrt --watch after an edit, a batch of scenes of the same features) takes
+// the VkPipeline of the first render, whose shader the driver compiled then (lavapipe compiles
+// at pipeline creation and again, for its JIT, at the first dispatch: 0.3-0.8 s a variant on
+// two cores), instead of compiling it again. A pipeline is known by its SPIR-V, its binding
+// types, its specialization constants and its push-constant size.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <tuple>
+#include <vector>
+
+#include "gpu/vulkan_api.h"
+
+namespace vkrt {
+
+// The parts of a pipeline that depend on its shader and layout alone (every render binds its
+// own buffers through its own descriptor set).
+struct CompiledPipeline {
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+struct PipelineKey {
+  const std::uint32_t* spirv = nullptr;   // the shader's embedded SPIR-V (static storage)
+  std::size_t spirvBytes = 0;
+  std::vector<VkDescriptorType> bindingTypes;
+  std::vector<std::uint32_t> specConstants;
+  std::uint32_t pushConstantBytes = 0;
+  bool operator<(const PipelineKey& o) const {
+    return std::tie(spirv, spirvBytes, bindingTypes, specConstants, pushConstantBytes) <
+           std::tie(o.spirv, o.spirvBytes, o.bindingTypes, o.specConstants, o.pushConstantBytes);
+  }
+};
+
+class PipelineCache {
+ public:
+  explicit PipelineCache(VkDevice device) : device_(device) {}
+  ~PipelineCache();   // destroys every pipeline (before the device is)
+  PipelineCache(const PipelineCache&) = delete;
+  PipelineCache& operator=(const PipelineCache&) = delete;
+
+  // The pipeline of `key`: the one kept, or made now by `make` (which creates all three
+  // handles, or destroys what it made and throws) and kept. `reused` says which.
+  const CompiledPipeline& get(const PipelineKey& key, const std::function<CompiledPipeline()>& make, bool& reused);
+  std::size_t size() const;
+
+ private:
+  VkDevice device_;
+  mutable std::mutex mutex_;
+  std::map<PipelineKey, CompiledPipeline> pipelines_;
+};
+
+}  // namespace vkrt

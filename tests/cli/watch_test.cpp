@@ -1,0 +1,136 @@
+// vkrt --watch (host/cli/watch.h): each change of the scene file, in place or by renaming a
+// new file over it as editors save, renders again, and the image is what a fresh process
+// renders of the file as it then is; a scene with an error leaves the last image and waits;
+// a path-traced scene refines into the mean of the batches its record names (checked against
+// vkrt merge of the same batches rendered apart); Ctrl-C ends it with status 130 and no
+// temporary file.
+#include <signal.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "image/image_file.h"
+#include "image/samples.h"
+#include "test_support.h"
+
+using namespace vkrt;
+using namespace vkrt::test;
+
+namespace {
+
+// Waits (at most `seconds`) until the log holds `text`; false when it never does.
+bool logShows(const std::string& logPath, const std::string& text, double seconds = 60) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (fileExists(logPath) && readFile(logPath).find(text) != std::string::npos) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+// Saves as many editors do: a new file renamed over the old one.
+void saveByRename(const std::string& path, const std::string& text) {
+  writeFile(path + ".new", text);
+  ASSERT_EQ(std::rename((path + ".new").c_str(), path.c_str()), 0);
+}
+
+std::string whittedScene(const char* diffuse) {
+  return std::string("size 32 24\ncamera 0 0 4 0 0 0 0 1 0 45\npoint 2 2 2 1 1 1\nambient 0.1 0.1 0.1\ndiffuse ") +
+         diffuse + "\nsphere 0 0 0 1\n";
+}
+
+void watchFollowsEdits(const std::string& backend) {
+  const std::string dir = freshDir("watch/edits-" + backend);
+  const std::string scene = dir + "/s.test", out = dir + "/out.png", log = dir + "/log";
+  writeFile(scene, whittedScene("0.8 0.2 0.2"));
+  Spawned watching = spawnVkrt({"--watch", "--backend", backend, "-o", out, scene}, log);
+  auto fresh = [&](const std::string& name) {
+    RunResult r = runVkrt("--backend " + backend + " -q -o " + dir + "/" + name + " " + scene);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return readImage(dir + "/" + name).rgb;
+  };
+  ASSERT_TRUE(logShows(log, "vkrt: watch: [1] wrote " + out)) << readFile(log);
+  EXPECT_EQ(readImage(out).rgb, fresh("fresh1.png"));
+
+  saveByRename(scene, whittedScene("0.2 0.8 0.2"));
+  ASSERT_TRUE(logShows(log, "vkrt: watch: [2] wrote " + out)) << readFile(log);
+  const auto second = fresh("fresh2.png");
+  EXPECT_EQ(readImage(out).rgb, second);
+
+  writeFile(scene, whittedScene("0.2 0.8 0.2") + "sphere 0 0 0\n");   // in place, with an error
+  ASSERT_TRUE(logShows(log, "nothing written; waiting for the next change of " + scene)) << readFile(log);
+  EXPECT_NE(readFile(log).find("s.test:7: error: 'sphere' expects 4 arguments"), std::string::npos) << readFile(log);
+  EXPECT_EQ(readImage(out).rgb, second);   // the last good image stays
+
+  writeFile(scene, whittedScene("0.2 0.2 0.8") + "sphre 1 1 1 0.2\n");   // fixed; a typo warned of
+  ASSERT_TRUE(logShows(log, "vkrt: watch: [4] wrote " + out)) << readFile(log);
+  EXPECT_NE(readFile(log).find("1 warning"), std::string::npos) << readFile(log);
+  EXPECT_EQ(readImage(out).rgb, fresh("fresh4.png"));
+
+  ::kill(watching.pid, SIGINT);
+  Finished done = waitVkrtWithin(watching, 30);
+  EXPECT_EQ(done.exitCode, 130) << done.output;
+  EXPECT_NE(done.output.find("vkrt: watch: stopped"), std::string::npos) << done.output;
+  // The scene, the log, the image and the three fresh renders: no temporary file.
+  EXPECT_EQ(fileCount(dir), 6u);
+}
+
+}  // namespace
+
+TEST(Watch, RendersAgainAtEachChangeOnTheCpu) { watchFollowsEdits("cpu"); }
+
+TEST(Watch, RendersAgainAtEachChangeOnVulkan) {
+  if (!gpuContextOrSkip()) return;
+  watchFollowsEdits("vulkan");
+}
+
+// The refined image is the mean of the batches its vkrt-samples record names, bit for bit.
+TEST(Watch, APathTracedSceneRefinesIntoTheMeanOfItsBatches) {
+  const std::string dir = freshDir("watch/refine");
+  const std::string scene = dir + "/s.test", out = dir + "/out.pfm", log = dir + "/log";
+  writeFile(scene,
+            "size 12 9\ncamera 0 -3 1 0 0 0.5 0 0 1 45\nintegrator pathtracer\nspp 2\nnexteventestimation on\n"
+            "quadLight -0.5 -0.5 2 1 0 0 0 1 0 4 4 4\ndiffuse 0.7 0.5 0.3\nvertex -3 -3 0\nvertex 3 -3 0\n"
+            "vertex 3 3 0\nvertex -3 3 0\ntri 0 1 2\ntri 0 2 3\nsphere 0 0 0.5 0.5\n");
+  Spawned watching = spawnVkrt({"--watch", "--backend", "cpu", "--seed", "40", "-o", out, scene}, log);
+  ASSERT_TRUE(logShows(log, "(3 of 64 batches)")) << readFile(log);
+  ::kill(watching.pid, SIGTERM);
+  Finished done = waitVkrtWithin(watching, 30);
+  EXPECT_EQ(done.exitCode, 143) << done.output;
+  const RadianceImage refined = readFloatImage(out);
+  std::optional<SampleRecord> record;
+  for (const auto& [keyword, text] : refined.text)
+    if (keyword == kSamplesKeyword) record = parseSampleRecord(text);
+  ASSERT_TRUE(record);
+  ASSERT_GE(record->ranges.size(), 3u);
+  std::string batches;
+  for (std::size_t k = 0; k < record->ranges.size(); ++k) {
+    EXPECT_EQ(record->ranges[k].seed, 40u + k);
+    EXPECT_EQ(record->ranges[k].count, 2u);
+    const std::string batch = dir + "/batch-" + std::to_string(k) + ".pfm";
+    RunResult r = runVkrt("--backend cpu -q --seed " + std::to_string(40 + k) + " -o " + batch + " " + scene);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    batches += " " + batch;
+  }
+  RunResult merged = runVkrt("merge -q -o " + dir + "/merged.pfm" + batches);
+  ASSERT_EQ(merged.exitCode, 0) << merged.output;
+  EXPECT_TRUE(sameBits(readFloatImage(dir + "/merged.pfm"), refined));
+}
+
+TEST(Watch, OptionsThatDoNotGoWithItAreUsageErrors) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--watch a.test b.test", "--watch takes one scene, got 2"},
+      {"--watch --compare a.test", "--compare does not go with it"},
+      {"--watch --check r.png a.test", "--check does not go with it"},
+      {"--watch --time 3 a.test", "--time does not go with it"},
+  };
+  for (const auto& [args, message] : cases) {
+    RunResult r = runVkrt(args);
+    EXPECT_EQ(r.exitCode, 1) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << args << "\n" << r.output;
+  }
+}
