@@ -130,17 +130,21 @@ std::string lightsText(const vkrt::RenderReport::Lights& l) {
   for (std::size_t type = 0; type < vkrt::kLightTypeCount; ++type)
     add(l.byType[type], std::to_string(l.byType[type]) + " " + std::string(vkrt::kLightTypeNames[type]));
   add(l.quad, std::to_string(l.quad) + " quad");
-  add(l.emissiveTriangles, vkrt::counted(l.emissiveTriangles, "emissive triangle", "emissive triangles"));
-  add(l.emissiveSpheres, vkrt::counted(l.emissiveSpheres, "emissive sphere", "emissive spheres"));
+  for (std::uint32_t kind = 0; kind < vkrt::shapes::kKinds; ++kind)
+    add(l.emissive[kind], vkrt::counted(l.emissive[kind], "emissive " + std::string(vkrt::shapes::kNames[kind]),
+                                        "emissive " + std::string(vkrt::shapes::kPluralNames[kind])));
   return vkrt::counted(l.total(), "light", "lights") + (kinds.empty() ? "" : " (" + kinds + ")");
 }
 
 void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
   const double ms = 1e3;
-  std::fprintf(stderr, "vkrt: %s %dx%d maxdepth %d: %s, %s, %s; backend %s", req.scenePath.c_str(), r.width,
-               r.height, r.maxDepth, vkrt::counted(r.triangles, "triangle", "triangles").c_str(),
-               vkrt::counted(r.spheres, "sphere", "spheres").c_str(), lightsText(r.lights).c_str(),
-               r.backend.c_str());
+  std::string primitives;   // "2 triangles, 1 sphere, ": every kind of shape
+  for (std::uint32_t kind = 0; kind < vkrt::shapes::kKinds; ++kind) {
+    using vkrt::shapes::kNames, vkrt::shapes::kPluralNames;
+    primitives += vkrt::counted(r.primitives[kind], kNames[kind], kPluralNames[kind]) + ", ";
+  }
+  std::fprintf(stderr, "vkrt: %s %dx%d maxdepth %d: %s%s; backend %s", req.scenePath.c_str(), r.width, r.height,
+               r.maxDepth, primitives.c_str(), lightsText(r.lights).c_str(), r.backend.c_str());
   if (req.backend == vkrt::Backend::Cpu)
     std::fprintf(stderr, ", %s", vkrt::counted(r.threads, "thread", "threads").c_str());
   std::fprintf(stderr, "\n  parse   %9.1f ms\n", r.parseSeconds * ms);

@@ -23,13 +23,15 @@ void ShaderBindings::bindTo(ComputePipeline& pipeline) const {
 }
 
 SceneUpload::SceneUpload(const Context& context, const GpuScene& scene, SceneArrays arrays)
-    : triangles_(Buffer::withContents(context, scene.triangles)),
-      normals_(Buffer::withContents(context, scene.triangleNormals)),
-      spheres_(Buffer::withContents(context, scene.spheres)),
+    : normals_(Buffer::withContents(context, scene.triangleNormals)),
       lights_(Buffer::withContents(context, scene.lights)),
       materials_(Buffer::withContents(context, scene.materials)),
       nodes_(Buffer::withContents(context, scene.bvh.nodes)),
       primRefs_(Buffer::withContents(context, scene.bvh.primRefs)) {
+#define VKRT_SHAPE_UPLOAD(Type, member, name, kind, GpuType, binding) \
+  shapes_.push_back(Buffer::withContents(context, scene.member));
+  VKRT_SHAPES(VKRT_SHAPE_UPLOAD)
+#undef VKRT_SHAPE_UPLOAD
   if (arrays != SceneArrays::Path) return;
   quadLights_.emplace(Buffer::withContents(context, scene.quadLights));
   emitters_.emplace(Buffer::withContents(context, scene.emitters));
@@ -37,17 +39,22 @@ SceneUpload::SceneUpload(const Context& context, const GpuScene& scene, SceneArr
 
 bool SceneUpload::texelsFit(std::size_t maxTexels) const {
   bool fit = primRefs_.size() / 4 <= maxTexels;   // one uint a texel
-  for (const Buffer* b : {&triangles_, &normals_, &spheres_, &lights_, &materials_, &nodes_})
-    fit = fit && b->size() / 16 <= maxTexels;
+  for (const Buffer* b : {&normals_, &lights_, &materials_, &nodes_}) fit = fit && b->size() / 16 <= maxTexels;
+  for (const Buffer& b : shapes_) fit = fit && b.size() / 16 <= maxTexels;
   if (quadLights_) fit = fit && quadLights_->size() / 16 <= maxTexels;
   return fit;
 }
 
 void SceneUpload::bind(ShaderBindings& bindings, bool texelReads) const {
   const VkDescriptorType type = texelReads ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  bindings.set(gpu::kBindingTriangles, triangles_, type);
+  // Each kind's array at its binding, in the order of the kinds.
+  constexpr std::uint32_t kShapeBindings[] = {
+#define VKRT_SHAPE_BINDING(Type, member, name, kind, GpuType, binding) binding,
+      VKRT_SHAPES(VKRT_SHAPE_BINDING)
+#undef VKRT_SHAPE_BINDING
+  };
+  for (std::size_t kind = 0; kind < shapes_.size(); ++kind) bindings.set(kShapeBindings[kind], shapes_[kind], type);
   bindings.set(gpu::kBindingTriangleNormals, normals_, type);
-  bindings.set(gpu::kBindingSpheres, spheres_, type);
   bindings.set(gpu::kBindingLights, lights_, type);
   bindings.set(gpu::kBindingMaterials, materials_, type);
   bindings.set(gpu::kBindingBvhNodes, nodes_, type);

@@ -43,7 +43,8 @@ class SceneUpload {
   void bind(ShaderBindings& bindings, bool texelReads) const;
 
  private:
-  Buffer triangles_, normals_, spheres_, lights_, materials_, nodes_, primRefs_;
+  std::vector<Buffer> shapes_;   // each kind's array (scene/shapes/shape_list.h), by kind
+  Buffer normals_, lights_, materials_, nodes_, primRefs_;
   std::optional<Buffer> quadLights_, emitters_;   // the path shader's only
 };
 

@@ -101,10 +101,12 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   Buffer pathBuffer(context, sizeof path);
   std::memcpy(pathBuffer.mapped(), &path, sizeof path);
 
-  // Every primitive of a small scene tested by every ray, when the BVH holds each exactly once.
-  const std::size_t primitives = scene.triangles.size() + scene.spheres.size();
-  const bool testAll =
-      options.testAll && primitives <= gpu::kTestAllMaxPrims && scene.bvh.primRefs.size() == primitives;
+  // Every primitive of a small scene tested by every ray, when the BVH holds each exactly once
+  // and each is of a kind that the shader's loop tests (triangles and spheres): the BVH
+  // otherwise, for a scene with a shape of another kind.
+  const std::size_t primitives = primitiveCount(scene);
+  const bool testAll = options.testAll && primitives == path.triangleCount + path.sphereCount &&
+                       primitives <= gpu::kTestAllMaxPrims && scene.bvh.primRefs.size() == primitives;
   t.testedAll = testAll;
   const std::vector<std::uint32_t> spec = pathFeatures(scene, path.jitter, options.specialize, testAll, t.leftOut);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;

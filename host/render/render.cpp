@@ -126,8 +126,8 @@ RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene
   return image;
 }
 
-// Frees the scene's triangles and spheres once they are flattened: nothing after that reads them
-// (152 bytes a triangle, 150 MB for a million, held through the upload and render otherwise).
+// Frees the scene's shapes once they are flattened: nothing after that reads them (152 bytes
+// a triangle, 150 MB for a million, held through the upload and render otherwise).
 RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, ProgressBar& progress,
                                RenderReport& report, RenderSession& session, const SamplePlan& plan,
                                const RowSink* rows) {
@@ -146,8 +146,9 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
   GpuScene gpuScene = flatten(scene);
   report.buildSeconds = secondsSince(t0);
   report.bvhNodes = gpuScene.bvh.nodes.size();
-  std::vector<Triangle>().swap(scene.triangles);
-  std::vector<Sphere>().swap(scene.spheres);
+#define VKRT_SHAPE_FREE(Type, member, name, kind, GpuType, binding) std::vector<Type>().swap(scene.member);
+  VKRT_SHAPES(VKRT_SHAPE_FREE)
+#undef VKRT_SHAPE_FREE
 
   t0 = std::chrono::steady_clock::now();
   BatchRenderer batches = [&](const SampleBatch& batch, const std::function<void(std::uint64_t, std::uint64_t)>& px) {
@@ -386,7 +387,7 @@ RenderReport::Lights countLights(const SceneDesc& scene) {
   n.quad = scene.quadLights.size();
   if (scene.path.integrator == Integrator::PathTracer)
     for (std::uint32_t prim : collectEmitters(scene).prims)
-      ++((gpu::primKind(prim) == gpu::kPrimSphere) ? n.emissiveSpheres : n.emissiveTriangles);
+      ++n.emissive[gpu::primKind(prim)];
   return n;
 }
 
@@ -428,8 +429,7 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   report.height = request.crop ? request.crop->height() : scene.height;
   checkImageFitsInMemory(scene, report.width, report.height, prepared.streamed);
   report.maxDepth = scene.maxDepth;
-  report.triangles = scene.triangles.size();
-  report.spheres = scene.spheres.size();
+  for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind) report.primitives[kind] = shapes::count(scene, kind);
   report.lights = countLights(scene);
 
   // The Whitted model ignores `gamma` (doc/path-tracing.md, "Commands"): its bytes are doc/scene-format.md

@@ -20,6 +20,7 @@
 #include "render/ray_counts.h"
 #include "scene/diagnostic.h"
 #include "scene/scene_desc.h"
+#include "scene/shapes/shape.h"
 
 namespace vkrt {
 
@@ -78,17 +79,20 @@ struct RenderReport {
   std::string outputPath;
   std::string backend;                 // "cpu" or "vulkan (DEVICE NAME)"
   int width = 0, height = 0, maxDepth = 0, threads = 0;
-  std::size_t triangles = 0, spheres = 0, bvhNodes = 0;
+  std::array<std::size_t, shapes::kKinds> primitives{};   // by kind of shape (scene/shapes/shape.h: kNames)
+  std::size_t bvhNodes = 0;
   // The lights the integrator uses: point and directional lights, by type (scene/light.h:
   // kLightTypeNames); quad lights (the path integrators'; the Whitted model ignores them);
-  // and for `pathtracer` the emissive triangles and spheres, which light the scene there too
-  // (scene/emitters.h).
+  // and for `pathtracer` the emissive primitives by kind of shape, which light the scene
+  // there too (scene/emitters.h).
   struct Lights {
     std::array<std::size_t, kLightTypeCount> byType{};
-    std::size_t quad = 0, emissiveTriangles = 0, emissiveSpheres = 0;
+    std::size_t quad = 0;
+    std::array<std::size_t, shapes::kKinds> emissive{};
     std::size_t total() const {
-      std::size_t n = quad + emissiveTriangles + emissiveSpheres;
+      std::size_t n = quad;
       for (std::size_t k : byType) n += k;
+      for (std::size_t k : emissive) n += k;
       return n;
     }
   } lights;

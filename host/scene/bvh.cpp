@@ -417,9 +417,16 @@ Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads, double sc
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // A primitive reference holds an index below 2^29 (gpu_types.h, primRef): 32 GiB of
   // triangles, beyond any machine's memory before this is reached.
-  if (scene.triangles.size() > gpu::kPrimIndexMask || scene.spheres.size() > gpu::kPrimIndexMask)
-    throw OutOfMemory(std::to_string(scene.triangles.size()) + " triangles and " + std::to_string(scene.spheres.size()) +
-                      " spheres: a scene holds at most " + std::to_string(gpu::kPrimIndexMask) + " of each");
+  bool tooMany = false;
+  for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind)
+    tooMany = tooMany || shapes::count(scene, kind) > gpu::kPrimIndexMask;
+  if (tooMany) {
+    std::string counts;   // "N triangles and M spheres", every kind
+    for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind)
+      counts += std::string(kind == 0 ? "" : kind + 1 < shapes::kKinds ? ", " : " and ") +
+                std::to_string(shapes::count(scene, kind)) + " " + std::string(shapes::kPluralNames[kind]);
+    throw OutOfMemory(counts + ": a scene holds at most " + std::to_string(gpu::kPrimIndexMask) + " of each");
+  }
   // Every primitive of kind 0, then of kind 1, ...: prims[i] for i in [first[k], first[k + 1]).
   std::size_t first[shapes::kKinds + 1] = {};
   for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind) first[kind + 1] = first[kind] + shapes::count(scene, kind);

@@ -1,19 +1,18 @@
-// SceneDesc -> GpuScene. The only place where double-precision scene data becomes float32, and
-// where the world is moved into the float32 frame (ray_offset.h, floatFrameOrigin and
-// floatFrameScale; in double, before rounding): the origin at the centre of the scene's
-// geometry (or at the camera, when a far object would put that centre far from what the
-// camera sees nearby), and lengths multiplied by a power of two that brings a vast or tiny
-// scene's size near 1. Float32 then sees the same numbers wherever the scene is and however
-// large it is; a power of two changes no rounding, so a scene of ordinary size (scale 1) and
-// the same scene scaled by 2^k give the same bits.
+// SceneDesc -> GpuScene. The only place where double-precision scene data becomes float32 (a
+// shape's by its toGpu, in its own file, the triangles' here), and where the world is moved
+// into the float32 frame (ray_offset.h, floatFrameOrigin and floatFrameScale; in double,
+// before rounding): the origin at the centre of the scene's geometry (or at the camera, when
+// a far object would put that centre far from what the camera sees nearby), and lengths
+// multiplied by a power of two that brings a vast or tiny scene's size near 1. Float32 then
+// sees the same numbers wherever the scene is and however large it is; a power of two
+// changes no rounding, so a scene of ordinary size (scale 1) and the same scene scaled by 2^k
+// give the same bits.
 #include "scene/flatten.h"
 
 #include <algorithm>
 #include <cmath>
 #include <future>
 #include <limits>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/emitters.h"
 #include "scene/ray_offset.h"
@@ -24,13 +23,6 @@ namespace {
 
 // Triangles are converted on two threads from this many on.
 constexpr std::size_t kParallelMinTriangles = 50000;
-
-// The power of two that brings a sphere's radius into [1, 2) when it lies outside
-// [2^-8, 2^8], else 1 (the radius as it is).
-double radiusNormaliser(double radius) {
-  if (!(radius > 0.0) || !std::isfinite(radius) || (radius >= 1.0 / 256.0 && radius <= 256.0)) return 1.0;
-  return std::ldexp(1.0, -std::ilogb(radius));
-}
 
 gpu::vec4 f4(const dvec3& v, float w = 0.0f) {
   return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), w};
@@ -117,13 +109,13 @@ gpu::GpuPathParams pathParams(const SceneDesc& scene, const gpu::GpuCamera& came
 
 // Triangles [begin, end) into their GPU layout at the same indices; the normals of smooth
 // ones are appended to `normals`, their normalsIndex counted from its size.
-void convertTriangles(const SceneDesc& scene, const dvec3& origin, double scale, const PrimitiveOffsets& offsets,
-                      std::size_t begin, std::size_t end, std::vector<gpu::GpuTriangle>& out,
-                      std::vector<gpu::GpuTriangleNormals>& normals) {
+void convertTriangles(const std::vector<Triangle>& triangles, const dvec3& origin, double scale,
+                      const std::vector<double>& offsets, std::size_t begin, std::size_t end,
+                      std::vector<gpu::GpuTriangle>& out, std::vector<gpu::GpuTriangleNormals>& normals) {
   for (std::size_t i = begin; i < end; ++i) {
-    const Triangle& t = scene.triangles[i];
+    const Triangle& t = triangles[i];
     gpu::GpuTriangle gt{};
-    gt.rayOffset = static_cast<float>(offsets.triangles[i] * scale);
+    gt.rayOffset = static_cast<float>(offsets[i] * scale);
     // The plane, in double: the shader measures t from it, so that a vast triangle's float32
     // corners do not make its hits less exact than the ray's own origin allows.
     const dvec3 a = (t.p[0] - origin) * scale, b = (t.p[1] - origin) * scale, c = (t.p[2] - origin) * scale;
@@ -145,6 +137,36 @@ void convertTriangles(const SceneDesc& scene, const dvec3& origin, double scale,
   }
 }
 
+// Every shape of one kind into its GPU layout, at the same indices: the shape's toGpu, given
+// its offset (ray_offset.h) in world units.
+template <class Shape, class GpuShape>
+void convertKind(const std::vector<Shape>& shapes, const std::vector<double>& offsets, const dvec3& origin,
+                 double scale, std::vector<GpuShape>& out, std::vector<gpu::GpuTriangleNormals>&) {
+  out.reserve(shapes.size());
+  for (std::size_t i = 0; i < shapes.size(); ++i) out.push_back(shapes::toGpu(shapes[i], origin, scale, offsets[i]));
+}
+
+// The triangles, and the normals of the smooth ones: in two halves, the second on another
+// thread when there are many; each half numbers its smooth triangles' normals from 0, and the
+// second's are moved after the first's.
+void convertKind(const std::vector<Triangle>& triangles, const std::vector<double>& offsets, const dvec3& origin,
+                 double scale, std::vector<gpu::GpuTriangle>& out, std::vector<gpu::GpuTriangleNormals>& normals) {
+  const std::size_t nt = triangles.size();
+  out.resize(nt);
+  std::vector<gpu::GpuTriangleNormals> secondNormals;
+  const std::size_t half = nt >= kParallelMinTriangles ? nt / 2 : nt;
+  auto secondHalf = std::async(nt >= kParallelMinTriangles ? std::launch::async : std::launch::deferred,
+                               [&] { convertTriangles(triangles, origin, scale, offsets, half, nt, out, secondNormals); });
+  convertTriangles(triangles, origin, scale, offsets, 0, half, out, normals);
+  secondHalf.get();
+  if (!secondNormals.empty()) {
+    const auto shift = static_cast<gpu::uint>(normals.size());
+    for (std::size_t i = half; i < nt; ++i)
+      if (out[i].normalsIndex != gpu::kNoNormals) out[i].normalsIndex += shift;
+    normals.insert(normals.end(), secondNormals.begin(), secondNormals.end());
+  }
+}
+
 }  // namespace
 
 GpuScene flatten(const SceneDesc& scene) {
@@ -163,39 +185,10 @@ GpuScene flatten(const SceneDesc& scene) {
       std::async(std::launch::async, [&scene] { return primitiveOffsets(scene); });
   g.bvh = buildBvh(scene, origin, 0, scale);
   const PrimitiveOffsets offsets = offsetsLater.get();
-  // From the float32 frame to the world.
-  const dmat4 fromFrame = glm::scale(glm::translate(dmat4(1.0), origin), dvec3(1.0 / scale));
-  // The triangles in two halves, the second on another thread when there are many; each half
-  // numbers its smooth triangles' normals from 0, and the second's are moved after the first's.
-  const std::size_t nt = scene.triangles.size();
-  g.triangles.resize(nt);
-  std::vector<gpu::GpuTriangleNormals> secondNormals;
-  const std::size_t half = nt >= kParallelMinTriangles ? nt / 2 : nt;
-  auto secondHalf = std::async(nt >= kParallelMinTriangles ? std::launch::async : std::launch::deferred,
-                               [&] { convertTriangles(scene, origin, scale, offsets, half, nt, g.triangles, secondNormals); });
-  convertTriangles(scene, origin, scale, offsets, 0, half, g.triangles, g.triangleNormals);
-  secondHalf.get();
-  if (!secondNormals.empty()) {
-    const auto shift = static_cast<gpu::uint>(g.triangleNormals.size());
-    for (std::size_t i = half; i < nt; ++i)
-      if (g.triangles[i].normalsIndex != gpu::kNoNormals) g.triangles[i].normalsIndex += shift;
-    g.triangleNormals.insert(g.triangleNormals.end(), secondNormals.begin(), secondNormals.end());
-  }
-  g.spheres.reserve(scene.spheres.size());
-  for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-    const Sphere& s = scene.spheres[i];
-    gpu::GpuSphere gs{};
-    gs.rayOffset = static_cast<float>(offsets.spheres[i] * scale);
-    // From the float32 frame to coordinates centred on the sphere, in double: a sphere far
-    // from the world's origin keeps float32's precision. A radius far from 1 is brought into
-    // [1, 2) by a power of two (exact), so that its square neither overflows nor underflows.
-    const double radiusScale = radiusNormaliser(s.radius);
-    gs.objectFromWorld = gpu::mat4(glm::scale(dmat4(1.0), dvec3(radiusScale)) * glm::translate(dmat4(1.0), -s.center) *
-                                   s.objectFromWorld * fromFrame);
-    gs.centerRadius = f4(dvec3(0.0), static_cast<float>(s.radius * radiusScale));
-    gs.materialIndex = s.material;
-    g.spheres.push_back(gs);
-  }
+#define VKRT_SHAPE_CONVERT(Type, member, name, kind, GpuType, binding) \
+  convertKind(scene.member, offsets.member, origin, scale, g.member, g.triangleNormals);
+  VKRT_SHAPES(VKRT_SHAPE_CONVERT)
+#undef VKRT_SHAPE_CONVERT
   for (const Light& l : scene.lights) g.lights.push_back(toGpu(l, origin, scale));
   for (const Material& m : scene.materials) {
     g.materials.push_back({f4(m.ambient, m.brdf == BrdfModel::Ggx ? gpu::kBrdfGgx : gpu::kBrdfPhong),

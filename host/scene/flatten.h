@@ -1,6 +1,7 @@
 // SceneDesc -> GpuScene: the arrays the GPU reads, in the layouts of gpu_types.h (float32).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -18,9 +19,11 @@ struct GpuScene {
   double scale = 1.0;
   gpu::GpuCamera camera{};   // doc/scene-format.md, "Camera"
   gpu::GpuCutoff cutoff{};   // the Whitted shader's exactness cut-off (gpu_types.h)
-  std::vector<gpu::GpuTriangle> triangles;
+  // Each shape's primitives in its GPU layout (shapes/shape_list.h), at the SceneDesc's indices.
+#define VKRT_SHAPE_MEMBER(Type, member, name, kind, GpuType, binding) std::vector<GpuType> member;
+  VKRT_SHAPES(VKRT_SHAPE_MEMBER)
+#undef VKRT_SHAPE_MEMBER
   std::vector<gpu::GpuTriangleNormals> triangleNormals;   // only for `trinormal` triangles
-  std::vector<gpu::GpuSphere> spheres;
   std::vector<gpu::GpuLight> lights;
   std::vector<gpu::GpuMaterial> materials;   // w fields: BRDF model, roughness, shininess, quad light
   std::vector<gpu::GpuQuadLight> quadLights;   // scene-centred, as every other position
@@ -36,5 +39,14 @@ struct GpuScene {
 
 // Converts to float32 layouts and builds the BVH.
 GpuScene flatten(const SceneDesc& scene);
+
+// How many primitives the scene holds, of every kind.
+inline std::size_t primitiveCount(const GpuScene& scene) {
+  std::size_t n = 0;
+#define VKRT_SHAPE_COUNT(Type, member, name, kind, GpuType, binding) n += scene.member.size();
+  VKRT_SHAPES(VKRT_SHAPE_COUNT)
+#undef VKRT_SHAPE_COUNT
+  return n;
+}
 
 }  // namespace vkrt

@@ -6,6 +6,7 @@
 #include "scene/parse.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -21,6 +22,8 @@
 #include "scene/integrator_table.h"
 #include "scene/linear_map.h"
 #include "scene/scene_file.h"
+#include "scene/shapes/shape_command.h"
+#include "scene/shapes/shape_list.h"
 #include "scene/tokenizer.h"
 #include "scene/unit_vector.h"
 #include "suggest.h"
@@ -42,6 +45,41 @@ constexpr std::string_view kNextEventNames[] = {"off", "on", "mis"};
 constexpr std::string_view kSamplingNames[] = {"hemisphere", "cosine", "brdf"};
 constexpr std::string_view kBrdfNames[] = {"phong", "ggx"};
 constexpr std::string_view kOnOffNames[] = {"on", "off"};
+
+// The shapes' own commands (shapes/shape_list.h): each reads its shape in the shape's file
+// and adds it to its array.
+struct ShapeCommandRow {
+  std::string_view name;
+  void (*read)(const ShapeCommand&, SceneDesc&);
+};
+#define VKRT_SHAPE_COMMAND(name, read, member)                  \
+  ShapeCommandRow{name, [](const ShapeCommand& c, SceneDesc& s) { \
+    if (auto shape = read(c)) s.member.push_back(*shape);        \
+  }},
+constexpr ShapeCommandRow kShapeCommands[] = {VKRT_SHAPE_COMMANDS(VKRT_SHAPE_COMMAND)};
+#undef VKRT_SHAPE_COMMAND
+
+// Every command's name, for lookup and suggestions: kCommandNames with the shapes' commands
+// between `camera` and `maxverts`, where the format lists `sphere` (a suggestion breaks a tie
+// by this order: `spare` is nearest to `sphere`, and as near to `scale`).
+constexpr std::size_t kCommandCount = std::size(kCommandNames);
+constexpr std::size_t kShapeCommandCount = std::size(kShapeCommands);
+constexpr std::size_t kShapeCommandsAt = static_cast<std::size_t>(Command::MaxVerts);
+constexpr auto kAllCommandNames = [] {
+  std::array<std::string_view, kCommandCount + kShapeCommandCount> names{};
+  std::size_t i = 0;
+  for (std::size_t c = 0; c < kCommandCount; ++c) {
+    if (c == kShapeCommandsAt)
+      for (const ShapeCommandRow& row : kShapeCommands) names[i++] = row.name;
+    names[i++] = kCommandNames[c];
+  }
+  return names;
+}();
+
+// What index i of kAllCommandNames names: a Command, or a row of kShapeCommands.
+bool isShapeCommand(std::size_t i) { return i >= kShapeCommandsAt && i < kShapeCommandsAt + kShapeCommandCount; }
+const ShapeCommandRow& shapeCommandAt(std::size_t i) { return kShapeCommands[i - kShapeCommandsAt]; }
+Command commandAt(std::size_t i) { return static_cast<Command>(i < kShapeCommandsAt ? i : i - kShapeCommandCount); }
 
 struct VertexWithNormal {
   dvec3 position;
@@ -112,21 +150,25 @@ class Parser {
     line_ = line.number;
     args_.of(line);
     const std::string_view name = line.command();
-    std::optional<Command> cmd = commandNamed(name);
-    if (!cmd) {
-      cmd = commandNamedIgnoringCase(name);
-      if (!cmd)
+    std::optional<std::size_t> known = indexNamed(kAllCommandNames, name);
+    if (!known) {
+      known = indexNamedIgnoringCase(kAllCommandNames, name);
+      if (!known)
         return warn(WarningKind::UnknownCommand,
-                    "unknown command " + quoted(name) + " (line skipped)" + didYouMean(name, kCommandNames));
-      warn(WarningKind::KeywordCase, quoted(name) + " read as '" + std::string(nameOf(*cmd)) +
+                    "unknown command " + quoted(name) + " (line skipped)" + didYouMean(name, kAllCommandNames));
+      warn(WarningKind::KeywordCase, quoted(name) + " read as '" + std::string(kAllCommandNames[*known]) +
                                          "' (keywords are case-sensitive)");
     }
-    if (deferred_.firstSizeLine == 0 && deferred_.beforeSizeLine == 0 && *cmd != Command::Size) {
+    const bool shape = isShapeCommand(*known);
+    const bool size = !shape && commandAt(*known) == Command::Size;
+    if (deferred_.firstSizeLine == 0 && deferred_.beforeSizeLine == 0 && !size) {
       deferred_.beforeSizeLine = line_;
-      deferred_.beforeSizeCommand = nameOf(*cmd);
+      deferred_.beforeSizeCommand = kAllCommandNames[*known];
     }
-    if (contains(kIntegratorSettings, *cmd)) deferred_.settings.push_back({*cmd, line_});
-    switch (*cmd) {
+    if (shape) return readShape(shapeCommandAt(*known));
+    const Command cmd = commandAt(*known);
+    if (contains(kIntegratorSettings, cmd)) deferred_.settings.push_back({cmd, line_});
+    switch (cmd) {
       case Command::Vertex: return cmdVertex();
       case Command::Tri: return cmdTri();
       case Command::VertexNormal: return cmdVertexNormal();
@@ -135,9 +177,8 @@ class Parser {
       case Command::MaxDepth: return cmdMaxDepth();
       case Command::Output: return cmdOutput();
       case Command::Camera: return cmdCamera();
-      case Command::Sphere: return cmdSphere();
       case Command::MaxVerts:
-      case Command::MaxVertNorms: return cmdSizeHint(nameOf(*cmd));
+      case Command::MaxVertNorms: return cmdSizeHint(nameOf(cmd));
       case Command::Translate: return cmdTranslate();
       case Command::Rotate: return cmdRotate();
       case Command::Scale: return cmdScale();
@@ -154,18 +195,18 @@ class Parser {
       case Command::Integrator: return cmdIntegrator();
       case Command::QuadLight: return cmdQuadLight();
       case Command::LightSamples:
-        if (cmdSampleCount(*cmd, scene_.path.lightSamples)) deferred_.lightSamplesLine = line_;
+        if (cmdSampleCount(cmd, scene_.path.lightSamples)) deferred_.lightSamplesLine = line_;
         return;
-      case Command::Spp: return static_cast<void>(cmdSampleCount(*cmd, scene_.path.spp));
+      case Command::Spp: return static_cast<void>(cmdSampleCount(cmd, scene_.path.spp));
       case Command::LightStratify:
-        if (cmdOnOff(*cmd, scene_.path.lightStratify)) deferred_.lightStratifyLine = scene_.path.lightStratify ? line_ : 0;
+        if (cmdOnOff(cmd, scene_.path.lightStratify)) deferred_.lightStratifyLine = scene_.path.lightStratify ? line_ : 0;
         return;
-      case Command::RussianRoulette: return static_cast<void>(cmdOnOff(*cmd, scene_.path.russianRoulette));
+      case Command::RussianRoulette: return static_cast<void>(cmdOnOff(cmd, scene_.path.russianRoulette));
       case Command::NextEventEstimation:
-        return static_cast<void>(args_.keyword(nameOf(*cmd), kNextEventNames, scene_.path.nextEvent));
+        return static_cast<void>(args_.keyword(nameOf(cmd), kNextEventNames, scene_.path.nextEvent));
       case Command::ImportanceSampling:
-        return static_cast<void>(args_.keyword(nameOf(*cmd), kSamplingNames, scene_.path.sampling));
-      case Command::Brdf: return static_cast<void>(args_.keyword(nameOf(*cmd), kBrdfNames, material_.brdf));
+        return static_cast<void>(args_.keyword(nameOf(cmd), kSamplingNames, scene_.path.sampling));
+      case Command::Brdf: return static_cast<void>(args_.keyword(nameOf(cmd), kBrdfNames, material_.brdf));
       case Command::Roughness: return cmdRoughness();
       case Command::Gamma: return cmdGamma();
       case Command::Count: break;
@@ -261,24 +302,11 @@ class Parser {
     return static_cast<std::uint32_t>(scene_.materials.size() - 1);
   }
 
-  void cmdSphere() {
-    double a[4];
-    if (!args_.numbers("sphere", 4, "x y z radius", a)) return;
-    if (a[3] < 0.0) {
-      error("sphere radius must not be negative, got " + quoted(args_[3]));
-      return;
-    }
-    if (isSingular(glm::dmat3(transform_))) {
-      error("sphere under a singular transform (a scale of 0): it has no volume and no normal");
-      return;
-    }
-    Sphere s;
-    s.worldFromObject = transform_;
-    s.objectFromWorld = inverseAffine(transform_);
-    s.center = {a[0], a[1], a[2]};
-    s.radius = a[3];
-    s.material = currentMaterial();
-    scene_.spheres.push_back(s);
+  // A shape's own command, read in its file with what it takes of the parser's state.
+  void readShape(const ShapeCommandRow& row) {
+    const ShapeCommand command{args_, [this](std::string message) { error(std::move(message)); }, transform_,
+                               [this] { return currentMaterial(); }};
+    row.read(command, scene_);
   }
 
   void cmdSizeHint(std::string_view cmd) {

@@ -9,6 +9,7 @@
 
 #include "gpu_types.h"
 #include "scene/scene_desc.h"
+#include "scene/shapes/shape_list.h"
 
 namespace vkrt {
 
@@ -40,14 +41,27 @@ double offsetForSize(double size);
 // come within that distance of it, whichever is smaller. An object is a sphere, or a set of
 // triangles connected through shared vertex positions.
 struct PrimitiveOffsets {
-  std::vector<double> triangles;   // one per SceneDesc triangle
-  std::vector<double> spheres;     // one per SceneDesc sphere
+  // One per primitive of each kind, named as the SceneDesc's arrays (shapes/shape_list.h):
+  // `triangles`, `spheres`.
+#define VKRT_SHAPE_MEMBER(Type, member, name, kind, GpuType, binding) std::vector<double> member;
+  VKRT_SHAPES(VKRT_SHAPE_MEMBER)
+#undef VKRT_SHAPE_MEMBER
   int objects = 0;                 // how many objects the scene has (for --stats and tests)
-  // The offsets of the primitives of `kind` (gpu_types.h: kPrimTriangle, kPrimSphere), and the
-  // offset of the primitive that `ref` refers to.
-  std::vector<double>& ofKind(std::uint32_t kind) { return kind == gpu::kPrimSphere ? spheres : triangles; }
-  const std::vector<double>& ofKind(std::uint32_t kind) const { return kind == gpu::kPrimSphere ? spheres : triangles; }
+  // The offsets of the primitives of `kind` (a kind of shape_list.h), and the offset of the
+  // primitive that `ref` refers to.
+  std::vector<double>& ofKind(std::uint32_t kind) { return this->*kindMembers()[kind]; }
+  const std::vector<double>& ofKind(std::uint32_t kind) const { return this->*kindMembers()[kind]; }
   double of(std::uint32_t ref) const { return ofKind(gpu::primKind(ref))[gpu::primIndex(ref)]; }
+
+ private:
+  // The arrays by kind (the list is in the order of the kinds: shapes/shape.h).
+  using Member = std::vector<double> PrimitiveOffsets::*;
+  static const Member* kindMembers() {
+#define VKRT_SHAPE_POINTER(Type, member, name, kind, GpuType, binding) &PrimitiveOffsets::member,
+    static constexpr Member kMembers[] = {VKRT_SHAPES(VKRT_SHAPE_POINTER)};
+#undef VKRT_SHAPE_POINTER
+    return kMembers;
+  }
 };
 PrimitiveOffsets primitiveOffsets(const SceneDesc& scene);
 

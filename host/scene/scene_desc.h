@@ -10,6 +10,7 @@
 
 #include "scene/integrator_table.h"
 #include "scene/light.h"
+#include "scene/shapes/shape_list.h"
 
 namespace vkrt {
 
@@ -34,21 +35,6 @@ struct Material {
   // they emit that light's radiance on its front side only, and are black otherwise. -1: none.
   int quadLight = -1;
   bool operator==(const Material&) const = default;
-};
-
-struct Triangle {       // world space, counter-clockwise
-  dvec3 p[3];
-  dvec3 n[3];           // world-space unit vertex normals; meaningful only when smooth
-  bool smooth = false;  // `trinormal`: normals interpolated barycentrically
-  std::uint32_t material = 0;
-};
-
-struct Sphere {         // (center, radius) in object space, under worldFromObject
-  dmat4 worldFromObject{1.0};
-  dmat4 objectFromWorld{1.0};
-  dvec3 center{0.0};
-  double radius = 1.0;
-  std::uint32_t material = 0;
 };
 
 // `quadLight a ab ac L` (doc/path-tracing.md, "Quad lights"), world space: the parallelogram with
@@ -91,8 +77,10 @@ struct SceneDesc {
   int outputLine = 0;            // line of the `output` command, 0 when defaulted
   Camera camera;
   std::vector<Material> materials;
-  std::vector<Triangle> triangles;
-  std::vector<Sphere> spheres;
+  // Each shape's primitives (shapes/shape_list.h): `triangles`, `spheres`.
+#define VKRT_SHAPE_MEMBER(Type, member, name, kind, GpuType, binding) std::vector<Type> member;
+  VKRT_SHAPES(VKRT_SHAPE_MEMBER)
+#undef VKRT_SHAPE_MEMBER
   std::vector<Light> lights;
   std::vector<QuadLight> quadLights;
   PathSettings path;

@@ -21,14 +21,14 @@ GPU_CONST uint kSamplingHemisphere = 0u;
 GPU_CONST uint kSamplingCosine = 1u;
 GPU_CONST uint kSamplingBrdf = 2u;
 
-// It reads the scene at the bindings of raytrace.comp (kBindingTriangles .. kBindingPrimRefs),
+// It reads the scene at the bindings of raytrace.comp (the shapes' .. kBindingPrimRefs),
 // and shares kBindingPathStates, kBindingCounters and kBindingParams (GpuRenderParams: sizes,
 // bands, tiles, the BVH root) with it. At kBindingPixels it adds each pixel's samples into a
 // vec4 (rgb = sum of the samples' radiance, w = 1 once the pixel's samples are all done).
-GPU_CONST uint kBindingQuadLights = 11u;   // GpuQuadLight[] (a texel buffer with the texel reads)
-GPU_CONST uint kBindingPathParams = 12u;   // GpuPathParams (a uniform buffer)
-GPU_CONST uint kBindingEmitters = 13u;     // GpuEmitter[] (a storage buffer in both read modes)
-GPU_CONST uint kPathBindingCount = 14u;
+GPU_CONST uint kBindingQuadLights = kBindingCount + 0u;   // GpuQuadLight[] (a texel buffer with the texel reads)
+GPU_CONST uint kBindingPathParams = kBindingCount + 1u;   // GpuPathParams (a uniform buffer)
+GPU_CONST uint kBindingEmitters = kBindingCount + 2u;     // GpuEmitter[] (a storage buffer in both read modes)
+GPU_CONST uint kPathBindingCount = kBindingCount + 3u;
 
 // Its own specialization constant ids, after the shared ones (gpu_render.h).
 GPU_CONST uint kPathSpecHasQuadLights = kSpecSharedCount + 0u;
@@ -46,7 +46,8 @@ GPU_CONST uint kPathSpecJitter = kSpecSharedCount + 7u;
 GPU_CONST uint kPathSpecHasEmitters = kSpecSharedCount + 8u;    // some triangle or sphere emits (GpuEmitter): a feature, 0 or 1
 // 1: a ray is tested against every primitive, triangles then spheres (GpuPathParams
 // triangleCount and sphereCount), in a loop whose index is the same in every lane, instead of
-// a walk of the BVH; for scenes of at most kTestAllMaxPrims primitives, each of them in the BVH.
+// a walk of the BVH; for scenes of at most kTestAllMaxPrims primitives, each of them in the BVH
+// and each a triangle or a sphere (a scene with a shape of another kind walks the BVH).
 GPU_CONST uint kPathSpecTestAll = kSpecSharedCount + 9u;
 GPU_CONST uint kPathSpecCount = kSpecSharedCount + 10u;
 GPU_CONST uint kPathSpecFromParams = 0xFFFFFFFFu;

@@ -5,23 +5,23 @@
 #define VKRT_GPU_RENDER_H
 
 #include "gpu_limits.h"
+#include "gpu_scene.h"
 
 GPU_BEGIN
 
 // Descriptor bindings (set 0) of both shaders: the scene, the band's pixels and states, the
-// counters and the render's parameters (pathtrace.comp adds its own: gpu_path.h).
-GPU_CONST uint kBindingTriangles = 0u;
-GPU_CONST uint kBindingTriangleNormals = 1u;
-GPU_CONST uint kBindingSpheres = 2u;
-GPU_CONST uint kBindingLights = 3u;
-GPU_CONST uint kBindingMaterials = 4u;
-GPU_CONST uint kBindingBvhNodes = 5u;
-GPU_CONST uint kBindingPrimRefs = 6u;
-GPU_CONST uint kBindingPixels = 7u;       // output: one vec4 per pixel of the band, rgb = linear radiance, w = 1 when done (0: suspended)
-GPU_CONST uint kBindingPathStates = 8u;   // suspended state: a GpuWhittedState per invocation (raytrace.comp) or per pixel of the band (pathtrace.comp)
-GPU_CONST uint kBindingCounters = 9u;     // GpuCounters
-GPU_CONST uint kBindingParams = 10u;      // GpuRenderParams (a uniform buffer)
-GPU_CONST uint kBindingCount = 11u;
+// counters and the render's parameters (pathtrace.comp adds its own: gpu_path.h). The
+// shapes' arrays come first (gpu_scene.h: kBindingTriangles ..), so that a shape adds its
+// binding there without renumbering these.
+GPU_CONST uint kBindingLights = kBindingShapesEnd + 0u;
+GPU_CONST uint kBindingMaterials = kBindingShapesEnd + 1u;
+GPU_CONST uint kBindingBvhNodes = kBindingShapesEnd + 2u;
+GPU_CONST uint kBindingPrimRefs = kBindingShapesEnd + 3u;
+GPU_CONST uint kBindingPixels = kBindingShapesEnd + 4u;       // output: one vec4 per pixel of the band, rgb = linear radiance, w = 1 when done (0: suspended)
+GPU_CONST uint kBindingPathStates = kBindingShapesEnd + 5u;   // suspended state: a GpuWhittedState per invocation (raytrace.comp) or per pixel of the band (pathtrace.comp)
+GPU_CONST uint kBindingCounters = kBindingShapesEnd + 6u;     // GpuCounters
+GPU_CONST uint kBindingParams = kBindingShapesEnd + 7u;       // GpuRenderParams (a uniform buffer)
+GPU_CONST uint kBindingCount = kBindingShapesEnd + 8u;
 
 // Specialization constant ids both shaders give the same meaning. Only what changes the code is specialised: what the scene
 // contains (1) or not (0), so that the driver compiles out the code of absent features (and

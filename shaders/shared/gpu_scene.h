@@ -1,6 +1,7 @@
-// gpu_scene.h: the scene as the GPU reads it (flatten() writes it, scene_reads.glsl reads
-// it): primitive references, triangles, spheres, lights, materials, quad lights, BVH nodes and
-// their stack entries, and the emitter table.
+// gpu_scene.h: the scene as the GPU reads it (flatten() writes it, scene_reads.glsl and
+// shaders/shapes/ read it): primitive references, each shape's kind, binding and layout
+// (triangles, spheres), lights, materials, quad lights, BVH nodes and their stack entries, and
+// the emitter table.
 #ifndef VKRT_GPU_SCENE_H
 #define VKRT_GPU_SCENE_H
 
@@ -14,6 +15,12 @@ GPU_CONST uint kPrimKindShift = 29u;
 GPU_CONST uint kPrimIndexMask = 0x1FFFFFFFu;
 GPU_CONST uint kPrimTriangle = 0u;
 GPU_CONST uint kPrimSphere = 1u;
+// Each shape's arrays are the first bindings (set 0) of both shaders; gpu_render.h numbers the
+// rest from kBindingShapesEnd.
+GPU_CONST uint kBindingTriangles = 0u;
+GPU_CONST uint kBindingTriangleNormals = 1u;
+GPU_CONST uint kBindingSpheres = 2u;
+GPU_CONST uint kBindingShapesEnd = 3u;
 GPU_FN uint primRef(uint kind, uint index) { return (kind << kPrimKindShift) | index; }
 GPU_FN uint primKind(uint ref) { return ref >> kPrimKindShift; }
 GPU_FN uint primIndex(uint ref) { return ref & kPrimIndexMask; }

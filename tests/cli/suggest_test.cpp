@@ -164,6 +164,14 @@ TEST(Suggest, EveryLongOptionOfHelpIsSuggested) {
   }
 }
 
+// A typo as near a shape's command as another command's is suggested as the one the format
+// lists first: `spare` is 2 from both `sphere` and `scale`.
+TEST(Suggest, ShapeCommandsKeepTheFormatsOrderInSuggestions) {
+  ParsedScene p = parseSceneWithWarnings(kScene + "spare 0 0 0 1\n", "s.test");
+  ASSERT_EQ(p.warnings.size(), 1u);
+  EXPECT_EQ(p.warnings[0].format(), "s.test:5: warning: unknown command 'spare' (line skipped); did you mean 'sphere'?");
+}
+
 // `sphre 0 0 0 1` is skipped with a warning (the picture renders without the sphere): the
 // warning, at its line, names the command meant.
 TEST(Suggest, UnknownSceneCommandWarningNamesTheNearestCommand) {

@@ -41,6 +41,14 @@ std::vector<Accepted> acceptedInputs() {
        }},
       {"KeywordCaseSize", "SIZE 20 10\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1, "'SIZE' read as 'size'",
        [](const SceneDesc& s) { EXPECT_EQ(s.width, 20); }},
+      // A shape's own command (shapes/shape_list.h) is looked up as every other command is.
+      {"KeywordCaseShapeCommand", kOk + "Sphere 0 0 0 2\n", 3, "'Sphere' read as 'sphere' (keywords are case-sensitive)",
+       [](const SceneDesc& s) {
+         ASSERT_EQ(s.spheres.size(), 1u);
+         EXPECT_EQ(s.spheres[0].radius, 2.0);
+       }},
+      {"ShapeCommandBeforeSize", "sphere 0 0 0 1\nsize 64 48\ncamera 0 0 5 0 0 0 0 1 0 45\n", 1,
+       "'sphere' before 'size' (line 2)", [](const SceneDesc& s) { EXPECT_EQ(s.spheres.size(), 1u); }},
       {"RepeatedSize", kOk + "size 32 16\n", 3, "'size' given again (before at line 1): the last one counts",
        [](const SceneDesc& s) {
          EXPECT_EQ(s.width, 32);

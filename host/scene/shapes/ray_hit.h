@@ -5,9 +5,12 @@
 #include <cstdint>
 #include <limits>
 
-#include "scene/scene_desc.h"
+#include <glm/glm.hpp>
 
 namespace vkrt {
+
+using glm::dmat4;
+using glm::dvec3;
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 

@@ -1,29 +1,52 @@
 // The one place that maps a primitive reference (gpu_types.h: primRef, primKind, primIndex) to
-// its shape. Each shape's own file (triangle.h, sphere.h) answers the queries; the rest of the
-// host asks them here, by primRef. A new shape adds its file, its line in count() and its line
-// in visit(); a shape that lacks one of the queries does not compile.
+// its shape, by the list of shapes (shape_list.h). Each shape's own file (triangle.h,
+// sphere.h, ...) answers the queries; the rest of the host asks them here, by primRef. A shape
+// that lacks one of the queries does not compile.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 
+#include "errors.h"
 #include "gpu_types.h"
 #include "scene/scene_desc.h"
 #include "scene/shapes/ray_hit.h"
-#include "scene/shapes/sphere.h"
-#include "scene/shapes/triangle.h"
+#include "scene/shapes/shape_list.h"
 
 namespace vkrt::shapes {
 
-// Kinds 0 .. kKinds - 1 (gpu_types.h: kPrimTriangle, kPrimSphere), in the order in which the
-// host lists primitives: every triangle, then every sphere.
-inline constexpr std::uint32_t kKinds = 2;
+// Kinds 0 .. kKinds - 1, in the order of shape_list.h, which is also the order in which the
+// host lists primitives: every triangle, then every sphere, ...
+#define VKRT_SHAPE_ONE(Type, member, name, kind, GpuType, binding) +1
+inline constexpr std::uint32_t kKinds = 0 VKRT_SHAPES(VKRT_SHAPE_ONE);
+#undef VKRT_SHAPE_ONE
 
-// How many primitives of `kind` the scene holds.
+// Each kind's name, singular and plural (for messages), by kind.
+#define VKRT_SHAPE_NAME(Type, member, name, kind, GpuType, binding) std::string_view(name),
+inline constexpr std::string_view kNames[] = {VKRT_SHAPES(VKRT_SHAPE_NAME)};
+#undef VKRT_SHAPE_NAME
+#define VKRT_SHAPE_PLURAL(Type, member, name, kind, GpuType, binding) std::string_view(#member),
+inline constexpr std::string_view kPluralNames[] = {VKRT_SHAPES(VKRT_SHAPE_PLURAL)};
+#undef VKRT_SHAPE_PLURAL
+
+// The list's rows are in the order of their kinds.
+#define VKRT_SHAPE_KIND(Type, member, name, kind, GpuType, binding) kind,
+inline constexpr std::uint32_t kListedKinds[] = {VKRT_SHAPES(VKRT_SHAPE_KIND)};
+#undef VKRT_SHAPE_KIND
+static_assert([] {
+  for (std::uint32_t k = 0; k < kKinds; ++k)
+    if (kListedKinds[k] != k) return false;
+  return true;
+}(), "shape_list.h lists the shapes in the order of their kinds");
+
+// How many primitives of `kind` the scene holds (0 for a kind that is no shape).
 inline std::size_t count(const SceneDesc& scene, std::uint32_t kind) {
   switch (kind) {
-    case gpu::kPrimTriangle: return scene.triangles.size();
-    case gpu::kPrimSphere: return scene.spheres.size();
+#define VKRT_SHAPE_COUNT(Type, member, name, kind, GpuType, binding) \
+  case kind: return scene.member.size();
+    VKRT_SHAPES(VKRT_SHAPE_COUNT)
+#undef VKRT_SHAPE_COUNT
     default: return 0;
   }
 }
@@ -32,9 +55,12 @@ inline std::size_t count(const SceneDesc& scene, std::uint32_t kind) {
 template <class F>
 decltype(auto) visit(const SceneDesc& scene, std::uint32_t ref, F&& f) {
   switch (gpu::primKind(ref)) {
-    case gpu::kPrimSphere: return f(scene.spheres[gpu::primIndex(ref)]);
-    default: return f(scene.triangles[gpu::primIndex(ref)]);
+#define VKRT_SHAPE_VISIT(Type, member, name, kind, GpuType, binding) \
+  case kind: return f(scene.member[gpu::primIndex(ref)]);
+    VKRT_SHAPES(VKRT_SHAPE_VISIT)
+#undef VKRT_SHAPE_VISIT
   }
+  throw InternalError("a primitive reference of no kind of shape");
 }
 
 // The queries, by primitive reference (each shape's file says what they mean for it).

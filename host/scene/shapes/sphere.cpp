@@ -3,12 +3,22 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/diagnostic.h"
 #include "scene/linear_map.h"
 
 namespace vkrt::shapes {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// The power of two that brings a sphere's radius into [1, 2) when it lies outside
+// [2^-8, 2^8], else 1 (the radius as it is).
+double radiusNormaliser(double radius) {
+  if (!(radius > 0.0) || !std::isfinite(radius) || (radius >= 1.0 / 256.0 && radius <= 256.0)) return 1.0;
+  return std::ldexp(1.0, -std::ilogb(radius));
+}
 
 // The normal and area density at the point of sphere `s` whose object-space unit normal is nObject.
 void densityAtNormal(const Sphere& s, const dvec3& nObject, SurfacePoint& point) {
@@ -19,6 +29,42 @@ void densityAtNormal(const Sphere& s, const dvec3& nObject, SurfacePoint& point)
 }
 
 }  // namespace
+
+std::optional<Sphere> readSphere(const ShapeCommand& command) {
+  double a[4];
+  if (!command.args.numbers("sphere", 4, "x y z radius", a)) return std::nullopt;
+  if (a[3] < 0.0) {
+    command.error("sphere radius must not be negative, got " + quoted(command.args[3]));
+    return std::nullopt;
+  }
+  if (isSingular(glm::dmat3(command.worldFromObject))) {
+    command.error("sphere under a singular transform (a scale of 0): it has no volume and no normal");
+    return std::nullopt;
+  }
+  Sphere s;
+  s.worldFromObject = command.worldFromObject;
+  s.objectFromWorld = inverseAffine(command.worldFromObject);
+  s.center = {a[0], a[1], a[2]};
+  s.radius = a[3];
+  s.material = command.material();
+  return s;
+}
+
+gpu::GpuSphere toGpu(const Sphere& s, const dvec3& frameOrigin, double frameScale, double rayOffset) {
+  // From the float32 frame to the world.
+  const dmat4 fromFrame = glm::scale(glm::translate(dmat4(1.0), frameOrigin), dvec3(1.0 / frameScale));
+  gpu::GpuSphere gs{};
+  gs.rayOffset = static_cast<float>(rayOffset * frameScale);
+  // From the float32 frame to coordinates centred on the sphere, in double: a sphere far
+  // from the world's origin keeps float32's precision. A radius far from 1 is brought into
+  // [1, 2) by a power of two (exact), so that its square neither overflows nor underflows.
+  const double radiusScale = radiusNormaliser(s.radius);
+  gs.objectFromWorld = gpu::mat4(glm::scale(dmat4(1.0), dvec3(radiusScale)) * glm::translate(dmat4(1.0), -s.center) *
+                                 s.objectFromWorld * fromFrame);
+  gs.centerRadius = {0.0f, 0.0f, 0.0f, static_cast<float>(s.radius * radiusScale)};
+  gs.materialIndex = s.material;
+  return gs;
+}
 
 void bounds(const Sphere& s, dvec3& lo, dvec3& hi) {
   dvec3 c = dvec3(s.worldFromObject * glm::dvec4(s.center, 1.0));

@@ -1,12 +1,37 @@
 // The sphere (an ellipsoid under its transform): what the host asks of one (its box, whether
 // it can be hit, its area, the CPU reference's intersection and normal, a point on it as a
-// light and its density, how near it comes to a point). Dispatched to by scene/shapes/shape.h.
+// light and its density, how near it comes to a point), its GPU layout, and its command.
+// Listed in scene/shapes/shape_list.h.
 #pragma once
 
-#include "scene/scene_desc.h"
+#include <cstdint>
+#include <optional>
+
+#include "gpu_types.h"
 #include "scene/shapes/ray_hit.h"
+#include "scene/shapes/shape_command.h"
+
+namespace vkrt {
+
+struct Sphere {         // (center, radius) in object space, under worldFromObject
+  dmat4 worldFromObject{1.0};
+  dmat4 objectFromWorld{1.0};
+  dvec3 center{0.0};
+  double radius = 1.0;
+  std::uint32_t material = 0;
+};
+
+}  // namespace vkrt
 
 namespace vkrt::shapes {
+
+// `sphere x y z radius` under the current transform; nothing (after an error at the line)
+// for a negative radius or a singular transform.
+std::optional<Sphere> readSphere(const ShapeCommand& command);
+
+// Its GPU layout in the float32 frame (flatten()): world point x is (x - frameOrigin) *
+// frameScale there; `rayOffset` is its secondary-ray offset in world units (ray_offset.h).
+gpu::GpuSphere toGpu(const Sphere& s, const dvec3& frameOrigin, double frameScale, double rayOffset);
 
 // World-space bounds under its transform (exact for the ellipsoid).
 void bounds(const Sphere& s, dvec3& lo, dvec3& hi);

@@ -1,10 +1,23 @@
 // The triangle: what the host asks of one (its box, whether it can be hit, its area, the
 // CPU reference's intersection and normal, a point on it as a light and its density, how near
-// it comes to a point). Dispatched to by scene/shapes/shape.h.
+// it comes to a point). Listed in scene/shapes/shape_list.h. Its commands (`vertex`, `tri`,
+// `vertexnormal`, `trinormal`) are the parser's: they share its vertex lists.
 #pragma once
 
-#include "scene/scene_desc.h"
+#include <cstdint>
+
 #include "scene/shapes/ray_hit.h"
+
+namespace vkrt {
+
+struct Triangle {       // world space, counter-clockwise
+  dvec3 p[3];
+  dvec3 n[3];           // world-space unit vertex normals; meaningful only when smooth
+  bool smooth = false;  // `trinormal`: normals interpolated barycentrically
+  std::uint32_t material = 0;
+};
+
+}  // namespace vkrt
 
 namespace vkrt::shapes {
 
