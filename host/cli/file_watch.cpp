@@ -20,7 +20,7 @@ FileWatch::FileWatch(const std::string& path) {
   name_ = slash == std::string::npos ? path : path.substr(slash + 1);
   fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
   if (fd_ < 0) throw IoError(std::string("cannot watch '") + path + "': " + std::strerror(errno));
-  if (::inotify_add_watch(fd_, folder.c_str(), IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE | IN_ATTRIB) < 0) {
+  if (::inotify_add_watch(fd_, folder.c_str(), IN_CLOSE_WRITE | IN_MOVED_TO | IN_ATTRIB) < 0) {
     const int e = errno;
     ::close(fd_);
     throw IoError("cannot watch the folder '" + folder + "' of '" + path + "': " + std::strerror(e));

@@ -16,13 +16,14 @@ class FileWatch {
   FileWatch& operator=(const FileWatch&) = delete;
 
   // Waits at most `timeoutMs` milliseconds (-1: no limit; 0: only looks) for the file to be
-  // written, replaced or created, then for it to settle (no further change for kSettleMs),
-  // and says whether it changed. Throws Interrupted when a signal arrives (interrupt.h).
+  // closed after writing, renamed into place or touched (each an event that comes once the
+  // file is whole), then for it to settle (no further change for kSettleMs), and says whether
+  // it changed. Throws Interrupted when a signal arrives (interrupt.h).
   bool waitForChange(int timeoutMs);
 
-  // An editor's save is often several events (truncate, write, close; or write a copy, rename):
+  // An editor's save can be several such events (vim: write a copy, rename, set attributes):
   // the render waits until the file has been quiet this long.
-  static constexpr int kSettleMs = 50;
+  static constexpr int kSettleMs = 10;
 
  private:
   // Reads the pending events; true when one names the file.
