@@ -313,7 +313,7 @@ TEST(PathPointLights, DiffuseFloorUnderAPointAndADirectionalLight) {
 TEST(PathCourseScenes, EveryCse168SceneRendersWithoutNaN) {
   namespace fs = std::filesystem;
   const std::optional<std::string> data = test::cse168Dir();
-  if (!data) VKRT_SKIP_UNLESS_CI("no course data at ../shared/cse168 (or $VKRT_CSE168_DIR)");
+  if (!data) VKRT_SKIP_UNLESS_CI(test::kNoCse168Data);
   const fs::path dir = fs::path(*data) / "scenes";
   int rendered = 0;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {

@@ -632,7 +632,7 @@ class GpuPathCourseScene : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(GpuPathCourseScene, RendersACropWithoutNaN) {
   auto dir = cse168Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse168Data);
   VKRT_REQUIRE_GPU(context);
   SceneDesc scene = parseSceneFile(*dir + "/scenes/" + GetParam() + ".test");
   VulkanPathOptions o;

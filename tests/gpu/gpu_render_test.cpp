@@ -95,7 +95,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, GpuFeatureScene, ::testing::ValuesIn(projectSce
 // reference; and against the CPU reference, the same flip allowance as above.
 TEST_P(GpuCourseScene, MatchesReferenceAndCpu) {
   auto dir = cse167Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse167 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse167Data);
   VKRT_REQUIRE_GPU(context);
   std::string name = GetParam();
   SceneDesc scene = parseScene(readFile(*dir + "/scenes/" + name + ".test"), name + ".test");
@@ -111,7 +111,7 @@ TEST_P(GpuCourseScene, MatchesReferenceAndCpu) {
 
 TEST_P(GpuCourseScene, CutoffChangesNoPixel) {
   auto dir = cse167Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse167 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse167Data);
   VKRT_REQUIRE_GPU(context);
   std::string name = GetParam();
   auto [cut, all] = expectCutoffChangesNoPixel(name, parseScene(readFile(*dir + "/scenes/" + name + ".test"), name));

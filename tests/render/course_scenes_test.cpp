@@ -39,7 +39,7 @@ Image renderCourse(const std::string& dir, const std::string& scene, const std::
 // and (320,479). Tolerance: at most 10 pixels per scene off by more than 2/255.
 TEST_P(CourseScene, MatchesVerifiedReference) {
   auto dir = cse167Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse167 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse167Data);
   std::string name = GetParam();
   Image expected = readImage(*dir + "/verified-matches/" + name + ".png");
   Image actual = renderCourse(*dir, name);
@@ -62,7 +62,7 @@ INSTANTIATE_TEST_SUITE_P(Cse167, CourseScene,
 // million triangles included.)
 TEST(CourseSceneFiles, Scene7ParsesIntoEveryTriangleOfTheFile) {
   auto dir = cse167Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse167 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse167Data);
   const std::string text = readFile(*dir + "/scenes/scene7.test");
   SceneDesc s = parseScene(text, "scene7.test");
 
@@ -128,7 +128,7 @@ void PrintTo(const Preview& p, std::ostream* os) { *os << p.image; }
 
 TEST_P(CoursePreview, MatchesJpegPreview) {
   auto dir = cse167Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse167 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse167Data);
   const Preview& p = GetParam();
   Image expected = readImage(*dir + "/previews/" + p.image + ".jpg");
   Image actual = renderCourse(*dir, p.scene, p.camera);

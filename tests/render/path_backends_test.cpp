@@ -67,7 +67,7 @@ class PathBackends : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(PathBackends, SameSeedNearlyTheSameImage) {
   auto dir = cse168Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse168Data);
   SceneDesc scene = parseSceneFile(*dir + "/scenes/" + GetParam() + ".test");
   expectBackendsAgree(scene, std::string("path-backends-") + testName(std::string(GetParam()).replace(3, 1, "_")));
 }

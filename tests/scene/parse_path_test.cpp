@@ -254,7 +254,7 @@ ParsedScene parseCourseScene(const std::string& dir, const std::string& name) {
 
 TEST_P(Cse168Scene, ParsesWithNoWarningAndItsSettings) {
   auto dir = cse168Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse168Data);
   const CourseSettings& c = GetParam();
   ParsedScene p = parseCourseScene(*dir, c.file);
   EXPECT_TRUE(p.warnings.empty()) << p.warnings.front().format();
@@ -282,7 +282,7 @@ INSTANTIATE_TEST_SUITE_P(Cse168, Cse168Scene, ::testing::ValuesIn(kCourseScenes)
 
 TEST(ParsePath, TheTableHoldsEveryCourseScene) {
   auto dir = cse168Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse168Data);
   std::size_t files = 0;
   for (const auto& e : std::filesystem::recursive_directory_iterator(*dir + "/scenes"))
     files += e.path().extension() == ".test";
@@ -293,7 +293,7 @@ TEST(ParsePath, TheTableHoldsEveryCourseScene) {
 // with `brdf phong`.
 TEST(ParsePath, CourseGgxRoughnessPerMaterial) {
   auto dir = cse168Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse168Data);
   SceneDesc s = parseCourseScene(*dir, "hw4/ggx").scene;
   const double roughness[] = {0.25, 0.05, 0.12, 0.01, 0.01, 0.7};
   ASSERT_EQ(s.spheres.size(), std::size(roughness));
@@ -314,7 +314,7 @@ TEST(ParsePath, CourseGgxRoughnessPerMaterial) {
 // and panels of GGX roughness 0.0005 to 0.15.
 TEST(ParsePath, CourseMisLightsHaveEqualPower) {
   auto dir = cse168Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse168Data);
   SceneDesc s = parseCourseScene(*dir, "hw4/mis").scene;
   ASSERT_EQ(s.quadLights.size(), 5u);
   for (std::size_t i = 1; i < 5; ++i) {
@@ -332,7 +332,7 @@ TEST(ParsePath, CourseMisLightsHaveEqualPower) {
 
 TEST(ParsePath, CourseDragonGamma) {
   auto dir = cse168Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse168 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse168Data);
   SceneDesc s = parseCourseScene(*dir, "hw4/dragon").scene;
   EXPECT_EQ(s.path.gamma, 2.2);
   EXPECT_EQ(s.triangles.size(), 100002u + 4u);

@@ -112,7 +112,7 @@ TEST(RayOffset, AVastFloorTakesTheOffsetOfTheSmallObjectsOnIt) {
 
 TEST(RayOffset, CourseScenesKeepTheCourseOffsetEverywhere) {
   std::optional<std::string> dir = cse167Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("the course scenes (../shared/cse167) are not here");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse167Data);
   for (const char* name : {"scene1", "scene2", "scene3", "scene4-specular", "scene5", "scene6", "scene7"}) {
     PrimitiveOffsets o = primitiveOffsets(parseScene(readFile(*dir + "/scenes/" + name + ".test"), name));
     for (double v : o.triangles) ASSERT_EQ(v, kCourse) << name;

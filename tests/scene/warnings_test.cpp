@@ -90,7 +90,7 @@ TEST(NoLightsWarning, NotWhereALightWouldChangeNothing) {
 // ambient alone, as their comments say; none of the ten gets the warning.
 TEST(NoLightsWarning, NoCourseSceneGetsIt) {
   auto dir = cse167Dir();
-  if (!dir) VKRT_SKIP_UNLESS_CI("course data ../shared/cse167 not found");
+  if (!dir) VKRT_SKIP_UNLESS_CI(kNoCse167Data);
   for (const char* name : {"scene1", "scene2", "scene3", "scene4-ambient", "scene4-diffuse", "scene4-emission",
                            "scene4-specular", "scene5", "scene6", "scene7"}) {
     ParsedScene p = parseSceneFileWithWarnings(*dir + "/scenes/" + name + ".test", ParseOptions{true});

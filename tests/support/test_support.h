@@ -21,6 +21,12 @@ bool inCi();
 
 // The course data folder (../shared/cse167 beside the source tree, or $VKRT_CSE167_DIR), if present.
 std::optional<std::string> cse167Dir();
+// Why a test that needs the course's data skips without it (the same words for every such test,
+// so that ctest's summary gives each reason once).
+inline constexpr const char* kNoCse167Data =
+    "needs the CSE167 scenes and reference images: none at ../shared/cse167 (set VKRT_CSE167_DIR to where they are)";
+inline constexpr const char* kNoCse168Data =
+    "needs the CSE168 scenes: none at ../shared/cse168 (set VKRT_CSE168_DIR to where they are)";
 // The path-tracing course data folder (../shared/cse168 beside the source tree, or
 // $VKRT_CSE168_DIR), if present.
 std::optional<std::string> cse168Dir();
