@@ -23,4 +23,24 @@ struct VulkanTimings {
   std::string leftOut;             // the features compiled out, e.g. "spheres, specular (maxdepth 0)"
 };
 
+// A render's timings over its sample batches: `batch`'s added to `total`. The first batch's
+// first dispatch stays apart (it holds the driver's JIT); a later batch's counts as dispatch
+// time. The variant (texelReads, testedAll, leftOut) is every batch's.
+inline void addBatchTimings(VulkanTimings& total, const VulkanTimings& batch, bool firstBatch) {
+  total.uploadSeconds += batch.uploadSeconds;
+  total.pipelineSeconds += batch.pipelineSeconds;
+  if (firstBatch)
+    total.firstDispatchSeconds = batch.firstDispatchSeconds;
+  else
+    total.dispatchSeconds += batch.firstDispatchSeconds;
+  total.dispatchSeconds += batch.dispatchSeconds;
+  total.readbackSeconds += batch.readbackSeconds;
+  total.bands += batch.bands;
+  total.dispatches += batch.dispatches;
+  total.suspensions += batch.suspensions;
+  total.texelReads = batch.texelReads;
+  total.testedAll = batch.testedAll;
+  total.leftOut = batch.leftOut;
+}
+
 }  // namespace vkrt

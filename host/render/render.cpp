@@ -173,7 +173,7 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
       image = renderVulkanPath(context, gpuScene, o, &rays, &timings);
     }
     report.rays += rays;
-    report.vulkan = timings;   // the last batch's (the Whitted model has one)
+    addBatchTimings(report.vulkan, timings, batch.firstSample == plan.progressive.firstSample);
     return image;
   };
   RadianceImage image = renderBatches(batches, plan, report);
