@@ -194,6 +194,7 @@ Context::Context(const ContextOptions& options) {
       info.pfnUserCallback = &Context::onMessage;
       info.pUserData = this;
       VK_CHECK(vk::vkCreateDebugUtilsMessengerEXT(instance_, &info, nullptr, &messenger_));
+      destroyMessenger_ = vk::vkDestroyDebugUtilsMessengerEXT;
     }
     instanceSeconds_ = secondsSince(t0);
     t0 = std::chrono::steady_clock::now();
@@ -227,7 +228,7 @@ Context::Context(const ContextOptions& options) {
     pipelines_ = std::make_unique<PipelineCache>(device_);
     deviceSeconds_ = secondsSince(t0);
   } catch (...) {
-    if (messenger_) vk::vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+    if (messenger_) destroyMessenger_(instance_, messenger_, nullptr);
     vk::vkDestroyInstance(instance_, nullptr);
     throw;
   }
@@ -239,7 +240,7 @@ Context::~Context() {
     pipelines_.reset();
     vk::vkDestroyDevice(device_, nullptr);
   }
-  if (messenger_) vk::vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+  if (messenger_) destroyMessenger_(instance_, messenger_, nullptr);
   vk::vkDestroyInstance(instance_, nullptr);
 }
 

@@ -57,6 +57,9 @@ class Context {
                                                    const VkDebugUtilsMessengerCallbackDataEXT*, void*);
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  // This instance's own: the global pointer (gpu/vulkan_api.h) is the last instance's, null
+  // when a later context in the process was made without validation.
+  PFN_vkDestroyDebugUtilsMessengerEXT destroyMessenger_ = nullptr;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
