@@ -335,12 +335,12 @@ int diff(const vkrt::Options& options) {
   files.addInput(options.diffA, "image A");
   files.addInput(options.diffB, "image B");
   claimHeatmap(options, files);
-  vkrt::Image a = vkrt::readImageAsBytes(options.diffA);   // A first: its error, if both have one
-  vkrt::Image b = vkrt::readImageAsBytes(options.diffB);
+  vkrt::AnyImage a = vkrt::readAnyImage(options.diffA);   // A first: its error, if both have one
+  vkrt::AnyImage b = vkrt::readAnyImage(options.diffB);
   std::optional<vkrt::LinearDifference> linear;
-  if (vkrt::readsAsRadiance(options.diffA) && vkrt::readsAsRadiance(options.diffB))
-    linear = vkrt::linearDifference(vkrt::readFloatImage(options.diffA), vkrt::readFloatImage(options.diffB));
-  return reportComparison(options, a, b, options.diffA + " vs " + options.diffB, linear);
+  if (a.radiance && b.radiance) linear = vkrt::linearDifference(*a.radiance, *b.radiance);
+  auto bytes = [](const vkrt::AnyImage& image) { return image.radiance ? vkrt::asBytes(*image.radiance) : image.bytes; };
+  return reportComparison(options, bytes(a), bytes(b), options.diffA + " vs " + options.diffB, linear);
 }
 
 // vkrt convert IN OUT: IN is an input, never written; OUT is written whole or not at all.

@@ -13,25 +13,15 @@
 #include "image/samples.h"
 #include "interrupt.h"
 #include "render/render.h"
+#include "timing.h"
 
 namespace vkrt {
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // The vkrt-samples record of `image` (every path integrator's image has one).
 SampleRecord samplesOf(const RadianceImage& image) {
-  for (const auto& [keyword, text] : image.text)
-    if (keyword == kSamplesKeyword)
-      if (std::optional<SampleRecord> r = parseSampleRecord(text)) return *r;
+  if (std::optional<SampleRecord> r = sampleRecordOf(image.text)) return *r;
   throw InternalError("a path-traced image without its samples record");
-}
-
-void setSamples(RadianceImage& image, const SampleRecord& record) {
-  for (auto& [keyword, text] : image.text)
-    if (keyword == kSamplesKeyword) text = formatSampleRecord(record);
 }
 
 class Watcher {
@@ -102,7 +92,7 @@ class Watcher {
       const SampleRecord added = samplesOf(next);
       record.ranges.insert(record.ranges.end(), added.ranges.begin(), added.ranges.end());
       accumulateMean(mean, std::move(next));
-      setSamples(mean, record);
+      setSampleRecord(mean.text, record);
       writeImageAtomic(mean, report.outputPath, report.gamma);
       if (!o_.quiet)
         std::fprintf(stderr, "vkrt: watch: [%d] refined %s to %s per pixel (%d of %d batches) in %.3f s\n", round,

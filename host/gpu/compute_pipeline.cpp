@@ -68,7 +68,7 @@ ComputePipeline::ComputePipeline(const Context& context, const std::uint32_t* sp
   };
   try {
     const CompiledPipeline& compiled = context.pipelines().get(
-        PipelineKey{spirv, spirvBytes, bindingTypes, specConstants, pushConstantBytes}, make, reused_);
+        PipelineKey{spirv, spirvBytes, bindingTypes, specConstants, pushConstantBytes}, make);
     setLayout_ = compiled.setLayout;
     layout_ = compiled.layout;
     pipeline_ = compiled.pipeline;

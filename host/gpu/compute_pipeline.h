@@ -35,9 +35,6 @@ class ComputePipeline {
   // then submits and waits.
   void run(const void* pushConstants, std::uint32_t groups, const Buffer* clear = nullptr);
 
-  // Whether the compiled pipeline was one the context kept from an earlier render.
-  bool reused() const { return reused_; }
-
  private:
   // Destroys every handle made so far; safe to call on a partly constructed pipeline.
   void release();
@@ -55,7 +52,6 @@ class ComputePipeline {
   VkFence fence_ = VK_NULL_HANDLE;
   std::vector<VkBufferView> views_;
   std::uint32_t pushConstantBytes_;
-  bool reused_ = false;
 };
 
 }  // namespace vkrt

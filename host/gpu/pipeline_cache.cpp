@@ -11,18 +11,11 @@ PipelineCache::~PipelineCache() {
   }
 }
 
-const CompiledPipeline& PipelineCache::get(const PipelineKey& key, const std::function<CompiledPipeline()>& make,
-                                           bool& reused) {
+const CompiledPipeline& PipelineCache::get(const PipelineKey& key, const std::function<CompiledPipeline()>& make) {
   std::lock_guard<std::mutex> lock(mutex_);
   auto it = pipelines_.find(key);
-  reused = it != pipelines_.end();
-  if (reused) return it->second;
+  if (it != pipelines_.end()) return it->second;
   return pipelines_.emplace(key, make()).first->second;
-}
-
-std::size_t PipelineCache::size() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return pipelines_.size();
 }
 
 }  // namespace vkrt

@@ -46,13 +46,12 @@ class PipelineCache {
   PipelineCache& operator=(const PipelineCache&) = delete;
 
   // The pipeline of `key`: the one kept, or made now by `make` (which creates all three
-  // handles, or destroys what it made and throws) and kept. `reused` says which.
-  const CompiledPipeline& get(const PipelineKey& key, const std::function<CompiledPipeline()>& make, bool& reused);
-  std::size_t size() const;
+  // handles, or destroys what it made and throws) and kept.
+  const CompiledPipeline& get(const PipelineKey& key, const std::function<CompiledPipeline()>& make);
 
  private:
   VkDevice device_;
-  mutable std::mutex mutex_;
+  std::mutex mutex_;
   std::map<PipelineKey, CompiledPipeline> pipelines_;
 };
 

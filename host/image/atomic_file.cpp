@@ -145,6 +145,17 @@ void writeAll(int fd, const std::uint8_t* data, std::size_t size, const std::str
   }
 }
 
+void writeAllAt(int fd, const std::uint8_t* data, std::size_t size, std::uint64_t offset, const std::string& path) {
+  while (size > 0) {
+    ssize_t n = ::pwrite(fd, data, size, static_cast<off_t>(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw IoError("cannot write '" + path + "': " + (n < 0 ? std::strerror(errno) : "no progress"));
+    data += n;
+    size -= static_cast<std::size_t>(n);
+    offset += static_cast<std::uint64_t>(n);
+  }
+}
+
 void checkOutputWritable(const std::string& path) {
   OutputFile out = resolveOutputFile(path);
   if (out.exists && ::access(out.target.c_str(), W_OK) != 0)

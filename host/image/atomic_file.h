@@ -47,5 +47,8 @@ void writeFileAtomic(const std::string& path, const char* suffix, const std::fun
 
 // Writes all of `data` to `fd`, or throws IoError naming `path`.
 void writeAll(int fd, const std::uint8_t* data, std::size_t size, const std::string& path);
+// The same at `offset` (pwrite), the file's own position left alone: for formats whose rows
+// or tables are placed. Throws IoError naming `path` as given.
+void writeAllAt(int fd, const std::uint8_t* data, std::size_t size, std::uint64_t offset, const std::string& path);
 
 }  // namespace vkrt

@@ -9,16 +9,14 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cstdint>
-#include <cstring>
 #include <exception>
 #include <fstream>
 #include <string_view>
 
 #include "errors.h"
+#include "image/atomic_file.h"
 #include "interrupt.h"
 
 namespace vkrt {
@@ -38,34 +36,33 @@ char* frameBase(const float* first, std::int64_t x0, std::int64_t y0, std::int64
   return reinterpret_cast<char*>(reinterpret_cast<std::uintptr_t>(first) - static_cast<std::uintptr_t>(offset));
 }
 
-// An OpenEXR output stream over an open file, written with pwrite at the stream's place (the
-// library seeks back to fill in the line offsets). A failed write is kept and reported by
-// check(): OpenEXR may write from a destructor, which must not throw.
+// An OpenEXR output stream over an open file, written at the stream's place (the library
+// seeks back to fill in the line offsets). A failed write is kept and reported again by
+// check(): OpenEXR also writes from its destructor, which swallows what it throws.
 class FdStream : public Imf::OStream {
  public:
   FdStream(int fd, const std::string& path) : Imf::OStream(path.c_str()), fd_(fd), path_(path) {}
   void write(const char c[], int n) override {
-    std::size_t done = 0, size = static_cast<std::size_t>(n);
-    while (done < size && error_.empty()) {
-      ssize_t w = ::pwrite(fd_, c + done, size - done, static_cast<off_t>(place_ + done));
-      if (w < 0 && errno == EINTR) continue;
-      if (w <= 0) error_ = w < 0 ? std::strerror(errno) : "no progress";
-      else done += static_cast<std::size_t>(w);
+    check();
+    try {
+      writeAllAt(fd_, reinterpret_cast<const std::uint8_t*>(c), static_cast<std::size_t>(n), place_, path_);
+    } catch (const IoError& e) {
+      error_ = e.what();
+      throw;
     }
-    place_ += size;
-    if (!error_.empty()) throw IoError("cannot write '" + path_ + "': " + error_);
+    place_ += static_cast<std::uint64_t>(n);
   }
   std::uint64_t tellp() override { return place_; }
   void seekp(std::uint64_t place) override { place_ = place; }
   void check() const {
-    if (!error_.empty()) throw IoError("cannot write '" + path_ + "': " + error_);
+    if (!error_.empty()) throw IoError(error_);
   }
 
  private:
   int fd_;
   std::string path_;
   std::uint64_t place_ = 0;
-  std::string error_;
+  std::string error_;   // the first failed write's message
 };
 
 IoError readError(const std::string& path, const std::string& why) {

@@ -11,42 +11,38 @@
 #include "image/samples.h"
 
 namespace vkrt {
-
-double recordedGamma(const ImageRecords& records) {
-  for (const auto& [keyword, text] : records)
-    if (keyword == kSamplesKeyword)
-      if (std::optional<SampleRecord> record = parseSampleRecord(text)) return record->gamma;
-  return 1.0;
-}
+namespace {
 
 // Only a regular file is looked into before it is read: the bytes of a FIFO can be read once,
 // and a read that waits on one must stay where a signal stops it (stb's).
-bool readsAsRadiance(const std::string& path) {
+bool isRegularFile(const std::string& path) {
   struct stat st {};
-  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && isFloatImageFile(path);
-}
-
-namespace {
-
-// An 8-bit file with the records of its format (none for JPEG, which no row of the table reads).
-Image readBytesWithRecords(const std::string& path) {
-  Image image = readImage(path);
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) image.text = readImageFileText(path);
-  return image;
+  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
 }  // namespace
 
-Image readImageAsBytes(const std::string& path) {
-  if (!readsAsRadiance(path)) return readBytesWithRecords(path);
-  RadianceImage image = readFloatImage(path);
-  return encodeImage(image, recordedGamma(image.text));
+double recordedGamma(const ImageRecords& records) {
+  std::optional<SampleRecord> record = sampleRecordOf(records);
+  return record ? record->gamma : 1.0;
 }
 
-RadianceImage readImageAsRadiance(const std::string& path) {
-  if (readsAsRadiance(path)) return readFloatImage(path);
-  const Image bytes = readBytesWithRecords(path);
+AnyImage readAnyImage(const std::string& path) {
+  AnyImage image;
+  const bool regular = isRegularFile(path);
+  if (regular && isFloatImageFile(path)) {
+    image.radiance = readFloatImage(path);
+    return image;
+  }
+  image.bytes = readImage(path);
+  // The records of its format (none for JPEG, which no row of the table reads).
+  if (regular) image.bytes.text = readImageFileText(path);
+  return image;
+}
+
+Image asBytes(const RadianceImage& image) { return encodeImage(image, recordedGamma(image.text)); }
+
+RadianceImage asRadiance(const Image& bytes) {
   const double gamma = recordedGamma(bytes.text);
   float decoded[256];
   for (int b = 0; b < 256; ++b)
@@ -55,6 +51,11 @@ RadianceImage readImageAsRadiance(const std::string& path) {
   for (std::size_t i = 0; i < bytes.rgb.size(); ++i) image.rgb[i] = decoded[bytes.rgb[i]];
   image.text = bytes.text;
   return image;
+}
+
+Image readImageAsBytes(const std::string& path) {
+  AnyImage image = readAnyImage(path);
+  return image.radiance ? asBytes(*image.radiance) : std::move(image.bytes);
 }
 
 std::optional<LinearDifference> linearDifference(const RadianceImage& a, const RadianceImage& b) {
@@ -73,12 +74,13 @@ std::optional<LinearDifference> linearDifference(const RadianceImage& a, const R
 void convertImage(const std::string& from, const std::string& to) {
   if (!hasImageExtension(to))
     throw UsageError("'" + to + "' is not named " + imageExtensionsText() + ": say which format to write");
-  if (holdsLinearFloat(to) || readsAsRadiance(from)) {
-    RadianceImage image = readImageAsRadiance(from);
-    writeImageAtomic(image, to, recordedGamma(image.text));
-  } else {
-    writeImageAtomic(readBytesWithRecords(from), to);
+  AnyImage image = readAnyImage(from);
+  if (!image.radiance && !holdsLinearFloat(to)) {
+    writeImageAtomic(image.bytes, to);
+    return;
   }
+  const RadianceImage radiance = image.radiance ? std::move(*image.radiance) : asRadiance(image.bytes);
+  writeImageAtomic(radiance, to, recordedGamma(radiance.text));
 }
 
 }  // namespace vkrt

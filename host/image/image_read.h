@@ -17,20 +17,26 @@ namespace vkrt {
 // The gamma of `records`' vkrt-samples record, else 1.
 double recordedGamma(const ImageRecords& records);
 
-// The file as 8-bit RGB with its records: an 8-bit file as it is; a linear-float file
-// encoded with its recorded gamma (image/encode.h), the bytes vkrt writes for it as a PNG.
-// Throws IoError.
+// The file as it is, with its records: a linear-float file as radiance, any other (PNG, PPM,
+// JPEG) as 8-bit RGB in `bytes`. Only a regular file is looked into for its format: anything
+// else (a FIFO, whose bytes can be read once) is read as 8-bit. Throws IoError.
+struct AnyImage {
+  std::optional<RadianceImage> radiance;   // set for a linear-float file (then `bytes` is empty)
+  Image bytes;
+};
+AnyImage readAnyImage(const std::string& path);
+
+// A linear-float image as 8-bit RGB with its records, encoded with its recorded gamma
+// (image/encode.h): the bytes vkrt writes for it as a PNG.
+Image asBytes(const RadianceImage& image);
+
+// An 8-bit image as linear radiance with its records, decoded with its recorded gamma g: each
+// byte b as the middle of what encodes to it, ((b + 0.5) / 255)^g, and 0 and 255 as 0 and 1,
+// so that encoded again with g every byte comes back.
+RadianceImage asRadiance(const Image& bytes);
+
+// readAnyImage, as 8-bit (asBytes for a float file). Throws IoError.
 Image readImageAsBytes(const std::string& path);
-
-// The file as linear radiance with its records: a linear-float file as it is; an 8-bit file
-// decoded with its recorded gamma g, each byte b as the middle of what encodes to it,
-// ((b + 0.5) / 255)^g, and 0 and 255 as 0 and 1: encoded again with g, every byte comes
-// back. Throws IoError.
-RadianceImage readImageAsRadiance(const std::string& path);
-
-// Whether the file is a linear-float image (by its first bytes; only a regular file is looked
-// into: anything else, a FIFO, is read as 8-bit).
-bool readsAsRadiance(const std::string& path);
 
 // What two linear-float images differ by, in their own (radiance) units: the largest channel
 // difference and the root mean square over all channels; nothing when their sizes differ.

@@ -80,14 +80,7 @@ PfmRowWriter::PfmRowWriter(int fd, int width, int height,
 }
 
 void PfmRowWriter::writeAt(const std::uint8_t* data, std::size_t size, std::uint64_t offset) {
-  while (size > 0) {
-    ssize_t n = ::pwrite(fd_, data, size, static_cast<off_t>(offset));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw IoError("cannot write '" + path_ + "': " + (n < 0 ? std::strerror(errno) : "no progress"));
-    data += n;
-    size -= static_cast<std::size_t>(n);
-    offset += static_cast<std::uint64_t>(n);
-  }
+  writeAllAt(fd_, data, size, offset, path_);
 }
 
 void PfmRowWriter::radianceRows(int y0, const RadianceImage& band) {

@@ -83,6 +83,17 @@ std::optional<SampleRecord> parseSampleRecord(const std::string& value) {
   return record;
 }
 
+std::optional<SampleRecord> sampleRecordOf(const std::vector<std::pair<std::string, std::string>>& records) {
+  for (const auto& [keyword, text] : records)
+    if (keyword == kSamplesKeyword) return parseSampleRecord(text);
+  return std::nullopt;
+}
+
+void setSampleRecord(std::vector<std::pair<std::string, std::string>>& records, const SampleRecord& record) {
+  for (auto& [keyword, text] : records)
+    if (keyword == kSamplesKeyword) text = formatSampleRecord(record);
+}
+
 std::string sharedSample(const SampleRecord& a, const SampleRecord& b) {
   for (const SampleRange& r : a.ranges)
     for (const SampleRange& s : b.ranges) {

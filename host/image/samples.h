@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "image/radiance_image.h"
@@ -34,6 +35,12 @@ std::string formatSampleRecord(const SampleRecord& record);
 // The record's value back; nullopt when malformed (TOTAL not the sum, no range, an empty range,
 // a gamma not > 0).
 std::optional<SampleRecord> parseSampleRecord(const std::string& value);
+
+// The record among an image's records (RadianceImage::text, Image::text), parsed; nullopt
+// when it has none or a malformed one.
+std::optional<SampleRecord> sampleRecordOf(const std::vector<std::pair<std::string, std::string>>& records);
+// Replaces the value of the record among `records` (which must hold one).
+void setSampleRecord(std::vector<std::pair<std::string, std::string>>& records, const SampleRecord& record);
 
 // The first sample the two records share, as "seed K, sample N"; "" when they share none.
 std::string sharedSample(const SampleRecord& a, const SampleRecord& b);
