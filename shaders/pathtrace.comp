@@ -86,6 +86,9 @@ float lastPdf;         // solid-angle pdf of the scatter that made the current r
 vec3 pending;          // what the current shadow ray adds when nothing blocks it
 uint bounce, sampleIndex;
 uint pixelX, pixelY, pixelIndex;   // in the full image; pixelIndex = y * fullWidth + x
+uint pixelSlot;        // the pixel's place in the band's accumulation[]
+uint tile, runEnd;     // the lane's tile in its workgroup's run of tiles, and the run's end
+uint bandRows;         // rows of this band (the last may be short)
 
 // ---- random numbers (gpu_rng.h: the generator and how each number is used) ------------------
 
@@ -162,18 +165,49 @@ void startCamera() {
 // once per iteration: lavapipe would run an inlined copy at each call site.
 void finishSample() { phase = kPhaseSampleEnd; }
 
+// The lane's pixel in `tile` (its place in the tile is the lane's): whether it lies inside
+// the band (the last tiles of a row or of the band may stick out). Sets the pixel's
+// coordinates in the full image (a crop draws the full render's random numbers and camera
+// rays) and its pixelSlot.
+bool setPixel() {
+  uint x = (tile % params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
+  uint yInBand = (tile / params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
+  if (x >= params.width || yInBand >= bandRows) return false;
+  pixelSlot = yInBand * params.width + x;
+  pixelX = x + params.originX;
+  pixelY = pc.bandY0 + yInBand + params.originY;
+  pixelIndex = pixelY * params.fullWidth + pixelX;
+  return true;
+}
+
 // Adds the sample to the pixel (a NaN or infinite one is counted and left out), then starts
-// the next.
+// the next; after the pixel's last, writes the pixel and starts the same place in the next
+// tile of the lane's run, if any: a lane renders the samples of several pixels in turn, so
+// that its vector's lanes, whose paths end at different lengths, stay busy. (One call of
+// startCamera: lavapipe would inline a copy at each.) A pixel of no samples comes here
+// before any and is written at once.
 void endSample() {
-  if (any(isnan(radiance)) || any(isinf(radiance)))
-    ++nonFinite;
-  else
-    pixelSum += radiance;
-  ++sampleIndex;
-  if (sampleIndex < path.sampleCount)
-    startCamera();
-  else
-    phase = kPhaseDone;
+  if (sampleIndex < path.sampleCount) {
+    if (any(isnan(radiance)) || any(isinf(radiance)))
+      ++nonFinite;
+    else
+      pixelSum += radiance;
+    ++sampleIndex;
+    ++finished;
+  }
+  if (sampleIndex >= path.sampleCount) {
+    accumulation[pixelSlot] = vec4(pixelSum, 1.0);
+    bool found = false;
+    while (!found && ++tile < runEnd) found = setPixel();
+    if (!found) {
+      phase = kPhaseDone;
+      return;
+    }
+    pixelSum = vec3(0.0);
+    sampleIndex = 0u;
+    if (path.sampleCount == 0u) return;   // (the next step writes it)
+  }
+  startCamera();
 }
 
 // Quad-light samples at a vertex: one per light for analyticdirect, N per light otherwise.
@@ -459,6 +493,7 @@ void saveState(uint slot) {
   states[slot].pending = vec4(pending, 0.0);
   states[slot].bounce = bounce;
   states[slot].sampleIndex = sampleIndex;
+  states[slot].tile = tile;
 }
 
 void loadState(uint slot) {
@@ -470,48 +505,62 @@ void loadState(uint slot) {
   pending = states[slot].pending.rgb;
   bounce = states[slot].bounce;
   sampleIndex = states[slot].sampleIndex;
-  keySample();
+  tile = states[slot].tile;
 }
 
 void main() {
-  // Workgroups visit the band's tiles in a scattered order (as in raytrace.comp).
-  uint tilesInBand = params.tilesX * ((params.bandHeight + kWorkgroupSize - 1u) / kWorkgroupSize);
-  uint tile = (gl_WorkGroupID.x * params.tileOrderStride) % tilesInBand;
-  uint x = (tile % params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
-  uint yInBand = (tile / params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
-  uint y = pc.bandY0 + yInBand;
-  if (x >= params.width || yInBand >= params.bandHeight || y >= params.height) return;
-  uint slot = yInBand * params.width + x;
-  // The full image's pixel: a crop draws the full render's random numbers and camera rays.
-  pixelX = x + params.originX;
-  pixelY = y + params.originY;
-  pixelIndex = pixelY * params.fullWidth + pixelX;
+  // Each workgroup takes a run of adjacent tiles, the same pixel of each in turn per lane
+  // (as in raytrace.comp); the runs are visited in a scattered order, so that each of
+  // lavapipe's threads (which take contiguous runs of workgroups) gets a share of every part
+  // of the band.
+  uint runs = gl_NumWorkGroups.x;
+  uint tilesPerRun = (params.tilesX * (params.bandHeight / kWorkgroupSize) + runs - 1u) / runs;
+  bandRows = min(params.bandHeight, params.height - pc.bandY0);
+  uint bandTiles = params.tilesX * ((bandRows + kWorkgroupSize - 1u) / kWorkgroupSize);
+  uint runStart = (gl_WorkGroupID.x * params.tileOrderStride) % runs * tilesPerRun;
+  runEnd = min(runStart + tilesPerRun, bandTiles);
+  uint invocation = gl_WorkGroupID.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
 
+  // The lane's last pixel's w says whether the invocation is done: 1 once that pixel is
+  // written, 0 from a suspension on (so that only suspended invocations touch the state buffer).
+  tile = runEnd;
+  bool found = false;
+  while (tile > runStart && !found) {
+    --tile;
+    found = setPixel();
+  }
+  if (!found) return;   // no pixel of the band in this lane's tiles
+  uint lastSlot = pixelSlot;
   if (pc.resume != 0u) {
-    if (accumulation[slot].w != 0.0) return;   // finished in an earlier round
-    loadState(slot);
+    if (accumulation[lastSlot].w != 0.0) return;   // finished in an earlier round
+    loadState(invocation);
+    setPixel();
+    keySample();
   } else {
+    tile = runStart;
+    while (!setPixel()) ++tile;
     pixelSum = vec3(0.0);
     sampleIndex = 0u;
     if (path.sampleCount > 0u)
       startCamera();
     else
-      phase = kPhaseDone;
+      phase = kPhaseSampleEnd;
   }
 
   // A ray's traversal and the light step after it share an iteration (lavapipe runs both
-  // bodies for the vector whenever any lane needs either).
-  for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
+  // bodies for the vector whenever any lane needs either), and so do the end of a sample and
+  // the start of the next.
+  uint step = 0u;
+  for (; step < params.stepBudget && phase != kPhaseDone; ++step) {
     if (phase == kPhaseTrace || phase == kPhaseShadow) traversalStep(step);
     if (phase == kPhaseLight) lightStep(step);
     if (phase == kPhaseSampleEnd) endSample();
   }
 
+  steps = step;
   addCounts(phase != kPhaseDone);
   if (phase != kPhaseDone) {
-    saveState(slot);
-    accumulation[slot] = vec4(0.0);
-    return;
+    saveState(invocation);
+    accumulation[lastSlot].w = 0.0;   // (stale from an earlier band, or 0 already)
   }
-  accumulation[slot] = vec4(pixelSum, 1.0);
 }

@@ -196,6 +196,7 @@ bool setPixel() {
 void endPixel() {
   if (any(isnan(radiance)) || any(isinf(radiance))) ++nonFinite;
   pixels[pixelY * params.width + pixelX] = vec4(radiance, 1.0);
+  ++finished;
   do {
     ++tile;
     pixelX += kWorkgroupSize;

@@ -5,12 +5,14 @@
 #include <chrono>
 #include <cstring>
 
+#include "gpu/tile_order.h"
 #include "timing.h"
 
 namespace vkrt {
 
 BandBuffers::BandBuffers(const Context& context, const BandLayout& layout, std::size_t stateBytes,
-                         gpu::GpuRenderParams renderParams, std::uint32_t stepBudget, double firstDispatchSteps)
+                         gpu::GpuRenderParams renderParams, std::uint32_t stepBudget, double firstDispatchSteps,
+                         bool timedBands)
     : width(layout.width),
       pixels(context, layout.bandPixels() * sizeof(gpu::vec4), true),
       states(context, stateBytes),
@@ -18,8 +20,14 @@ BandBuffers::BandBuffers(const Context& context, const BandLayout& layout, std::
       params(context, sizeof renderParams) {
   std::memset(counters.mapped(), 0, sizeof(gpu::GpuCounters));
   const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  if (timedBands && !stepBudget)
+    firstBandRows = firstTimedBandRows(gpu::kDefaultStepBudget / layout.tilesPerGroup, layout.width,
+                                       layout.bandHeight, cpuDevice, firstDispatchSteps);
+  const std::uint64_t firstInvocations = firstBandRows ? std::uint64_t{layout.groupsFor(firstBandRows)} *
+                                                            gpu::kWorkgroupSize * gpu::kWorkgroupSize
+                                                      : layout.invocations();
   renderParams.stepBudget = stepBudget ? stepBudget
-                                       : firstStepBudget(gpu::kDefaultStepBudget, layout.invocations(), cpuDevice,
+                                       : firstStepBudget(gpu::kDefaultStepBudget, firstInvocations, cpuDevice,
                                                          firstDispatchSteps);
   std::memcpy(params.mapped(), &renderParams, sizeof renderParams);
   if (!stepBudget) pace = {&static_cast<gpu::GpuRenderParams*>(params.mapped())->stepBudget, gpu::kDefaultStepBudget};
@@ -49,16 +57,40 @@ bool BandBuffers::run(ComputePipeline& pipeline, const void* push, std::uint32_t
                       const BandLayout& layout, std::uint32_t samples, const BandHooks& hooks, VulkanTimings& timings,
                       RayCounts& rays) {
   const std::uint64_t total = std::uint64_t{layout.width} * layout.height * samples;
-  for (std::uint32_t y0 = 0; y0 < layout.height; y0 += layout.bandHeight) {
+  auto* shared = static_cast<gpu::GpuRenderParams*>(params.mapped());
+  std::uint64_t finished = 0, bandSteps = 0;
+  double bandSeconds = 0;
+  const std::function<void(const DispatchDone&)> done = [&](const DispatchDone& d) {
+    finished += d.finished;
+    bandSteps += d.steps;
+    bandSeconds += d.seconds;
+    if (hooks.progress) hooks.progress(std::min(finished, total), total);
+  };
+  std::uint32_t bandRows = firstBandRows ? firstBandRows : layout.bandHeight;
+  for (std::uint32_t y0 = 0, next = bandRows; y0 < layout.height; y0 += bandRows, bandRows = next) {
+    std::uint32_t groups = layout.groups;
+    if (firstBandRows) {   // a band of its own height: its tiles, and their scattered order
+      groups = layout.groupsFor(bandRows);
+      shared->bandHeight = bandRows;
+      shared->tileOrderStride = scatterStride(groups);
+    }
     bandY0 = y0;
-    if (!dispatchBand(pipeline, push, resume, y0, layout.groups, counters, hooks.stop, timings, rays, &pace))
+    bandSteps = 0;
+    bandSeconds = 0;
+    if (!dispatchBand(pipeline, push, resume, y0, groups, counters, hooks.stop, timings, rays, &pace, done))
       return false;
     const auto t0 = std::chrono::steady_clock::now();
-    const std::uint32_t rows = std::min(layout.bandHeight, layout.height - y0);
+    const std::uint32_t rows = std::min(bandRows, layout.height - y0);
     hooks.read(y0, rows);
     timings.readbackSeconds += secondsSince(t0);
     if (hooks.after) hooks.after(y0, rows);
-    if (hooks.progress) hooks.progress(std::uint64_t{y0 + rows} * layout.width * samples, total);
+    // The band is whole: the layout's count from here on (the shader's is the same unless a
+    // pixel finished twice or never, which the image tests would see).
+    finished = std::uint64_t{y0 + rows} * layout.width * samples;
+    if (firstBandRows && pace.budget && bandSeconds > 0)
+      next = timedBandRows(static_cast<double>(bandSteps) / bandSeconds,
+                               static_cast<double>(bandSteps) / (std::uint64_t{rows} * layout.width),
+                               *pace.budget / layout.tilesPerGroup, layout.width, layout.bandHeight);
   }
   rays.primary = total;
   return true;

@@ -18,7 +18,9 @@ namespace vkrt {
 // What a render does around its bands (BandBuffers::run).
 struct BandHooks {
   std::function<bool()> stop;   // polled before each dispatch: true stops early
-  std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixel samples done, total), after each band
+  // (pixel samples done, total), after each dispatch: the samples (or Whitted pixels) it
+  // finished, counted by the shader.
+  std::function<void(std::uint64_t, std::uint64_t)> progress;
   // Reads the finished band of `rows` rows from image row `y0` out of the pixel buffer
   // (timed as readback); then `after` (may be empty; not timed) hands them on.
   std::function<void(std::uint32_t y0, std::uint32_t rows)> read, after;
@@ -27,9 +29,11 @@ struct BandHooks {
 struct BandBuffers {
   // `stateBytes` for the suspended state; `params` copied into a uniform buffer with the step
   // budget `stepBudget`, or with 0 one paced by time (StepPace) from the first dispatch's
-  // `firstDispatchSteps` (kWhittedFirstDispatchSteps or kPathFirstDispatchSteps).
+  // `firstDispatchSteps` (kWhittedFirstDispatchSteps or kPathFirstDispatchSteps). With
+  // `timedBands` (pathtrace.comp, one tile a workgroup) and a paced budget, bands are sized by
+  // time too (timedBandRows), up to the layout's rows; otherwise every band has the layout's.
   BandBuffers(const Context& context, const BandLayout& layout, std::size_t stateBytes, gpu::GpuRenderParams params,
-              std::uint32_t stepBudget, double firstDispatchSteps);
+              std::uint32_t stepBudget, double firstDispatchSteps, bool timedBands = false);
   // Sets kBindingPixels, kBindingPathStates, kBindingCounters and kBindingParams.
   void bind(ShaderBindings& bindings) const;
   // The first `rows` rows of the band's pixels (rgb of a vec4 each, times `scale`) into
@@ -46,6 +50,7 @@ struct BandBuffers {
   std::uint32_t width;
   Buffer pixels, states, counters, params;
   StepPace pace;
+  std::uint32_t firstBandRows = 0;   // timed bands: the first band's rows; 0: the layout's bands
 };
 
 }  // namespace vkrt

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 
 #include "errors.h"
@@ -26,6 +27,40 @@ std::uint32_t firstStepBudget(std::uint32_t maxBudget, std::uint64_t invocations
   return static_cast<std::uint32_t>(clampBudget(steps / static_cast<double>(invocations), maxBudget));
 }
 
+namespace {
+
+// `rows` down to a multiple of the tile's, within [tile, maxRows] (maxRows a multiple of it).
+std::uint32_t tileRows(double rows, std::uint32_t maxRows) {
+  const double tile = gpu::kWorkgroupSize;
+  if (!(rows >= tile)) return gpu::kWorkgroupSize;
+  return static_cast<std::uint32_t>(std::max(std::floor(std::min(rows, static_cast<double>(maxRows)) / tile) * tile, tile));
+}
+
+}  // namespace
+
+std::uint32_t timedBandRows(double stepsPerSecond, double stepsPerPixel, std::uint32_t budget, std::uint32_t width,
+                            std::uint32_t maxRows) {
+  const double perPixel = std::clamp(stepsPerPixel, 1.0, static_cast<double>(std::max(budget, 1u)));
+  if (!(stepsPerSecond > 0) || width == 0) return tileRows(0, maxRows);
+  return tileRows(kTargetDispatchSeconds * stepsPerSecond / (perPixel * width), maxRows);
+}
+
+std::uint32_t firstTimedBandRows(std::uint32_t maxBudget, std::uint32_t width, std::uint32_t maxRows, bool cpuDevice,
+                                 double steps) {
+  if (!cpuDevice || width == 0 || maxBudget == 0) return maxRows;
+  return tileRows(steps / (static_cast<double>(maxBudget) * width), maxRows);
+}
+
+void StepPace::before(bool bandStart) {
+  if (budget && bandStart && bandStartBudget) *budget = bandStartBudget;
+}
+
+void StepPace::after(bool bandStart, double seconds) {
+  if (!budget) return;
+  *budget = pacedStepBudget(*budget, seconds, maxBudget);
+  if (bandStart) bandStartBudget = *budget;
+}
+
 std::uint32_t pacedStepBudget(std::uint32_t budget, double seconds, std::uint32_t maxBudget) {
   const double most = kMaxStepBudgetGrowth * budget;
   const double wanted = seconds > 0 ? budget * (kTargetDispatchSeconds / seconds) : most;
@@ -34,7 +69,7 @@ std::uint32_t pacedStepBudget(std::uint32_t budget, double seconds, std::uint32_
 
 bool dispatchBand(ComputePipeline& pipeline, const void* push, std::uint32_t& resume, std::uint32_t bandY0,
                   std::uint32_t groups, Buffer& counters, const std::function<bool()>& stop, VulkanTimings& timings,
-                  RayCounts& rays, StepPace* pace) {
+                  RayCounts& rays, StepPace* pace, const std::function<void(const DispatchDone&)>& done) {
   auto* counter = static_cast<volatile gpu::GpuCounters*>(counters.mapped());
   resume = 0;
   std::uint64_t rounds = 0;
@@ -43,15 +78,14 @@ bool dispatchBand(ComputePipeline& pipeline, const void* push, std::uint32_t& re
       throw InternalError("pixels of rows " + std::to_string(bandY0) + "+ still unfinished after " +
                           std::to_string(kMaxRoundsPerBand) + " dispatches");
     if (stop && stop()) return false;
+    if (pace) pace->before(resume == 0);
     const auto t0 = std::chrono::steady_clock::now();
     pipeline.run(push, groups, &counters);
     const double s = secondsSince(t0);
-    if (timings.dispatches == 0) {
-      timings.firstDispatchSeconds = s;
-    } else {
-      timings.dispatchSeconds += s;
-      if (pace && pace->budget) *pace->budget = pacedStepBudget(*pace->budget, s, pace->maxBudget);
-    }
+    (timings.dispatches == 0 ? timings.firstDispatchSeconds : timings.dispatchSeconds) += s;
+    // (The first dispatch's time includes the JIT compile: the budget it paces is smaller than
+    // it need be, and grows again.)
+    if (pace) pace->after(resume == 0, s);
     ++timings.dispatches;
     timings.suspensions += counter->suspended;
     rays.shadow += counter->shadowRays;
@@ -60,6 +94,10 @@ bool dispatchBand(ComputePipeline& pipeline, const void* push, std::uint32_t& re
     counter->shadowRays = 0;
     counter->secondaryRays = 0;
     counter->nonFinite = 0;
+    const DispatchDone did{counter->finished, counter->steps, s};
+    counter->finished = 0;
+    counter->steps = 0;
+    if (done) done(did);
     resume = 1;
   } while (counter->suspended > 0);
   ++timings.bands;

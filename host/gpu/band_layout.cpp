@@ -26,7 +26,8 @@ BandLayout bandLayout(const PixelRect& region, std::size_t stateBytes, std::size
   b.bandHeight = std::min(b.bandHeight, (b.height + tile - 1) / tile * tile);
   b.tilesX = (b.width + tile - 1) / tile;
   b.tilesInBand = b.tilesX * (b.bandHeight / tile);
-  b.groups = (b.tilesInBand + tilesPerGroup - 1) / tilesPerGroup;
+  b.tilesPerGroup = tilesPerGroup;
+  b.groups = b.groupsFor(b.bandHeight);
   return b;
 }
 

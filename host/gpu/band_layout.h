@@ -20,7 +20,12 @@ struct BandLayout {
   std::uint32_t tilesX = 0;          // tiles across the region
   std::uint32_t tilesInBand = 0;     // tiles in a band (of bandHeight rows)
   std::uint32_t groups = 0;          // workgroups of a band's dispatch: each takes a run of tilesPerGroup tiles
+  std::uint32_t tilesPerGroup = 1;
   std::size_t bandPixels() const { return std::size_t{width} * bandHeight; }
+  // The workgroups of a band of `rows` rows (a multiple of the tile's, at most bandHeight).
+  std::uint32_t groupsFor(std::uint32_t rows) const {
+    return (tilesX * (rows / gpu::kWorkgroupSize) + tilesPerGroup - 1) / tilesPerGroup;
+  }
   std::uint64_t invocations() const { return std::uint64_t{groups} * gpu::kWorkgroupSize * gpu::kWorkgroupSize; }
 };
 

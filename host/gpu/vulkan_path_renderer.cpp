@@ -68,10 +68,18 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   VulkanTimings t;
   if (scene.path.integrator == gpu::kIntegratorRaytracer)
     throw InternalError("renderVulkanPath called for the raytracer integrator (renderVulkan renders it)");
-  const BandLayout layout =
-      bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuPathTracerState), options.maxStateBytes, 1);
-  const std::uint32_t width = layout.width, height = layout.height;
   const std::uint32_t samples = options.sampleCount ? options.sampleCount : scene.spp;
+  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const std::uint32_t perInvocation =
+      options.pixelsPerInvocation ? options.pixelsPerInvocation
+      : cpuDevice ? std::clamp((kPathSamplesPerLane + samples - 1) / std::max(samples, 1u), 1u,
+                               gpu::kDefaultPixelsPerInvocation)
+                  : 1u;
+  // One GpuPathTracerState per invocation, shared by its perInvocation pixels; the workgroups
+  // of a band each take a run of perInvocation adjacent 8x8 tiles.
+  const BandLayout layout = bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuPathTracerState),
+                                       options.maxStateBytes, perInvocation);
+  const std::uint32_t width = layout.width, height = layout.height;
   const std::uint32_t renderSpp = options.renderSpp ? options.renderSpp : scene.spp;
   checkShaderLimits(scene);
   // A vertex's random numbers must stay within its stride of dimensions (gpu_types.h): two
@@ -86,8 +94,9 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
 
   auto t0 = std::chrono::steady_clock::now();
   const SceneUpload upload(context, scene, SceneArrays::Path);
-  BandBuffers band(context, layout, layout.bandPixels() * sizeof(gpu::GpuPathTracerState),
-                   renderParams(scene, layout, scene.path.maxDepth), options.stepBudget, kPathFirstDispatchSteps);
+  BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuPathTracerState),
+                   renderParams(scene, layout, scene.path.maxDepth), options.stepBudget, kPathFirstDispatchSteps,
+                   true);
   t.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();

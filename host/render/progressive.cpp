@@ -57,7 +57,9 @@ RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOp
     r.samples += count;
     ++r.batches;
     if (options.spp != 0 && r.samples >= options.spp) break;
-    // The next batch: toward targetBatchSeconds, at most twice this one, within the time left.
+    // The next batch: toward targetBatchSeconds, at most twice this one; under a time limit
+    // nine tenths of what fits in the time left (the tenth for the estimate's error; the next
+    // batch takes the rest), at least twice this one where that fits.
     const double perSample = std::max(batchSeconds / count, 1e-9);
     double want = std::clamp(std::floor(options.targetBatchSeconds / perSample), 1.0, 2.0 * count);
     if (timed) {
@@ -67,7 +69,7 @@ RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOp
         r.timeUp = true;
         break;
       }
-      want = std::min(want, fits);
+      want = std::min(std::max(std::floor(0.9 * fits), 2.0 * count), fits);
     }
     next = static_cast<std::uint32_t>(std::min<double>(want, options.maxBatchSamples));
   }

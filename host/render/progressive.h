@@ -32,7 +32,11 @@ struct ProgressiveOptions {
   // time limit the pipeline asks for every sample at once, so that a backend's set-up (a
   // Vulkan pipeline) is paid once.
   std::uint32_t firstBatchSamples = 1;
-  double targetBatchSeconds = 0.5;  // batches grow (at most doubling) toward this length
+  // Without a time limit batches grow (at most doubling) toward this length. Under one they
+  // double until the last fills what is left: a backend reports progress and polls `stop`
+  // within a batch, and its small batches are the slowest per sample (a Vulkan render's
+  // setup, and lanes with few samples each), so a timed render's batches stay few.
+  double targetBatchSeconds = 0.5;
   // Polled between batches (the backends poll it inside theirs): true stops early.
   std::function<bool()> stop;
   // Drawn in samples ("N/M samples", or "N samples" under a time limit without spp).
@@ -51,8 +55,9 @@ struct ProgressiveReport {
 
 // Renders batches until spp samples are done, the time limit leaves no room for another
 // sample (per the last batch's time per sample), or `stop`. Batch sizes: 1 sample first (it
-// includes the backend's warm-up), then doubling at most, toward targetBatchSeconds, within
-// what spp and the time left allow. The result is the weighted mean (samples = the total).
+// includes the backend's warm-up), then doubling (at most, toward targetBatchSeconds, without
+// a time limit), within what spp and the time left allow. The result is the weighted mean
+// (samples = the total).
 RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOptions& options,
                                 ProgressiveReport* report = nullptr);
 

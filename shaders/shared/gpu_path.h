@@ -106,8 +106,9 @@ struct GpuPathTracerState {
   vec4 pixelSum;            // rgb sum of the pixel's finished samples, w = pdf of the last scatter (MIS)
   vec4 pending;             // rgb what the shadow ray adds when nothing blocks it, w unused
   uint bounce;              // path vertex: 0 at the camera ray's hit
-  uint sampleIndex;         // samples of this render finished
-  uint pad0, pad1;          // size 80
+  uint sampleIndex;         // samples of the current pixel finished
+  uint tile;                // the current pixel's tile (pathtrace.comp: a lane renders one pixel of each tile of its run)
+  uint pad0;                // size 80
   GpuTraceState trace;
 };
 GPU_ASSERT_SIZE(GpuPathTracerState, 80 + 112 + 8 * 96)

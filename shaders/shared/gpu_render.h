@@ -85,8 +85,13 @@ struct GpuCounters {
   uint shadowRays;
   uint secondaryRays;       // mirror (raytrace.comp) or scattered (pathtrace.comp) rays
   uint nonFinite;           // pixels whose radiance was NaN or infinite (RayCounts::nonFinite)
+  // Pixels (raytrace.comp) or pixel samples (pathtrace.comp) finished in this dispatch: the
+  // progress bar moves with every dispatch, not only with every band.
+  uint finished;
+  uint steps;               // pathtrace.comp's state-machine steps (the host sizes bands by their speed)
+  uint pad0, pad1;
 };
-GPU_ASSERT_SIZE(GpuCounters, 16)
+GPU_ASSERT_SIZE(GpuCounters, 32)
 
 // What both compute shaders save of a suspended traversal (traverse.glsl): the current ray and
 // its nearest hit so far, the shaded hit and the shadow ray leaving it, the phase of the state

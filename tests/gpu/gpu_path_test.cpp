@@ -2,6 +2,7 @@
 // square light, a white furnace), the invariants of a counter-based render (same seed, crops,
 // suspension), and statistical agreement of the sampling strategies (doc/path-tracing.md
 // section 4). The scenes are built in code. The validation layer stays silent throughout.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -439,6 +440,72 @@ TEST(GpuPath, SuspendingWithEmittersChangesNoBit) {
   // of every primitive settle in their own orders (6 of 256 pixels differ). Each traversal
   // against itself is exact.
   expectSuspensionChangesNoBit(s, false);
+}
+
+// A lane renders the samples of several pixels in turn (one of each tile of its workgroup's
+// run), and a paced render sizes its bands by time: neither changes a bit, whether the lanes
+// suspend or not, in bands of 8 rows or of the whole image, for a crop too.
+TEST(GpuPath, PixelsPerLaneAndBandsChangeNoBit) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(44);   // tiles that stick out of the image on the right and bottom
+  s.maxDepth = -1;
+  s.path.russianRoulette = true;
+  s.path.nextEvent = NextEvent::Mis;
+  for (std::optional<PixelRect> crop : {std::optional<PixelRect>(), std::optional<PixelRect>(PixelRect{3, 5, 41, 30})}) {
+    VulkanPathOptions o;
+    o.sampleCount = 3;
+    o.seed = 5;
+    o.crop = crop;
+    o.pixelsPerInvocation = 1;
+    o.stepBudget = 13000;
+    VulkanTimings whole;
+    RadianceImage reference = renderPath(s, o, nullptr, &whole);
+    ASSERT_EQ(whole.suspensions, 0u);
+    for (std::uint32_t perLane : {1u, 3u, 16u})
+      for (std::uint32_t budget : {0u, 7u, 13000u})
+        for (std::size_t stateBytes : {std::size_t{1}, std::size_t{64} << 20}) {
+          o.pixelsPerInvocation = perLane;
+          o.stepBudget = budget;
+          o.maxStateBytes = stateBytes;
+          VulkanTimings t;
+          RadianceImage got = renderPath(s, o, nullptr, &t);
+          EXPECT_TRUE(sameBits(reference, got)) << perLane << " pixels a lane, budget " << budget << ", "
+                                                << stateBytes << " state bytes" << (crop ? ", crop" : "");
+          if (stateBytes == 1) {
+            EXPECT_GE(t.bands, 4u);
+          }
+          if (budget == 7) {
+            EXPECT_GT(t.suspensions, 100u);
+          }
+        }
+  }
+}
+
+// The progress of a path render moves with every dispatch (the samples the shader finished),
+// not once a band: at a small budget, many times within the first band, never backwards, and
+// to the whole count at the end.
+TEST(GpuPath, ProgressMovesWithEveryDispatch) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(32);
+  VulkanPathOptions o;
+  o.sampleCount = 4;
+  o.stepBudget = 20;
+  o.maxStateBytes = 1;   // bands of 8 rows
+  std::vector<std::uint64_t> done;
+  std::uint64_t total = 0;
+  o.progress = [&](std::uint64_t d, std::uint64_t t) {
+    done.push_back(d);
+    total = t;
+  };
+  VulkanTimings t;
+  renderPath(s, o, nullptr, &t);
+  const std::uint64_t firstBand = 8u * 32u * 4u;
+  ASSERT_EQ(total, 32u * 32u * 4u);
+  ASSERT_EQ(done.size(), t.dispatches);
+  EXPECT_GT(std::count_if(done.begin(), done.end(), [&](std::uint64_t d) { return d > 0 && d < firstBand; }), 3)
+      << "the bar stood still through the first band";
+  EXPECT_TRUE(std::is_sorted(done.begin(), done.end()));
+  EXPECT_EQ(done.back(), total);
 }
 
 // A small scene's rays test every primitive, triangles then spheres, instead of walking the

@@ -74,10 +74,11 @@ void main() {
   put(w.trace);
   GpuPathTracerState ps = pathStates[1];
   put(ps.throughput); put(ps.radiance); put(ps.pixelSum); put(ps.pending);
-  put(ps.bounce); put(ps.sampleIndex); put(ps.pad0); put(ps.pad1);
+  put(ps.bounce); put(ps.sampleIndex); put(ps.tile); put(ps.pad0);
   put(ps.trace);
   GpuCounters c = counters[1];
   put(c.suspended); put(c.shadowRays); put(c.secondaryRays); put(c.nonFinite);
+  put(c.finished); put(c.steps); put(c.pad0); put(c.pad1);
   GpuPathPush pp2 = pathPush[1];
   put(pp2.bandY0); put(pp2.resume); put(pp2.pad0); put(pp2.pad1);
   // The push constants: one block, not an array.
