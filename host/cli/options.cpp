@@ -448,7 +448,17 @@ Options parseOptions(const std::vector<std::string>& args) {
       else
         throw UsageError("unknown --reads '" + echoed(r) + "' (expected: auto, texel or storage)");
     } else if (a == "--no-specialize") {   // for the benchmark and tests; not in --help
-      o.request.specialize = false;
+      o.request.variant = ShaderVariant::General;
+    } else if (name == "--variant") {
+      std::string v = take(name);
+      if (v == "auto")
+        o.request.variant = ShaderVariant::Auto;
+      else if (v == "specialized")
+        o.request.variant = ShaderVariant::Specialized;
+      else if (v == "general")
+        o.request.variant = ShaderVariant::General;
+      else
+        throw UsageError("unknown --variant '" + echoed(v) + "' (expected: auto, specialized or general)");
     } else if (name == "--spp") {
       o.request.spp = static_cast<std::uint64_t>(integerValue(name, take(name), 1, 1 << 30));
     } else if (name == "--seed") {

@@ -14,6 +14,7 @@
 #include "gpu/compute_pipeline.h"
 #include "gpu/device_error.h"
 #include "gpu/scene_upload.h"
+#include "gpu/shader_variant.h"
 #include "pathtrace.comp.h"         // kPathtraceSpirv: the shader, compiled at build time
 #include "pathtrace_texel.comp.h"   // kPathtraceTexelSpirv: the same with VKRT_TEXEL_READS
 #include "timing.h"
@@ -117,16 +118,27 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   const bool testAll = options.testAll && primitives == path.triangleCount + path.sphereCount &&
                        primitives <= gpu::kTestAllMaxPrims && scene.bvh.primRefs.size() == primitives;
   t.testedAll = testAll;
-  const std::vector<std::uint32_t> spec = pathFeatures(scene, path.jitter, options.specialize, testAll, t.leftOut);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   t.texelReads = chooseTexelReads(options.reads, upload.texelsFit(maxTexels), maxTexels);
+  const std::uint32_t* spirv = t.texelReads ? kPathtraceTexelSpirv : kPathtraceSpirv;
+  const std::size_t spirvBytes = t.texelReads ? sizeof(kPathtraceTexelSpirv) : sizeof(kPathtraceSpirv);
+  // The rays, about: per sample a camera ray, and per vertex (4 where Russian roulette ends
+  // the path) a scattered ray and a shadow ray per light sample (what ShaderVariant::Auto goes by).
+  const double vertices = scene.path.maxDepth == gpu::kUnlimitedDepth ? 4.0 : std::min(scene.path.maxDepth, 8u);
+  const double lightRays = scene.path.nextEvent ? scene.path.lightSamples * (scene.path.quadLightCount + 1.0) : 0.0;
+  t.estimatedRays = static_cast<double>(width) * height * samples * (1.0 + vertices * (1.0 + lightRays));
+  std::string leftOut;
+  const std::uint64_t specializedKey =
+      variantKey(context.properties(), spirv, spirvBytes, pathFeatures(scene, path.jitter, true, testAll, leftOut));
+  t.general = options.variant == ShaderVariant::General ||
+              (options.variant == ShaderVariant::Auto && !variantCompiled(specializedKey) &&
+               !specializationPays(cpuDevice, t.estimatedRays));
+  const std::vector<std::uint32_t> spec = pathFeatures(scene, path.jitter, !t.general, testAll, t.leftOut);
   ShaderBindings bindings(gpu::kPathBindingCount);
   upload.bind(bindings, t.texelReads);
   band.bind(bindings);
   bindings.set(gpu::kBindingPathParams, pathBuffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
-  ComputePipeline pipeline(context, t.texelReads ? kPathtraceTexelSpirv : kPathtraceSpirv,
-                           t.texelReads ? sizeof(kPathtraceTexelSpirv) : sizeof(kPathtraceSpirv), bindings.types,
-                           spec, sizeof(gpu::GpuPathPush));
+  ComputePipeline pipeline(context, spirv, spirvBytes, bindings.types, spec, sizeof(gpu::GpuPathPush));
   bindings.bindTo(pipeline);
   t.pipelineSeconds = secondsSince(t0);
 
@@ -139,6 +151,7 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
                   {}};
   RayCounts counted;
   if (!band.run(pipeline, &push, push.bandY0, push.resume, layout, samples, hooks, t, counted)) return image;
+  if (!t.general) recordVariantCompiled(specializedKey);
   if (rays) *rays = counted;
   if (timings) *timings = t;
   return image;

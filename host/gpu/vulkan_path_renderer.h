@@ -34,7 +34,7 @@ struct VulkanPathOptions {
   // kDefaultPixelsPerInvocation; on a GPU 1. The same image either way.
   std::uint32_t pixelsPerInvocation = 0;
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
-  bool specialize = true;                 // compile out what the scene does not use
+  ShaderVariant variant = ShaderVariant::Specialized;   // the shader's: specialised to the scene, general, or Auto
   // Scenes of at most kTestAllMaxPrims primitives: every ray tests each of them instead of
   // walking the BVH (kPathSpecTestAll); false: always the BVH. The same image either way.
   bool testAll = true;

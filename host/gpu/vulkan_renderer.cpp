@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numeric>
 
 #include "gpu/band_buffers.h"
@@ -12,6 +13,7 @@
 #include "gpu/band_layout.h"
 #include "gpu/compute_pipeline.h"
 #include "gpu/scene_upload.h"
+#include "gpu/shader_variant.h"
 #include "timing.h"
 #include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
 #include "raytrace_texel.comp.h"   // kRaytraceTexelSpirv: the same with VKRT_TEXEL_READS
@@ -74,6 +76,16 @@ bool cutoffPays(const gpu::GpuCutoff& p, std::uint32_t maxDepth) {
   return false;
 }
 
+// A GpuCutoff that never cuts: no bound on what a hit sends (the reach is infinite) and no
+// sign known.
+gpu::GpuCutoff neverCut() {
+  gpu::GpuCutoff c{};
+  const float inf = std::numeric_limits<float>::infinity();
+  c.bound.x = c.bound.y = c.bound.z = inf;
+  c.bound.w = 0.0f;
+  return c;
+}
+
 }  // namespace
 
 RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options,
@@ -92,39 +104,53 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   checkShaderLimits(scene);
 
   auto t0 = std::chrono::steady_clock::now();
-  const Features features = sceneFeatures(scene, options.specialize);
+  const Features used = sceneFeatures(scene, true);
+  // The exactness cut-off: forced, or where it pays. The general variant has it compiled in
+  // and is told at run time whether to cut (push constants), so that it cuts exactly where
+  // the specialised one does.
+  const bool cutoff = options.cutoff == Cutoff::On ||
+                      (options.cutoff == Cutoff::Auto && used.specular && cutoffPays(scene.cutoff, scene.maxDepth));
+  // The rays this render will trace, about: a camera ray a pixel, a shadow ray a light, and
+  // again for each mirror bounce (what ShaderVariant::Auto goes by).
+  t.estimatedRays = static_cast<double>(width) * height * (1.0 + static_cast<double>(scene.lights.size())) *
+                    (1.0 + (used.specular ? std::min(scene.maxDepth, 4u) : 0u));
+  auto specConstants = [&](const Features& f, bool general) {
+    std::vector<std::uint32_t> spec(gpu::kSpecCount);   // bools as 0/1 (SPIR-V bool spec constants are 32 bits)
+    spec[gpu::kSpecHasTriangles] = f.triangles;
+    spec[gpu::kSpecHasSpheres] = f.spheres;
+    spec[gpu::kSpecHasSmoothNormals] = f.smoothNormals;
+    spec[gpu::kSpecHasPointLights] = f.pointLights;
+    spec[gpu::kSpecHasDirectionalLights] = f.directionalLights;
+    spec[gpu::kSpecHasAttenuation] = f.attenuation;
+    spec[gpu::kSpecHasSpecular] = f.specular;
+    spec[gpu::kSpecCutoff] = general || cutoff;
+    return spec;
+  };
+  const SceneUpload upload(context, scene, SceneArrays::Whitted);
+  // Texel reads where every scene buffer fits the device's texel-count limit.
+  const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
+  t.texelReads = chooseTexelReads(options.reads, upload.texelsFit(maxTexels), maxTexels);
+  const std::uint32_t* spirv = t.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv;
+  const std::size_t spirvBytes = t.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv);
+  const std::uint64_t specializedKey = variantKey(context.properties(), spirv, spirvBytes, specConstants(used, false));
+  t.general = options.variant == ShaderVariant::General ||
+              (options.variant == ShaderVariant::Auto && !variantCompiled(specializedKey) &&
+               !specializationPays(cpuDevice, t.estimatedRays));
+  const Features features = t.general ? sceneFeatures(scene, false) : used;
   t.leftOut = features.leftOut;
+  if (!cutoff && !t.general) t.leftOut += std::string(t.leftOut.empty() ? "" : ", ") + "exactness cut-off";
   // Without a specular surface no mirror ray is ever traced.
   const gpu::GpuRenderParams params = renderParams(scene, layout, features.specular ? scene.maxDepth : 0);
-  const SceneUpload upload(context, scene, SceneArrays::Whitted);
   BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuWhittedState), params, options.stepBudget,
                    kWhittedFirstDispatchSteps);
   t.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  std::vector<std::uint32_t> spec(gpu::kSpecCount);   // bools as 0/1 (SPIR-V bool spec constants are 32 bits)
-  spec[gpu::kSpecHasTriangles] = features.triangles;
-  spec[gpu::kSpecHasSpheres] = features.spheres;
-  spec[gpu::kSpecHasSmoothNormals] = features.smoothNormals;
-  spec[gpu::kSpecHasPointLights] = features.pointLights;
-  spec[gpu::kSpecHasDirectionalLights] = features.directionalLights;
-  spec[gpu::kSpecHasAttenuation] = features.attenuation;
-  spec[gpu::kSpecHasSpecular] = features.specular;
-  // Unspecialized (everything compiled in), Auto means on.
-  const bool cutoff = options.cutoff == Cutoff::On ||
-                      (options.cutoff == Cutoff::Auto &&
-                       (!options.specialize || (features.specular && cutoffPays(scene.cutoff, scene.maxDepth))));
-  spec[gpu::kSpecCutoff] = cutoff;
-  if (!cutoff) t.leftOut += std::string(t.leftOut.empty() ? "" : ", ") + "exactness cut-off";
-  // Texel reads where every scene buffer fits the device's texel-count limit.
-  const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
-  t.texelReads = chooseTexelReads(options.reads, upload.texelsFit(maxTexels), maxTexels);
+  const std::vector<std::uint32_t> spec = specConstants(features, t.general);
   ShaderBindings bindings(gpu::kBindingCount);
   upload.bind(bindings, t.texelReads);
   band.bind(bindings);
-  ComputePipeline pipeline(context, t.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv,
-                           t.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv), bindings.types,
-                           spec, sizeof(gpu::GpuPushConstants));
+  ComputePipeline pipeline(context, spirv, spirvBytes, bindings.types, spec, sizeof(gpu::GpuPushConstants));
   bindings.bindTo(pipeline);
   t.pipelineSeconds = secondsSince(t0);
 
@@ -136,7 +162,8 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   rowsImage.samples = options.sampleCount;
   gpu::GpuPushConstants push{};
   push.camera = scene.camera;
-  push.cutoff = scene.cutoff;
+  // A cut-off compiled in but not wanted is told never to cut (GpuCutoff: no bound).
+  push.cutoff = cutoff ? scene.cutoff : neverCut();
   BandHooks hooks{options.stop, options.progress,
                   [&](std::uint32_t y0, std::uint32_t rows) {
                     if (!options.rows) return band.readRows(rows, 1.0f, image, static_cast<int>(y0));
@@ -148,6 +175,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   if (options.rows) hooks.after = [&](std::uint32_t y0, std::uint32_t) { options.rows(static_cast<int>(y0), rowsImage); };
   RayCounts counted;
   if (!band.run(pipeline, &push, push.bandY0, push.resume, layout, 1, hooks, t, counted)) return image;
+  if (!t.general) recordVariantCompiled(specializedKey);
   if (rays) *rays = counted;
   if (timings) *timings = t;
   return image;

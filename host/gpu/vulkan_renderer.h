@@ -26,7 +26,7 @@ struct VulkanOptions {
   // takes a run of this many 8x8 tiles, an invocation one pixel of each; 0: on a CPU device
   // (lavapipe) kDefaultPixelsPerInvocation, on a GPU 1 (one pixel per invocation).
   std::uint32_t pixelsPerInvocation = 0;
-  bool specialize = true;                 // compile out what the scene does not use
+  ShaderVariant variant = ShaderVariant::Specialized;   // the shader's: specialised to the scene, general, or Auto
   // The exactness cut-off of the mirror loop (gpu_types.h): Auto compiles it in only when it
   // can stop a path at least two bounces before maxdepth (its test costs 10-20% of trace time
   // on lavapipe, more than it saves on scenes with bright lights and shallow mirrors).

@@ -13,6 +13,11 @@ enum class SceneReads { Auto, Storage, Texel };
 
 enum class Cutoff { Auto, On, Off };
 
+// Which variant of the shader a render compiles (gpu/shader_variant.h): the one specialised to
+// the scene's features, the general one (every feature in; compiled once per machine), or
+// Auto: the specialised one where it is compiled already or pays for its compile.
+enum class ShaderVariant { Specialized, General, Auto };
+
 struct VulkanTimings {
   double uploadSeconds = 0, pipelineSeconds = 0, firstDispatchSeconds = 0, dispatchSeconds = 0,
          readbackSeconds = 0;
@@ -21,6 +26,8 @@ struct VulkanTimings {
   bool texelReads = false;         // which shader variant ran
   bool testedAll = false;          // the path shader tested every primitive (no BVH walk)
   std::string leftOut;             // the features compiled out, e.g. "spheres, specular (maxdepth 0)"
+  bool general = false;            // the general variant ran (Variant)
+  double estimatedRays = 0;        // what ShaderVariant::Auto went by
 };
 
 // A render's timings over its sample batches: `batch`'s added to `total`. The first batch's
@@ -41,6 +48,8 @@ inline void addBatchTimings(VulkanTimings& total, const VulkanTimings& batch, bo
   total.texelReads = batch.texelReads;
   total.testedAll = batch.testedAll;
   total.leftOut = batch.leftOut;
+  total.general = batch.general;
+  total.estimatedRays = batch.estimatedRays;
 }
 
 }  // namespace vkrt

@@ -159,7 +159,7 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
       VulkanOptions o;
       o.stepBudget = request.stepBudget;
       o.reads = request.reads;
-      o.specialize = request.specialize;
+      o.variant = request.variant;
       o.cutoff = request.cutoff;
       if (rows) o.rows = *rows;
       setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
@@ -168,7 +168,7 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
       VulkanPathOptions o;
       o.stepBudget = request.stepBudget;
       o.reads = request.reads;
-      o.specialize = request.specialize;
+      o.variant = request.variant;
       setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
       image = renderVulkanPath(context, gpuScene, o, &rays, &timings);
     }

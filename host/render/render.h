@@ -48,7 +48,7 @@ struct RenderRequest {
   bool validation = false;             // Vulkan: enable the validation layer
   std::uint32_t stepBudget = 0;        // Vulkan: steps per pixel per dispatch (0: default)
   SceneReads reads = SceneReads::Auto; // Vulkan: how the shader reads the scene
-  bool specialize = true;              // Vulkan: compile out what the scene does not use
+  ShaderVariant variant = ShaderVariant::Auto;    // Vulkan: the shader variant (gpu/shader_variant.h)
   Cutoff cutoff = Cutoff::Auto;        // Vulkan: the exactness cut-off of the mirror loop
   int maxDepth = -1;                   // overrides the scene's `maxdepth` when >= 0
   // Path integrators (SceneDesc::path.integrator other than Raytracer): the samples per pixel

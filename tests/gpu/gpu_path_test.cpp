@@ -351,7 +351,7 @@ TEST(GpuPath, SameSeedSameBitsOtherSeedOtherImage) {
   o.reads = SceneReads::Texel;
   EXPECT_TRUE(sameBits(a, renderPath(s, o)));
   // Specialization compiles out only what the scene lacks.
-  o.specialize = false;
+  o.variant = ShaderVariant::General;
   EXPECT_TRUE(sameBits(a, renderPath(s, o)));
 }
 

@@ -75,12 +75,28 @@ TEST_P(GpuFeatureScene, SpecializationChangesNoPixel) {
   VKRT_REQUIRE_GPU(context);
   SceneDesc scene = parseSceneFile(sourcePath("scenes/" + GetParam() + ".test"));
   VulkanOptions generic;
-  generic.specialize = false;
+  generic.variant = ShaderVariant::General;
   VulkanTimings specializedRun, genericRun;
   Image specialized = renderGpu(scene, 0, &specializedRun);
   Image all = encodeImage(renderVulkan(*context, flatten(scene), generic, nullptr, &genericRun), 1.0);
   EXPECT_EQ(genericRun.leftOut, "");
   EXPECT_TRUE(imagesClose("gpu-specialize/" + GetParam(), specialized, all, 0, 0)) << "left out: " << specializedRun.leftOut;
+}
+
+// The general variant (every feature compiled in, the exactness cut-off told at run time
+// whether to cut) renders the specialised variant's picture to the last bit, so that which
+// one a render takes (ShaderVariant::Auto) changes nothing in any output format.
+TEST_P(GpuFeatureScene, GeneralVariantIsTheSpecialisedBitForBit) {
+  VKRT_REQUIRE_GPU(context);
+  GpuScene flat = flatten(parseSceneFile(sourcePath("scenes/" + GetParam() + ".test")));
+  VulkanOptions o;
+  VulkanTimings specializedRun, generalRun;
+  RadianceImage specialized = renderVulkan(*context, flat, o, nullptr, &specializedRun);
+  o.variant = ShaderVariant::General;
+  RadianceImage general = renderVulkan(*context, flat, o, nullptr, &generalRun);
+  EXPECT_FALSE(specializedRun.general);
+  EXPECT_TRUE(generalRun.general);
+  EXPECT_TRUE(sameBits(specialized, general)) << "left out: " << specializedRun.leftOut;
 }
 
 TEST_P(GpuFeatureScene, CutoffChangesNoPixel) {

@@ -1,0 +1,39 @@
+// Which compiled variant of a shader a render uses. A specialised variant leaves out what the
+// scene does not use (a few to 20% faster on lavapipe) but is compiled for each new
+// combination of features: 0.2-0.5 s on two cores, more than a small render takes. The
+// general variant has every feature in, the same for every scene, so it is compiled once
+// per machine (by the first render that uses it) and then comes from the driver's shader
+// cache. Under ShaderVariant::Auto a render takes its specialised variant when that one has been
+// compiled on this machine before (the index below) or when the render is long enough to pay
+// for the compile; the general one otherwise. Both give the same image bit for bit.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gpu/vulkan_api.h"
+
+namespace vkrt {
+
+// A render's estimated rays from which the specialised variant pays for its compile on a
+// CPU device (lavapipe: a compile of 0.2-0.5 s against 5-20% of a trace at 3-8 Mrays/s). A
+// GPU compiles in milliseconds and always specialises.
+inline constexpr double kSpecializeAboveRays = 30e6;
+
+bool specializationPays(bool cpuDevice, double estimatedRays);
+
+// The variant `spirv` with `specConstants` on this device, as the index knows it.
+std::uint64_t variantKey(const VkPhysicalDeviceProperties& device, const std::uint32_t* spirv, std::size_t spirvBytes,
+                         const std::vector<std::uint32_t>& specConstants);
+
+// The index of the variants compiled on this machine: a file of keys under
+// $XDG_CACHE_HOME/vkrt (~/.cache/vkrt), one per driver shader cache (MESA_SHADER_CACHE_DIR),
+// none when that cache is disabled (MESA_SHADER_CACHE_DISABLE). A missing or unwritable
+// index only costs compiles: every error is ignored.
+std::string variantIndexPath();
+bool variantCompiled(std::uint64_t key);
+void recordVariantCompiled(std::uint64_t key);
+
+}  // namespace vkrt
