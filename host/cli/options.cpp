@@ -105,6 +105,8 @@ std::string makeUsageText() {
          "  --validation           enable the Vulkan validation layer (also VKRT_VALIDATION=1)\n"
          "  --reads auto|texel|storage  how the shader reads the scene (default auto: texel\n"
          "                         buffers, faster on lavapipe, where the device's limits allow)\n"
+         "  --variant auto|specialized|general  the compiled shader (the same image): default auto,\n"
+         "                         specialised where compiled before or worth its compile\n"
          "  --maxdepth N           override the scene's maxdepth (fewer reflections: faster, less exact)\n"
          "  --spp N                path integrators: N samples per pixel instead of the scene's spp\n"
          "  --seed N               path integrators: the random numbers' seed, 0 to 4294967295\n"
@@ -188,8 +190,8 @@ namespace {
 // mean" after a typo.
 constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert"};
 constexpr std::string_view kLongOptions[] = {
-    "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "maxdepth",
-    "spp", "seed", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
+    "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "variant",
+    "maxdepth", "spp", "seed", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
     "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version", "watch"};
 constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "quiet", "help"};
 constexpr std::string_view kConvertLongOptions[] = {"quiet", "help"};

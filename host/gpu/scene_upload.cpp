@@ -9,6 +9,13 @@ namespace vkrt {
 
 static_assert(sizeof(gpu::GpuQuadLight) == 16 * gpu::kQuadLightTexels, "the texel view of a quad light");
 
+namespace {
+
+// The bytes of a texel of the scene's arrays as the shaders read them (ShaderBindings::bindTo).
+constexpr std::size_t kTexel = 16, kPrimRefTexel = 4;
+
+}  // namespace
+
 void ShaderBindings::bindTo(ComputePipeline& pipeline) const {
   for (std::uint32_t b = 0; b < types.size(); ++b) {
     if (types[b] == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
@@ -16,24 +23,24 @@ void ShaderBindings::bindTo(ComputePipeline& pipeline) const {
     else if (types[b] == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
       pipeline.bind(b, *buffers[b]);
     else if (b == gpu::kBindingPrimRefs)
-      pipeline.bindTexels(b, *buffers[b], VK_FORMAT_R32_UINT, 4);
+      pipeline.bindTexels(b, *buffers[b], VK_FORMAT_R32_UINT, kPrimRefTexel);
     else
-      pipeline.bindTexels(b, *buffers[b], VK_FORMAT_R32G32B32A32_UINT, 16);
+      pipeline.bindTexels(b, *buffers[b], VK_FORMAT_R32G32B32A32_UINT, kTexel);
   }
 }
 
 SceneUpload::SceneUpload(const Context& context, const GpuScene& scene, SceneArrays arrays)
-    : normals_(Buffer::withContents(context, scene.triangleNormals)),
-      lights_(Buffer::withContents(context, scene.lights)),
-      materials_(Buffer::withContents(context, scene.materials)),
-      nodes_(Buffer::withContents(context, scene.bvh.nodes)),
-      primRefs_(Buffer::withContents(context, scene.bvh.primRefs)) {
+    : normals_(Buffer::withContents(context, scene.triangleNormals, true)),
+      lights_(Buffer::withContents(context, scene.lights, true)),
+      materials_(Buffer::withContents(context, scene.materials, true)),
+      nodes_(Buffer::withContents(context, scene.bvh.nodes, true)),
+      primRefs_(Buffer::withContents(context, scene.bvh.primRefs, true)) {
 #define VKRT_SHAPE_UPLOAD(Type, member, name, kind, GpuType, binding) \
-  shapes_.push_back(Buffer::withContents(context, scene.member));
+  shapes_.push_back(Buffer::withContents(context, scene.member, true));
   VKRT_SHAPES(VKRT_SHAPE_UPLOAD)
 #undef VKRT_SHAPE_UPLOAD
   if (arrays != SceneArrays::Path) return;
-  quadLights_.emplace(Buffer::withContents(context, scene.quadLights));
+  quadLights_.emplace(Buffer::withContents(context, scene.quadLights, true));
   emitters_.emplace(Buffer::withContents(context, scene.emitters));
 }
 

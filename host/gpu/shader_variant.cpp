@@ -59,8 +59,8 @@ std::set<std::uint64_t>& keys(const std::string& path) {
 
 }  // namespace
 
-bool specializationPays(bool cpuDevice, double estimatedRays) {
-  return !cpuDevice || estimatedRays > kSpecializeAboveRays;
+bool specializationPays(bool cpuDevice, double estimatedRays, bool pathShader) {
+  return !cpuDevice || estimatedRays > (pathShader ? kSpecializePathAboveRays : kSpecializeWhittedAboveRays);
 }
 
 std::uint64_t variantKey(const VkPhysicalDeviceProperties& device, const std::uint32_t* spirv, std::size_t spirvBytes,

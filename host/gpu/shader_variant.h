@@ -18,11 +18,14 @@
 namespace vkrt {
 
 // A render's estimated rays from which the specialised variant pays for its compile on a
-// CPU device (lavapipe: a compile of 0.2-0.5 s against 5-20% of a trace at 3-8 Mrays/s). A
-// GPU compiles in milliseconds and always specialises.
-inline constexpr double kSpecializeAboveRays = 30e6;
+// CPU device (lavapipe, two cores: a compile of 0.3-0.5 s). The Whitted shader's general
+// variant traces 10-25% slower, at about 10-30 M of these estimated rays a second; the path
+// shader's 30-50% slower (every integrator in), at 2-5 M. A GPU compiles in milliseconds
+// and always specialises.
+inline constexpr double kSpecializeWhittedAboveRays = 30e6;
+inline constexpr double kSpecializePathAboveRays = 2e6;
 
-bool specializationPays(bool cpuDevice, double estimatedRays);
+bool specializationPays(bool cpuDevice, double estimatedRays, bool pathShader);
 
 // The variant `spirv` with `specConstants` on this device, as the index knows it.
 std::uint64_t variantKey(const VkPhysicalDeviceProperties& device, const std::uint32_t* spirv, std::size_t spirvBytes,

@@ -64,6 +64,13 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, std::uint32_t jit
 
 }  // namespace
 
+std::uint32_t pathPixelsPerInvocation(bool cpuDevice, std::uint32_t integrator, std::uint32_t samples,
+                                      std::size_t primitives) {
+  if (!cpuDevice || integrator != gpu::kIntegratorPathTracer) return 1;
+  const std::uint32_t most = primitives > kLargeScenePrimitives ? 4u : gpu::kDefaultPixelsPerInvocation;
+  return std::clamp((kPathSamplesPerLane + samples - 1) / std::max(samples, 1u), 1u, most);
+}
+
 RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
                                RayCounts* rays, VulkanTimings* timings) {
   VulkanTimings t;
@@ -72,10 +79,9 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   const std::uint32_t samples = options.sampleCount ? options.sampleCount : scene.spp;
   const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const std::uint32_t perInvocation =
-      options.pixelsPerInvocation ? options.pixelsPerInvocation
-      : cpuDevice ? std::clamp((kPathSamplesPerLane + samples - 1) / std::max(samples, 1u), 1u,
-                               gpu::kDefaultPixelsPerInvocation)
-                  : 1u;
+      options.pixelsPerInvocation
+          ? options.pixelsPerInvocation
+          : pathPixelsPerInvocation(cpuDevice, scene.path.integrator, samples, primitiveCount(scene));
   // One GpuPathTracerState per invocation, shared by its perInvocation pixels; the workgroups
   // of a band each take a run of perInvocation adjacent 8x8 tiles.
   const BandLayout layout = bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuPathTracerState),
@@ -122,17 +128,24 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   t.texelReads = chooseTexelReads(options.reads, upload.texelsFit(maxTexels), maxTexels);
   const std::uint32_t* spirv = t.texelReads ? kPathtraceTexelSpirv : kPathtraceSpirv;
   const std::size_t spirvBytes = t.texelReads ? sizeof(kPathtraceTexelSpirv) : sizeof(kPathtraceSpirv);
-  // The rays, about: per sample a camera ray, and per vertex (4 where Russian roulette ends
-  // the path) a scattered ray and a shadow ray per light sample (what ShaderVariant::Auto goes by).
-  const double vertices = scene.path.maxDepth == gpu::kUnlimitedDepth ? 4.0 : std::min(scene.path.maxDepth, 8u);
-  const double lightRays = scene.path.nextEvent ? scene.path.lightSamples * (scene.path.quadLightCount + 1.0) : 0.0;
-  t.estimatedRays = static_cast<double>(width) * height * samples * (1.0 + vertices * (1.0 + lightRays));
+  // The rays, about (what ShaderVariant::Auto goes by): per sample a camera ray; direct: a
+  // shadow ray per light sample of each quad light; pathtracer: per vertex (4 where only
+  // Russian roulette ends the path) a scattered ray and, with next-event estimation, a shadow
+  // ray per light sample of each light.
+  const double lightRays = static_cast<double>(scene.path.lightSamples) * (scene.path.quadLightCount + 1.0);
+  double perSample = 1.0;
+  if (scene.path.integrator == gpu::kIntegratorDirect)
+    perSample += lightRays;
+  else if (scene.path.integrator == gpu::kIntegratorPathTracer)
+    perSample += (scene.path.maxDepth == gpu::kUnlimitedDepth ? 4.0 : std::min(scene.path.maxDepth, 8u)) *
+                 (1.0 + (scene.path.nextEvent != gpu::kNextEventOff ? lightRays : 0.0));
+  t.estimatedRays = static_cast<double>(width) * height * samples * perSample;
   std::string leftOut;
   const std::uint64_t specializedKey =
       variantKey(context.properties(), spirv, spirvBytes, pathFeatures(scene, path.jitter, true, testAll, leftOut));
   t.general = options.variant == ShaderVariant::General ||
               (options.variant == ShaderVariant::Auto && !variantCompiled(specializedKey) &&
-               !specializationPays(cpuDevice, t.estimatedRays));
+               !specializationPays(cpuDevice, t.estimatedRays, true));
   const std::vector<std::uint32_t> spec = pathFeatures(scene, path.jitter, !t.general, testAll, t.leftOut);
   ShaderBindings bindings(gpu::kPathBindingCount);
   upload.bind(bindings, t.texelReads);

@@ -4,6 +4,7 @@
 // (weighted by their sample counts) into the same image as one render of all the samples.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -28,10 +29,8 @@ struct VulkanPathOptions {
   // samples the pixel centres, whatever sampleCount says); 0: the scene's spp.
   std::uint32_t renderSpp = 0;
   std::uint32_t stepBudget = 0;           // steps per invocation per dispatch; 0: paced by time
-  // Pixels an invocation renders in turn (one of each tile of its workgroup's run); 0: on a CPU
-  // device enough that each lane has about kPathSamplesPerLane samples to render (its vector's
-  // lanes, whose paths end at different lengths, stay busy), at most
-  // kDefaultPixelsPerInvocation; on a GPU 1. The same image either way.
+  // Pixels an invocation renders in turn (one of each tile of its workgroup's run); 0:
+  // pathPixelsPerInvocation. The same image either way.
   std::uint32_t pixelsPerInvocation = 0;
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
   ShaderVariant variant = ShaderVariant::Specialized;   // the shader's: specialised to the scene, general, or Auto
@@ -45,9 +44,19 @@ struct VulkanPathOptions {
   std::optional<PixelRect> crop;
 };
 
-// (Measured on lavapipe, scenes/gi/box.test: at 1 to 4 samples a pixel, 16 pixels a lane
-// render 25-35% faster than one; at 64, 4 about as fast as one.)
+// The pixels an invocation of the path shader renders in turn. On a CPU device a vector's
+// lanes wait for the longest path among them: the pathtracer's paths end at any length, so
+// a lane takes pixels until it has about kPathSamplesPerLane samples (at most
+// kDefaultPixelsPerInvocation, 4 in a scene of more than kLargeScenePrimitives, where lanes
+// that drift apart in the image lose the BVH's cache lines). The direct integrators' samples
+// are of one length: one pixel a lane, as on a GPU, which has lanes to spare. (Measured on
+// lavapipe at 2 samples a pixel: the CSE 168 cornell boxes 25-35% faster at 16 pixels a lane,
+// the 100k-triangle dragon with the pathtracer 10% faster at 4 and slower at 16, with the
+// direct integrator 20-45% slower at 4 or 16.)
 inline constexpr std::uint32_t kPathSamplesPerLane = 256;
+inline constexpr std::size_t kLargeScenePrimitives = 10000;
+std::uint32_t pathPixelsPerInvocation(bool cpuDevice, std::uint32_t integrator, std::uint32_t samples,
+                                      std::size_t primitives);
 
 // RayCounts: primary = camera rays (pixels x samples), shadow = shadow rays, secondary =
 // scattered rays, nonFinite = samples whose radiance was NaN or infinite (left out of the mean).

@@ -135,7 +135,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   const std::uint64_t specializedKey = variantKey(context.properties(), spirv, spirvBytes, specConstants(used, false));
   t.general = options.variant == ShaderVariant::General ||
               (options.variant == ShaderVariant::Auto && !variantCompiled(specializedKey) &&
-               !specializationPays(cpuDevice, t.estimatedRays));
+               !specializationPays(cpuDevice, t.estimatedRays, false));
   const Features features = t.general ? sceneFeatures(scene, false) : used;
   t.leftOut = features.leftOut;
   if (!cutoff && !t.general) t.leftOut += std::string(t.leftOut.empty() ? "" : ", ") + "exactness cut-off";

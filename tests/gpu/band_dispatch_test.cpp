@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "gpu/band_dispatch.h"
+#include "gpu/vulkan_path_renderer.h"
 #include "gpu_types.h"
 
 namespace vkrt {
@@ -80,6 +81,19 @@ TEST(BandRows, TheFirstBandOnACpuTakesAboutTheFirstDispatchsSteps) {
   EXPECT_EQ(firstTimedBandRows(kMax, 400, 168, true, 20e6), 8u);
   EXPECT_EQ(firstTimedBandRows(kMax / 16, 400, 168, true, 20e6), 96u);   // 16 pixels a lane
   EXPECT_EQ(firstTimedBandRows(kMax, 400, 168, false, 20e6), 168u);      // a GPU: the memory's rows
+}
+
+// The path shader's lanes take several pixels only where path lengths differ (the
+// pathtracer) on a CPU device, fewer in a large scene, and one each for many samples.
+TEST(PathLanes, SeveralPixelsALaneOnlyWherePathsDifferInLength) {
+  const std::uint32_t pt = gpu::kIntegratorPathTracer;
+  EXPECT_EQ(pathPixelsPerInvocation(true, pt, 1, 30), gpu::kDefaultPixelsPerInvocation);
+  EXPECT_EQ(pathPixelsPerInvocation(true, pt, 64, 30), kPathSamplesPerLane / 64);
+  EXPECT_EQ(pathPixelsPerInvocation(true, pt, 1000, 30), 1u);
+  EXPECT_EQ(pathPixelsPerInvocation(true, pt, 2, kLargeScenePrimitives + 1), 4u);
+  EXPECT_EQ(pathPixelsPerInvocation(true, gpu::kIntegratorDirect, 2, 30), 1u);
+  EXPECT_EQ(pathPixelsPerInvocation(true, gpu::kIntegratorAnalyticDirect, 2, 30), 1u);
+  EXPECT_EQ(pathPixelsPerInvocation(false, pt, 1, 30), 1u);   // a GPU has lanes to spare
 }
 
 }  // namespace

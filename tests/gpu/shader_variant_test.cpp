@@ -12,10 +12,13 @@ namespace vkrt {
 namespace {
 
 TEST(ShaderVariant, SpecializingPaysOnlyForLongRendersOnACpu) {
-  EXPECT_FALSE(specializationPays(true, 640.0 * 480 * 3));      // a course scene
-  EXPECT_FALSE(specializationPays(true, kSpecializeAboveRays));
-  EXPECT_TRUE(specializationPays(true, 480.0 * 480 * 64 * 9));  // cornellNEE at 64 spp
-  EXPECT_TRUE(specializationPays(false, 1.0));                  // a GPU compiles in milliseconds
+  EXPECT_FALSE(specializationPays(true, 640.0 * 480 * 3, false));   // a course scene
+  EXPECT_FALSE(specializationPays(true, kSpecializeWhittedAboveRays, false));
+  EXPECT_TRUE(specializationPays(true, 2 * kSpecializeWhittedAboveRays, false));
+  EXPECT_FALSE(specializationPays(true, 240.0 * 240 * 2 * 5, true));  // a preview of a cornell box
+  EXPECT_TRUE(specializationPays(true, 480.0 * 480 * 64 * 9, true));  // cornellNEE at 64 spp
+  EXPECT_TRUE(specializationPays(false, 1.0, false));                 // a GPU compiles in milliseconds
+  EXPECT_TRUE(specializationPays(false, 1.0, true));
 }
 
 TEST(ShaderVariant, KeysTellVariantsApart) {
