@@ -46,6 +46,7 @@ layout(push_constant) uniform Push { GpuPathPush pc; };
 #include "camera.glsl"
 #include "lights.glsl"
 #include "mis_weight.glsl"
+#include "tile_run.glsl"   // tile, runEnd, bandRows
 
 #ifdef VKRT_TEXEL_READS
 layout(binding = kBindingQuadLights) uniform usamplerBuffer quadLightWords;   // RGBA32UI
@@ -87,8 +88,6 @@ vec3 pending;          // what the current shadow ray adds when nothing blocks i
 uint bounce, sampleIndex;
 uint pixelX, pixelY, pixelIndex;   // in the full image; pixelIndex = y * fullWidth + x
 uint pixelSlot;        // the pixel's place in the band's accumulation[]
-uint tile, runEnd;     // the lane's tile in its workgroup's run of tiles, and the run's end
-uint bandRows;         // rows of this band (the last may be short)
 
 // ---- random numbers (gpu_rng.h: the generator and how each number is used) ------------------
 
@@ -509,27 +508,13 @@ void loadState(uint slot) {
 }
 
 void main() {
-  // Each workgroup takes a run of adjacent tiles, the same pixel of each in turn per lane
-  // (as in raytrace.comp); the runs are visited in a scattered order, so that each of
-  // lavapipe's threads (which take contiguous runs of workgroups) gets a share of every part
-  // of the band.
-  uint runs = gl_NumWorkGroups.x;
-  uint tilesPerRun = (params.tilesX * (params.bandHeight / kWorkgroupSize) + runs - 1u) / runs;
-  bandRows = min(params.bandHeight, params.height - pc.bandY0);
-  uint bandTiles = params.tilesX * ((bandRows + kWorkgroupSize - 1u) / kWorkgroupSize);
-  uint runStart = (gl_WorkGroupID.x * params.tileOrderStride) % runs * tilesPerRun;
-  runEnd = min(runStart + tilesPerRun, bandTiles);
+  // The lanes share out the band's tiles in runs (tile_run.glsl).
+  uint runStart = startRun();
   uint invocation = gl_WorkGroupID.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
 
   // The lane's last pixel's w says whether the invocation is done: 1 once that pixel is
   // written, 0 from a suspension on (so that only suspended invocations touch the state buffer).
-  tile = runEnd;
-  bool found = false;
-  while (tile > runStart && !found) {
-    --tile;
-    found = setPixel();
-  }
-  if (!found) return;   // no pixel of the band in this lane's tiles
+  if (!lastPixelOfRun(runStart)) return;   // no pixel of the band in this lane's tiles
   uint lastSlot = pixelSlot;
   if (pc.resume != 0u) {
     if (accumulation[lastSlot].w != 0.0) return;   // finished in an earlier round
@@ -537,8 +522,7 @@ void main() {
     setPixel();
     keySample();
   } else {
-    tile = runStart;
-    while (!setPixel()) ++tile;
+    firstPixelOfRun(runStart);
     pixelSum = vec3(0.0);
     sampleIndex = 0u;
     if (path.sampleCount > 0u)

@@ -34,12 +34,11 @@ layout(push_constant) uniform Push { GpuPushConstants pc; };
 #include "traverse.glsl"
 #include "camera.glsl"
 #include "lights.glsl"
+#include "tile_run.glsl"   // tile, runEnd, bandRows
 
 // ---- per-invocation state (registers; saved to states[] only on suspension) -----------------
 // (the ray, its hit, the shadow ray and the traversal stack: traverse.glsl)
-uint tile;    // the tile of the band (8x8 pixels, row by row) whose pixel the invocation computes
-uint pixelX, pixelY;   // that pixel's column and row in the band (not saved: tile tells them)
-uint runEnd, bandRows;   // the end of the invocation's run of tiles; the band's rows
+uint pixelX, pixelY;   // the lane's pixel's column and row in the band (not saved: tile tells them)
 vec3 throughput, radiance;
 vec3 lightColor;   // of the current shadow ray: the light's colour over its attenuation
 uint depth;
@@ -209,35 +208,20 @@ void endPixel() {
 }
 
 void main() {
-  // Each workgroup takes a run of adjacent tiles, the same pixel of each in turn per lane, so
-  // that the lanes of a vector stay near each other; the runs are visited in a scattered order,
-  // so that each of lavapipe's threads (which take contiguous runs of workgroups) gets a share
-  // of every part of the image.
-  uint runs = gl_NumWorkGroups.x;
-  uint tilesPerRun = (params.tilesX * (params.bandHeight / kWorkgroupSize) + runs - 1u) / runs;
-  bandRows = min(params.bandHeight, params.height - pc.bandY0);
-  uint bandTiles = params.tilesX * ((bandRows + kWorkgroupSize - 1u) / kWorkgroupSize);
-  uint runStart = (gl_WorkGroupID.x * params.tileOrderStride) % runs * tilesPerRun;
-  runEnd = min(runStart + tilesPerRun, bandTiles);
+  // The lanes share out the band's tiles in runs (tile_run.glsl).
+  uint runStart = startRun();
   uint invocation = gl_WorkGroupID.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
 
   // The lane's last pixel's w says whether the invocation is done: 1 once that pixel is
   // written, 0 from a suspension on (so that only suspended invocations touch the state buffer).
-  tile = runEnd;
-  bool found = false;
-  while (tile > runStart && !found) {
-    --tile;
-    found = setPixel();
-  }
-  if (!found) return;   // no pixel of the band in this lane's tiles
+  if (!lastPixelOfRun(runStart)) return;   // no pixel of the band in this lane's tiles
   uint lastPixel = pixelY * params.width + pixelX;
   if (pc.resume != 0u) {
     if (pixels[lastPixel].w != 0.0) return;   // finished in an earlier round
     loadState(invocation);
     setPixel();
   } else {
-    tile = runStart;
-    while (!setPixel()) ++tile;
+    firstPixelOfRun(runStart);
     startPixel();
   }
 
