@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/exit_status.h"
+#include "cli/grade.h"
 #include "counted.h"
 #include "cli/options.h"
 #include "cli/run_files.h"
@@ -409,6 +410,7 @@ int main(int argc, char** argv) {
     if (options.mergeCommand) return merge(options);
     if (options.diffCommand) return diff(options);
     if (options.convertCommand) return convert(options);
+    if (options.gradeCommand) return vkrt::gradeCommand(options);
     if (options.listDevices) {
       auto devices = vkrt::listDevices();
       for (std::size_t i = 0; i < devices.size(); ++i)

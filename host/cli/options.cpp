@@ -188,13 +188,16 @@ namespace {
 
 // The subcommands, and the long options of --help (without their dashes), for "did you
 // mean" after a typo.
-constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert"};
+constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert", "grade"};
 constexpr std::string_view kLongOptions[] = {
     "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "variant",
     "maxdepth", "spp", "seed", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
     "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version", "watch"};
 constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "quiet", "help"};
 constexpr std::string_view kConvertLongOptions[] = {"quiet", "help"};
+constexpr std::string_view kGradeLongOptions[] = {"output", "thresholds", "max-pixels-over", "max-diff", "max-bias",
+                                                  "max-variance", "diff-scale", "backend", "device", "spp", "seed",
+                                                  "threads", "validation", "quiet", "help"};
 
 // "unknown option '--bakcend'; did you mean '--backend'?": the option without its dashes
 // (and without =VALUE) against the long options.
@@ -210,6 +213,11 @@ std::string unknownOption(const std::string& what, const std::string& option, co
 bool exists(const std::string& path) {
   struct stat st {};
   return ::stat(path.c_str(), &st) == 0;
+}
+
+bool isDirectory(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
 }
 
 // `vkrt dif a.png b.png`: a first argument near a subcommand, and no file of that name, is a
@@ -372,6 +380,87 @@ Options parseConvertOptions(const std::vector<std::string>& args) {
   return o;
 }
 
+// vkrt grade [options] REFS/ SUBMISSIONS/|SCENE.test ... -o REPORT/
+Options parseGradeOptions(const std::vector<std::string>& args) {
+  Options o;
+  o.gradeCommand = true;
+  o.request.variant = ShaderVariant::Auto;
+  std::vector<std::string> operands;
+  bool endOfOptions = false;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
+      operands.push_back(a);
+      continue;
+    }
+    if (a == "--") {
+      endOfOptions = true;
+      continue;
+    }
+    std::string name = a, inlineValue;
+    bool hasInline = false;
+    if (auto eq = a.find('='); a.rfind("--", 0) == 0 && eq != std::string::npos) {
+      name = a.substr(0, eq), inlineValue = a.substr(eq + 1), hasInline = true;
+    }
+    auto take = [&]() -> std::string {
+      if (hasInline) return inlineValue;
+      if (i + 1 >= args.size()) throw UsageError("option " + echoed(name) + " needs a value");
+      return args[++i];
+    };
+    if (name == "-o" || name == "--output") {
+      o.gradeOutput = take();
+      if (o.gradeOutput.empty()) throw UsageError("option -o needs a non-empty folder name");
+    } else if (name == "--thresholds") {
+      o.gradeThresholdsFile = take();
+    } else if (name == "--max-pixels-over" || name == "--max-diff" || name == "--max-bias" ||
+               name == "--max-variance") {
+      applyThresholdOption(name, take(), o.gradeThresholds);
+    } else if (name == "--diff-scale") {
+      o.heatmapScale = integerValue(name, take(), 1, 255);
+    } else if (name == "--backend") {
+      std::string b = take();
+      if (b == "cpu")
+        o.request.backend = Backend::Cpu;
+      else if (b == "vulkan")
+        o.request.backend = Backend::Vulkan;
+      else
+        throw UsageError("unknown backend '" + echoed(b) + "' (expected: vulkan or cpu)");
+    } else if (name == "--device") {
+      o.request.device = take();
+      if (o.request.device.empty()) throw UsageError("--device needs an index or a name");
+    } else if (name == "--spp") {
+      o.request.spp = static_cast<std::uint64_t>(integerValue(name, take(), 1, 1 << 30));
+    } else if (name == "--seed") {
+      o.request.seed = seedValue(take());
+    } else if (name == "--threads") {
+      o.request.threads = integerValue(name, take(), 1, 1024);
+    } else if (a == "--validation") {
+      o.request.validation = true;
+    } else if (a == "-q" || a == "--quiet") {
+      o.quiet = true;
+    } else if (a == "-h" || a == "--help") {
+      o.help = true;
+    } else {
+      throw UsageError(unknownOption("grade option", a, "", kGradeLongOptions));
+    }
+  }
+  if (const char* v = std::getenv("VKRT_VALIDATION"); v && std::string(v) == "1") o.request.validation = true;
+  if (o.help) return o;
+  const std::string example = "vkrt grade REFS/ SUBMISSIONS/ -o REPORT/";
+  if (operands.size() < 2)
+    throw UsageError("grade needs the references' folder and at least one folder of submissions (or scene files): " +
+                     example);
+  if (o.gradeOutput.empty()) throw UsageError("grade needs the report's folder: " + example);
+  refuseStandardOutput("-o", o.gradeOutput);
+  o.gradeReferences = operands[0];
+  o.gradeInputs.assign(operands.begin() + 1, operands.end());
+  for (const std::string& in : o.gradeInputs)
+    if (std::optional<std::string> kind = imageKind(in); kind && !isDirectory(in))
+      throw UsageError("grade: " + abbreviated(in) + " is a " + *kind +
+                       " image; give the folder that holds the submission's images (or a scene file to render)");
+  return o;
+}
+
 }  // namespace
 
 Options parseOptions(const std::vector<std::string>& args) {
@@ -387,6 +476,7 @@ Options parseOptions(const std::vector<std::string>& args) {
   }
   if (!args.empty() && args[0] == "merge") return parseMergeOptions(args);
   if (!args.empty() && args[0] == "convert") return parseConvertOptions(args);
+  if (!args.empty() && args[0] == "grade") return parseGradeOptions(args);
   refuseMistypedSubcommand(args);
   for (std::size_t i = first; i < args.size(); ++i) {
     const std::string& a = args[i];

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/image_check.h"
+#include "grade/grade_thresholds.h"
 #include "errors.h"   // UsageError
 #include "render/render.h"
 
@@ -34,6 +35,15 @@ struct Options {
   // `vkrt convert IN OUT`: the image IN written in the format of OUT's name.
   bool convertCommand = false;
   std::string convertInput, convertOutput;
+
+  // `vkrt grade REFS/ SUBMISSIONS/... -o REPORT/`: submissions (folders of images, or scene
+  // files to render) against references, into a report folder (cli/grade.h).
+  bool gradeCommand = false;
+  std::string gradeReferences;
+  std::vector<std::string> gradeInputs;
+  std::string gradeOutput;
+  std::optional<std::string> gradeThresholdsFile;   // --thresholds FILE: per scene
+  GradeThresholds gradeThresholds;                  // given once on the command line
 
   // `vkrt --compare SCENE`: render with both backends, report both and their difference.
   bool compare = false;

@@ -1,0 +1,393 @@
+// vkrt grade: find, render, compare (on every core), write the report folder, swap it in.
+#include "cli/grade.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <thread>
+
+#include <stdlib.h>   // mkdtemp
+#include <sys/stat.h>   // umask, chmod
+
+#include "cli/exit_status.h"
+#include "cli/run_files.h"   // RefusedOutput
+#include "counted.h"
+#include "errors.h"
+#include "grade/grade_inputs.h"
+#include "grade/grade_report.h"
+#include "image/encode.h"
+#include "image/image_file.h"
+#include "image/image_read.h"
+#include "image/thumbnail.h"
+#include "interrupt.h"
+#include "render/progress.h"
+#include "render/render.h"
+#include "scene/diagnostic.h"   // abbreviated
+
+namespace vkrt {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A folder, as one name per folder (links and '..' resolved), for telling folders apart.
+fs::path canonicalFolder(const std::string& path) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(path), ec);
+  return ec ? fs::absolute(path).lexically_normal() : p;
+}
+
+bool inside(const fs::path& inner, const fs::path& outer) {
+  auto [o, i] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+  return o == outer.end();
+}
+
+// Whether `folder` may be replaced by a new report: it is empty, or it holds a report this
+// command wrote (its summary.json says so) and nothing else (a file someone added is kept
+// by refusing).
+bool replaceableReport(const fs::path& folder) {
+  std::error_code ec;
+  bool empty = true;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    empty = false;
+    if (!isReportEntry(it->path().filename().string())) return false;
+  }
+  if (ec) return false;
+  if (empty) return true;
+  std::FILE* f = std::fopen((folder / "summary.json").c_str(), "rb");
+  if (!f) return false;
+  char buf[16] = {};
+  std::size_t n = std::fread(buf, 1, sizeof buf - 1, f);
+  std::fclose(f);
+  return std::string(buf, n).rfind(kSummaryJsonStart, 0) == 0;
+}
+
+// Where the report goes: refused (UsageError) when it is, holds or lies in a folder the run
+// reads, or is something other than a folder this command may replace. Returns its path
+// with links resolved (a link to a folder is written through, and stays a link).
+fs::path checkReportFolder(const std::string& output, const std::vector<std::string>& inputs) {
+  const fs::path out = canonicalFolder(output);
+  for (const std::string& in : inputs) {
+    const fs::path p = canonicalFolder(in);
+    if (inside(p, out) || inside(out, p))
+      throw RefusedOutput("-o " + abbreviated(output) + ": the report folder " +
+                          (inside(out, p) && out != p ? "lies in" : inside(p, out) && out != p ? "holds" : "is") +
+                          " '" + abbreviated(in) + "', which this run reads; name a folder apart from them");
+  }
+  std::error_code ec;
+  fs::file_status st = fs::status(out, ec);
+  if (fs::exists(st)) {
+    if (!fs::is_directory(st)) throw RefusedOutput("-o " + abbreviated(output) + " is a file, not a folder for the report");
+    if (!replaceableReport(out))
+      throw RefusedOutput("-o " + abbreviated(output) + " is a folder that holds other files than a vkrt report; "
+                          "name a new folder (or an empty one, or an earlier report, which is replaced)");
+  }
+  const fs::path parent = out.parent_path();
+  if (!fs::is_directory(parent, ec))
+    throw IoError("cannot write the report '" + abbreviated(output) + "': the folder '" + abbreviated(parent.string()) +
+                  "' does not exist");
+  return out;
+}
+
+// A fresh folder beside `out`, for the report until it is whole.
+std::string temporaryFolderBeside(const fs::path& out) {
+  std::string pattern = (out.parent_path() / ".vkrt-grade-XXXXXX").string();
+  if (!::mkdtemp(pattern.data()))
+    throw IoError("cannot write the report beside '" + abbreviated(out.string()) + "': " + std::strerror(errno));
+  // mkdtemp makes it for this user alone; the report is for whoever may read a new folder.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::chmod(pattern.c_str(), 0777 & ~mask);
+  return pattern;
+}
+
+// Puts the whole report at `out`: renamed into place, an earlier one moved aside first and
+// then removed. Throws IoError.
+void swapIntoPlace(const std::string& temporary, const fs::path& out) {
+  std::error_code ec;
+  if (!fs::exists(out, ec)) {
+    fs::rename(temporary, out, ec);
+    if (ec) throw IoError("cannot put the report at '" + abbreviated(out.string()) + "': " + ec.message());
+    return;
+  }
+  const std::string old = temporaryFolderBeside(out);
+  fs::rename(out, old, ec);   // over the empty folder just made
+  if (ec) throw IoError("cannot replace the report '" + abbreviated(out.string()) + "': " + ec.message());
+  fs::rename(temporary, out, ec);
+  if (ec) {
+    std::error_code back;
+    fs::rename(old, out, back);
+    throw IoError("cannot replace the report '" + abbreviated(out.string()) + "': " + ec.message());
+  }
+  fs::remove_all(old, ec);
+}
+
+// The temporary folder, removed unless the report was put in place.
+class TemporaryFolder {
+ public:
+  explicit TemporaryFolder(std::string path) : path_(std::move(path)) {}
+  ~TemporaryFolder() {
+    std::error_code ec;
+    if (!path_.empty()) fs::remove_all(path_, ec);
+  }
+  TemporaryFolder(const TemporaryFolder&) = delete;
+  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+  const std::string& path() const { return path_; }
+  void release() { path_.clear(); }
+
+ private:
+  std::string path_;
+};
+
+bool isSceneArgument(const std::string& path) {
+  std::error_code ec;
+  return !fs::is_directory(path, ec);
+}
+
+// One comparison to make: a submission's image of a scene (a file, or a render held here).
+struct Job {
+  std::size_t submission, scene;
+  std::string path;                 // the file to read
+  const Image* rendered = nullptr;  // or the image rendered in this run
+};
+
+// The rendered submission: each scene file rendered (sharing the device), matched to the
+// reference of its name. A scene that fails is reported (its message printed) and graded as
+// unreadable; `status` receives the worst of their statuses.
+struct Rendered {
+  Submission submission;
+  std::map<std::string, Image> images;                       // sceneKey -> image
+  std::map<std::string, std::string> errors;                 // sceneKey -> what went wrong
+};
+
+Rendered renderScenes(const Options& o, const std::vector<std::string>& scenes,
+                      const std::vector<SceneReference>& refs, int& status) {
+  Rendered r;
+  r.submission.name = "vkrt";
+  r.submission.folder = "rendered by this run";
+  std::set<std::string> keys;
+  for (const SceneReference& ref : refs) keys.insert(sceneKey(ref.scene));
+  RenderSession session;
+  for (const std::string& scene : scenes) {
+    const std::string key = sceneKey(sceneOfFileName(scene));
+    if (!keys.count(key)) {
+      r.submission.notes.push_back(abbreviated(scene) + ": no reference image is named for this scene; not rendered");
+      continue;
+    }
+    if (r.submission.images.count(key)) {
+      r.submission.notes.push_back(abbreviated(scene) + ": a second scene file for " + sceneOfFileName(scene) +
+                                   " (" + abbreviated(r.submission.images[key]) + " is graded)");
+      continue;
+    }
+    r.submission.images[key] = scene;
+    RenderRequest request = o.request;
+    request.scenePath = scene;
+    request.onWarnings = nullptr;
+    try {
+      ProgressBar progress(!o.quiet);
+      RenderReport report;
+      RadianceImage image = renderSceneInMemory(request, progress, report, false, &session);
+      r.images[key] = encodeImage(image, report.gamma);
+      if (!o.quiet)
+        std::fprintf(stderr, "vkrt: rendered %s (%dx%d) in %.2f s\n", scene.c_str(), report.width, report.height,
+                     report.parseSeconds + report.buildSeconds + report.renderSeconds);
+    } catch (...) {
+      std::exception_ptr e = std::current_exception();
+      if (int signal = pendingInterrupt()) throw Interrupted(signal);
+      int s = reportError(e, {scene, o.quiet}, stderr);
+      status = worseExitStatus(status, s);
+      r.errors[key] = "cannot be rendered: " + exitStatusName(s) + " (its messages are on the terminal)";
+    }
+  }
+  return r;
+}
+
+// Compares one image and writes its images into the report folder.
+void gradeOne(const Job& job, const Image& reference, const GradeThresholds& t, int heatmapScale,
+              const std::string& folder, ReportEntry& entry) {
+  Image loaded;
+  const Image* image = job.rendered;
+  if (!image) {
+    try {
+      loaded = readImageAsBytes(job.path);
+    } catch (const IoError& e) {
+      entry.grade.outcome = GradeOutcome::Unreadable;
+      entry.grade.failures.push_back(e.what());
+      return;
+    }
+    image = &loaded;
+  }
+  ImageDiff diff;
+  entry.grade = gradeImage(*image, reference, t, &diff);
+  auto write = [&](const Image& img, ReportImage which) {
+    writeImageAtomic(img, folder + "/" + entryImagePath(job.submission, job.scene, which));
+  };
+  write(*image, ReportImage::Submission);
+  write(thumbnail(*image, kThumbnailWidth, kThumbnailHeight), ReportImage::Thumbnail);
+  entry.hasImage = true;
+  if (diff.width > 0) {
+    write(differenceHeatmap(diff, heatmapScale), ReportImage::Difference);
+    entry.hasDiff = true;
+  }
+}
+
+// Runs `jobs` on `threads` threads; the first exception (a write that failed, memory, a
+// signal) stops the rest and is thrown here.
+void runJobs(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& job, ProgressBar& progress) {
+  std::atomic<std::size_t> next{0}, done{0};
+  std::exception_ptr failure;
+  std::mutex failureMutex;
+  std::atomic<bool> stop{false};
+  auto worker = [&] {
+    for (std::size_t i; !stop && (i = next++) < count;) {
+      try {
+        throwIfInterrupted();
+        job(i);
+        progress.update(++done, count);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failureMutex);
+        if (!failure) failure = std::current_exception();
+        stop = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned k = 1; k < threads; ++k) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  progress.finish();
+  if (failure) std::rethrow_exception(failure);
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+}  // namespace
+
+int gradeCommand(const Options& o) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::string> folders, scenes;
+  for (const std::string& in : o.gradeInputs) (isSceneArgument(in) ? scenes : folders).push_back(in);
+  std::vector<std::string> inputs = o.gradeInputs;
+  inputs.push_back(o.gradeReferences);
+  if (o.gradeThresholdsFile) inputs.push_back(*o.gradeThresholdsFile);
+  const fs::path out = checkReportFolder(o.gradeOutput, inputs);
+
+  const std::vector<SceneReference> refs = findReferences(o.gradeReferences);
+  std::vector<std::string> keys;
+  for (const SceneReference& r : refs) keys.push_back(sceneKey(r.scene));
+  ThresholdTable thresholds;
+  thresholds.all = o.gradeThresholds;
+  if (o.gradeThresholdsFile) thresholds = readThresholdFile(*o.gradeThresholdsFile, o.gradeThresholds, keys);
+  std::vector<Submission> submissions;
+  if (!folders.empty()) submissions = findSubmissions(folders, refs);
+
+  // The references, read before anything is rendered: one that cannot be read stops the run.
+  std::vector<Image> references;
+  for (const SceneReference& r : refs) references.push_back(readImageAsBytes(r.path));
+
+  int status = kExitOk;
+  std::optional<Rendered> rendered;
+  if (!scenes.empty()) {
+    rendered = renderScenes(o, scenes, refs, status);
+    submissions.insert(submissions.begin(), rendered->submission);
+  }
+
+  TemporaryFolder folder(temporaryFolderBeside(out));
+  for (const std::string& sub : reportImageFolders(submissions.size())) fs::create_directories(folder.path() + "/" + sub);
+  GradeReport report;
+  report.references = o.gradeReferences;
+  for (std::size_t c = 0; c < refs.size(); ++c) {
+    const GradeThresholds& t = thresholds.forScene(keys[c]);
+    report.scenes.push_back({refs[c].scene, refs[c].path, t.text(), keyFigureLabel(t), references[c].width,
+                             references[c].height});
+    writeImageAtomic(references[c], folder.path() + "/" + referenceImagePath(c));
+  }
+  std::vector<Job> jobs;
+  for (std::size_t i = 0; i < submissions.size(); ++i) {
+    const Submission& s = submissions[i];
+    ReportSubmission rs{s.name, s.folder, s.notes, std::vector<ReportEntry>(refs.size())};
+    for (std::size_t c = 0; c < refs.size(); ++c) {
+      auto at = s.images.find(keys[c]);
+      if (at == s.images.end()) continue;   // missing
+      rs.entries[c].source = at->second;
+      if (rendered && i == 0) {
+        if (auto err = rendered->errors.find(keys[c]); err != rendered->errors.end()) {
+          rs.entries[c].grade.outcome = GradeOutcome::Unreadable;
+          rs.entries[c].grade.failures.push_back(err->second);
+          continue;
+        }
+        jobs.push_back({i, c, at->second, &rendered->images.at(keys[c])});
+      } else {
+        jobs.push_back({i, c, at->second, nullptr});
+      }
+    }
+    report.submissions.push_back(std::move(rs));
+  }
+
+  const unsigned threads = o.request.threads > 0 ? static_cast<unsigned>(o.request.threads)
+                                                  : std::max(1u, std::thread::hardware_concurrency());
+  ProgressBar progress(!o.quiet);
+  runJobs(jobs.size(), threads, [&](std::size_t k) {
+    const Job& job = jobs[k];
+    gradeOne(job, references[job.scene], thresholds.forScene(keys[job.scene]), o.heatmapScale, folder.path(),
+             report.submissions[job.submission].entries[job.scene]);
+  }, progress);
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writeReportPages(report, folder.path());
+  throwIfInterrupted();
+  swapIntoPlace(folder.path(), out);
+  folder.release();
+
+  // A line per submission (its failures named), then the summary.
+  for (const ReportSubmission& s : report.submissions) {
+    std::vector<std::string> fail, missing, unreadable;
+    std::size_t pass = 0;
+    for (std::size_t c = 0; c < s.entries.size(); ++c) {
+      const std::string& scene = report.scenes[c].name;
+      switch (s.entries[c].grade.outcome) {
+        case GradeOutcome::Pass: ++pass; break;
+        case GradeOutcome::Fail: fail.push_back(scene); break;
+        case GradeOutcome::Missing: missing.push_back(scene); break;
+        case GradeOutcome::Unreadable:
+          unreadable.push_back(scene);
+          std::fprintf(stderr, "vkrt: %s: %s: %s\n", s.name.c_str(), scene.c_str(),
+                       s.entries[c].grade.failures.empty() ? "unreadable" : s.entries[c].grade.failures[0].c_str());
+          break;
+      }
+    }
+    if (!fail.empty() || !missing.empty()) status = worseExitStatus(status, kExitDiffers);
+    if (!unreadable.empty()) status = worseExitStatus(status, kExitIo);
+    if (!o.quiet)
+      std::fprintf(stderr, "vkrt: %-20s %zu/%zu pass%s%s%s\n", s.name.c_str(), pass, s.entries.size(),
+                   fail.empty() ? "" : ("; fail: " + joined(fail)).c_str(),
+                   missing.empty() ? "" : ("; missing: " + joined(missing)).c_str(),
+                   unreadable.empty() ? "" : ("; unreadable: " + joined(unreadable)).c_str());
+  }
+  if (!o.quiet)
+    for (const ReportSubmission& s : report.submissions)
+      for (const std::string& note : s.notes) std::fprintf(stderr, "vkrt: note: %s: %s\n", s.name.c_str(), note.c_str());
+  const OutcomeCounts n = countOutcomes(report);
+  if (o.quiet && status == kExitOk) return status;
+  std::fprintf(stderr, "vkrt: graded %s x %s in %.2f s: %zu pass, %zu fail, %zu missing%s; report: %s; exit status %d\n",
+               counted(report.submissions.size(), "submission", "submissions").c_str(),
+               counted(report.scenes.size(), "scene", "scenes").c_str(), report.seconds, n.pass, n.fail, n.missing,
+               n.unreadable ? (", " + std::to_string(n.unreadable) + " unreadable").c_str() : "",
+               (o.gradeOutput + (o.gradeOutput.back() == '/' ? "" : "/") + "index.html").c_str(), status);
+  return status;
+}
+
+}  // namespace vkrt

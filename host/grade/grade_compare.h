@@ -1,0 +1,53 @@
+// One submitted image against its reference: the figures of `vkrt diff` and of the course
+// grader, pass or fail under the scene's thresholds, the figure a table shows, and where the
+// failing pixels lie. Knows nothing of files or pages.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grade/grade_thresholds.h"
+#include "image/compare.h"
+#include "image/crop.h"
+#include "image/grader_stats.h"
+
+namespace vkrt {
+
+enum class GradeOutcome { Pass, Fail, Missing, Unreadable };
+const char* outcomeName(GradeOutcome o);   // "pass", "fail", "missing", "unreadable"
+
+// The one figure an overview shows for a scene, named by its thresholds: the pixels over the
+// first --max-pixels-over step, else the largest difference, else the variance, else |bias|;
+// with no threshold, the pixels that differ at all.
+struct KeyFigure {
+  std::string label;   // "pixels over 2/255"
+  double value = 0;
+  std::string text;    // "37 (0.012%)"
+};
+std::string keyFigureLabel(const GradeThresholds& t);
+
+struct Grade {
+  GradeOutcome outcome = GradeOutcome::Missing;
+  std::vector<std::string> failures;   // why it failed (or the error for unreadable ones)
+  int width = 0, height = 0;           // the submission's
+  // The figures of `vkrt diff` (8-bit steps) and of the grader (8-bit units).
+  int maxDiff = 0;
+  double rmse = 0, psnr = 0;
+  long long differing = 0, over1 = 0, over2 = 0;
+  GraderStats stats;
+  KeyFigure key;
+  std::vector<PixelRect> regions;   // boxes around the failing pixels, largest first
+  long long moreRegions = 0;        // boxes left out of `regions`
+};
+
+// The grade of `submission` against `reference` under `t`; `diff` receives the comparison
+// (for the difference image) when the sizes agree. A size that differs fails.
+Grade gradeImage(const Image& submission, const Image& reference, const GradeThresholds& t, ImageDiff* diff);
+
+// The boxes around the pixels of `diff` that differ by more than `steps`: the image cut into
+// `cell` x `cell` squares, the squares holding such pixels joined where they touch (sides or
+// corners), each group's bounding box; at most `limit`, those with the most pixels first
+// (`more` receives how many were left out).
+std::vector<PixelRect> failingRegions(const ImageDiff& diff, int steps, int cell, std::size_t limit, long long* more);
+
+}  // namespace vkrt

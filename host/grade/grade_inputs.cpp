@@ -1,0 +1,191 @@
+// Finding the references and the submissions of `vkrt grade` in their folders.
+#include "grade/grade_inputs.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <set>
+#include <system_error>
+
+#include "errors.h"
+#include "image/image_file.h"
+#include "scene/diagnostic.h"   // abbreviated
+
+namespace vkrt {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kSubmissionDepth = 4;   // how deep a student's folder is searched for images
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool hidden(const fs::path& p) {
+  const std::string name = p.filename().string();
+  return !name.empty() && name[0] == '.';
+}
+
+// The entries of `folder` (not hidden), sorted naturally; IoError when it cannot be listed.
+std::vector<fs::directory_entry> entriesOf(const std::string& folder) {
+  std::error_code ec;
+  fs::directory_iterator it(folder, ec);
+  if (ec) throw IoError("cannot read the folder '" + abbreviated(folder) + "': " + ec.message());
+  std::vector<fs::directory_entry> entries;
+  for (; it != fs::directory_iterator(); it.increment(ec)) {
+    if (ec) throw IoError("cannot read the folder '" + abbreviated(folder) + "': " + ec.message());
+    if (!hidden(it->path())) entries.push_back(*it);
+  }
+  if (ec) throw IoError("cannot read the folder '" + abbreviated(folder) + "': " + ec.message());
+  std::sort(entries.begin(), entries.end(), [](const fs::directory_entry& a, const fs::directory_entry& b) {
+    return naturalLess(a.path().filename().string(), b.path().filename().string());
+  });
+  return entries;
+}
+
+bool isFolder(const fs::directory_entry& e) {
+  std::error_code ec;
+  return e.is_directory(ec);   // follows links
+}
+
+bool isImageFile(const fs::directory_entry& e) {
+  std::error_code ec;
+  return e.is_regular_file(ec) && hasReadableImageName(e.path().string());
+}
+
+// The images under `folder` (itself and `depth` levels below), in path order.
+void collectImages(const std::string& folder, int depth, std::vector<std::string>& out) {
+  const std::vector<fs::directory_entry> entries = entriesOf(folder);
+  for (const fs::directory_entry& e : entries)
+    if (isImageFile(e)) out.push_back(e.path().string());
+  if (depth == 0) return;
+  for (const fs::directory_entry& e : entries)
+    if (isFolder(e)) collectImages(e.path().string(), depth - 1, out);
+}
+
+// The submission made of `images`, matched to `references` (by key).
+Submission matched(const std::string& name, const std::string& folder, const std::vector<std::string>& images,
+                   const std::set<std::string>& keys) {
+  Submission s;
+  s.name = name;
+  s.folder = folder;
+  for (const std::string& image : images) {
+    const std::string key = sceneKey(sceneOfFileName(image));
+    if (!keys.count(key)) {
+      s.notes.push_back(abbreviated(image) + ": no reference image is named for this scene; not graded");
+    } else if (auto [at, added] = s.images.emplace(key, image); !added) {
+      s.notes.push_back(abbreviated(image) + ": a second image for " + sceneOfFileName(image) + " (" +
+                        abbreviated(at->second) + " is graded)");
+    }
+  }
+  return s;
+}
+
+std::string baseName(const std::string& folder) {
+  fs::path p = fs::path(folder).lexically_normal();
+  if (p.filename().empty()) p = p.parent_path();
+  std::string name = p.filename().string();
+  if (name.empty() || name == ".") name = fs::absolute(p).lexically_normal().filename().string();
+  return name.empty() ? folder : name;
+}
+
+}  // namespace
+
+std::string sceneOfFileName(const std::string& path) {
+  std::string stem = fs::path(path).stem().string();
+  if (stem.size() > 4 && (lower(stem.substr(0, 4)) == "ref_" || lower(stem.substr(0, 4)) == "ref-"))
+    stem = stem.substr(4);
+  return stem;
+}
+
+std::string sceneKey(const std::string& scene) { return lower(scene); }
+
+bool hasReadableImageName(const std::string& path) {
+  const std::string ext = lower(fs::path(path).extension().string());
+  return hasImageExtension(path) || ext == ".jpg" || ext == ".jpeg";
+}
+
+bool naturalLess(const std::string& a, const std::string& b) {
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    const bool da = std::isdigit(static_cast<unsigned char>(a[i])), db = std::isdigit(static_cast<unsigned char>(b[j]));
+    if (da && db) {
+      std::size_t i0 = i, j0 = j;
+      while (i < a.size() && a[i] == '0') ++i;
+      while (j < b.size() && b[j] == '0') ++j;
+      std::size_t i1 = i, j1 = j;
+      while (i1 < a.size() && std::isdigit(static_cast<unsigned char>(a[i1]))) ++i1;
+      while (j1 < b.size() && std::isdigit(static_cast<unsigned char>(b[j1]))) ++j1;
+      if (i1 - i != j1 - j) return i1 - i < j1 - j;   // fewer digits: smaller
+      if (int c = a.compare(i, i1 - i, b, j, j1 - j); c != 0) return c < 0;
+      if (i1 - i0 != j1 - j0) return i1 - i0 < j1 - j0;   // "2" before "02"
+      i = i1, j = j1;
+      continue;
+    }
+    const char ca = static_cast<char>(std::tolower(static_cast<unsigned char>(a[i])));
+    const char cb = static_cast<char>(std::tolower(static_cast<unsigned char>(b[j])));
+    if (ca != cb) return ca < cb;
+    ++i, ++j;
+  }
+  if (a.size() - i != b.size() - j) return a.size() - i < b.size() - j;
+  return a < b;   // equal but for case: a fixed order
+}
+
+std::vector<SceneReference> findReferences(const std::string& folder) {
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw IoError("the references '" + abbreviated(folder) + "' are not a folder (vkrt grade REFS/ SUBMISSIONS/)");
+  std::vector<SceneReference> refs;
+  std::map<std::string, std::string> byKey;
+  for (const fs::directory_entry& e : entriesOf(folder)) {
+    if (!isImageFile(e)) continue;
+    SceneReference r{sceneOfFileName(e.path().string()), e.path().string()};
+    if (auto [at, added] = byKey.emplace(sceneKey(r.scene), r.path); !added)
+      throw UsageError("two reference images for the scene " + r.scene + ": " + abbreviated(at->second) + " and " +
+                       abbreviated(r.path) + " (keep one)");
+    refs.push_back(r);
+  }
+  if (refs.empty())
+    throw UsageError("no reference image in '" + abbreviated(folder) + "' (images named for their scenes: scene5" +
+                     defaultImageExtension() + ", ...)");
+  return refs;
+}
+
+std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
+                                        const std::vector<SceneReference>& references) {
+  std::set<std::string> keys;
+  for (const SceneReference& r : references) keys.insert(sceneKey(r.scene));
+  std::vector<Submission> found;
+  for (const std::string& folder : folders) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec))
+      throw IoError("the submissions '" + abbreviated(folder) + "' are not a folder (a folder per student, or a "
+                    "folder of images)");
+    const std::vector<fs::directory_entry> entries = entriesOf(folder);
+    std::vector<std::string> own;
+    for (const fs::directory_entry& e : entries)
+      if (isImageFile(e)) own.push_back(e.path().string());
+    std::vector<Submission> here;
+    if (!own.empty()) here.push_back(matched(baseName(folder), folder, own, keys));
+    for (const fs::directory_entry& e : entries) {
+      if (!isFolder(e)) continue;
+      std::vector<std::string> images;
+      collectImages(e.path().string(), kSubmissionDepth - 1, images);
+      if (!images.empty()) here.push_back(matched(e.path().filename().string(), e.path().string(), images, keys));
+    }
+    for (Submission& s : here) {
+      bool taken = std::any_of(found.begin(), found.end(), [&](const Submission& f) { return f.name == s.name; });
+      if (taken) s.name = baseName(folder) + "/" + s.name;
+      found.push_back(std::move(s));
+    }
+  }
+  if (found.empty())
+    throw UsageError("no submitted image found in " + std::string(folders.size() == 1 ? "'" + abbreviated(folders[0]) + "'" : "the folders given") +
+                     " (a folder per student holding images named for their scenes, or a folder of images)");
+  return found;
+}
+
+}  // namespace vkrt

@@ -1,0 +1,55 @@
+// What `vkrt grade` compares: the reference images of a folder, each named for its scene,
+// and the submissions (a folder per student, or one folder of images), matched to the
+// references by name. Reads folders only; no image is decoded here.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vkrt {
+
+// A reference image and the scene it is for: its file name without the extension, and
+// without a leading "ref_" or "ref-" (the course graders' "ref_scene5.png" is scene5).
+struct SceneReference {
+  std::string scene;   // as the file spells it
+  std::string path;
+};
+
+// The scene a file name is for: the name without its folder, its extension and a leading
+// "ref_" or "ref-".
+std::string sceneOfFileName(const std::string& path);
+
+// The key names are matched by: the scene in lower case ("Scene5.PNG" is scene5).
+std::string sceneKey(const std::string& scene);
+
+// Whether vkrt reads `path` as an image, by its name: an extension of image/image_file.h's
+// table, .jpg or .jpeg (any case).
+bool hasReadableImageName(const std::string& path);
+
+// The images directly in `folder`, in the order people count them (scene2 before scene10).
+// Throws IoError when `folder` is not a folder that can be listed, UsageError when it holds
+// no image or two images for one scene.
+std::vector<SceneReference> findReferences(const std::string& folder);
+
+// One student's images (or one render's, for scene files), by scene key.
+struct Submission {
+  std::string name;                             // the student's folder name
+  std::string folder;                           // as found, for the report
+  std::map<std::string, std::string> images;    // sceneKey -> image path
+  std::vector<std::string> notes;               // images left out, and why
+};
+
+// The submissions in each of `folders`: each sub-folder holding images (looked for down to
+// four levels, hidden entries skipped) is one student's; images directly in a folder are
+// that folder's own submission. Images that match no reference are noted, as are second
+// images for one scene (the first in path order is graded). Names that repeat across
+// folders get the folder's name in front. Throws IoError for a folder that cannot be listed,
+// UsageError when no submission is found.
+std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
+                                        const std::vector<SceneReference>& references);
+
+// a < b in the order people count: runs of digits compared as numbers ("scene2" < "scene10").
+bool naturalLess(const std::string& a, const std::string& b);
+
+}  // namespace vkrt

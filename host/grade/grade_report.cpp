@@ -1,0 +1,446 @@
+// The grading report's pages, style, script and summaries.
+#include "grade/grade_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdint>
+#include <string>
+
+#include "cli/image_check.h"   // jsonQuoted
+#include "counted.h"
+#include "image/atomic_file.h"
+
+namespace vkrt {
+
+namespace {
+
+// The page's look: light or dark as the reader's system is; pass, fail and missing told
+// apart by colour and by word.
+constexpr const char* kStyle = R"CSS(:root { color-scheme: light dark; --pass: #1a7f37; --fail: #cf222e; --missing: #9a6700; }
+body { font: 14px/1.45 system-ui, sans-serif; margin: 1.5em; }
+h1 { font-size: 1.5em; margin: 0 0 .3em; }
+h2 { font-size: 1.15em; margin: 1.4em 0 .4em; }
+nav { margin-bottom: 1em; }
+table { border-collapse: collapse; }
+th, td { border: 1px solid #8886; padding: 4px 6px; text-align: left; vertical-align: top; }
+thead th { position: sticky; top: 0; background: Canvas; }
+th.sortable { cursor: pointer; }
+th.sorted-up::after { content: " \25B2"; } th.sorted-down::after { content: " \25BC"; }
+td.pass { background: #1a7f3726; } td.fail { background: #cf222e26; }
+td.missing, td.unreadable { background: #9a670026; }
+.pass .word { color: var(--pass); } .fail .word { color: var(--fail); }
+.missing .word, .unreadable .word { color: var(--missing); }
+.word { font-weight: 600; text-transform: uppercase; font-size: .85em; }
+td a { color: inherit; text-decoration: none; display: block; }
+td img.thumb { display: block; width: 96px; max-width: none; height: auto; margin-bottom: 2px; }
+.num { font-variant-numeric: tabular-nums; }
+.key { font-weight: normal; font-size: .85em; opacity: .8; }
+.images { display: flex; flex-wrap: wrap; gap: 16px; align-items: flex-start; }
+.images figure { flex: 1 1 300px; max-width: 640px; }
+.images .frame { display: block; }
+.images .frame img { width: auto; max-width: 100%; height: auto; }
+figure { margin: 0; }
+figcaption { margin-top: 4px; }
+.frame { position: relative; display: inline-block; line-height: 0; max-width: 100%; }
+.frame img { max-width: 100%; height: auto; }
+.region { position: absolute; border: 2px solid #ff00ff; outline: 1px solid #000a; box-sizing: border-box; }
+.compare .top { position: absolute; left: 0; top: 0; width: 100%; height: 100%; clip-path: inset(0 0 0 50%); }
+.compare input { width: 100%; max-width: 640px; display: block; }
+.failures li { color: var(--fail); }
+.notes li { color: var(--missing); }
+)CSS";
+
+// What the pages do with JavaScript (without it they read the same): the overview's columns
+// sort on a click or Enter (numbers as numbers; the address keeps the order, #sort=COLUMN or
+// #sort=COLUMN-down, so that a sorted view can be kept or sent), and a comparison page shows
+// the reference and the submission in one frame, split where the slider is ('t' flips).
+constexpr const char* kScript = R"JS('use strict';
+document.querySelectorAll('table.sortable').forEach(function (table) {
+  var heads = table.tHead.rows[0].cells;
+  function sort(column, up) {
+    Array.prototype.forEach.call(heads, function (h) { h.classList.remove('sorted-up', 'sorted-down'); });
+    heads[column].classList.add(up ? 'sorted-up' : 'sorted-down');
+    var body = table.tBodies[0];
+    var rows = Array.prototype.slice.call(body.rows);
+    function key(row) {
+      var cell = row.cells[column];
+      var v = cell.getAttribute('data-sort');
+      return v === null ? cell.textContent.trim().toLowerCase() : parseFloat(v);
+    }
+    rows.sort(function (a, b) {
+      var ka = key(a), kb = key(b);
+      var c = typeof ka === 'number' ? ka - kb : (ka < kb ? -1 : ka > kb ? 1 : 0);
+      return up ? c : -c;
+    });
+    rows.forEach(function (row) { body.appendChild(row); });
+  }
+  Array.prototype.forEach.call(heads, function (th, column) {
+    th.classList.add('sortable');
+    th.tabIndex = 0;
+    th.title = 'sort by this column';
+    function click() {
+      var up = !th.classList.contains('sorted-up');
+      sort(column, up);
+      history.replaceState(null, '', '#sort=' + column + (up ? '' : '-down'));
+    }
+    th.addEventListener('click', click);
+    th.addEventListener('keydown', function (e) { if (e.key === 'Enter') click(); });
+  });
+  var asked = /^#sort=(\d+)(-down)?$/.exec(location.hash);
+  if (asked && +asked[1] < heads.length) sort(+asked[1], !asked[2]);
+});
+document.querySelectorAll('.compare').forEach(function (section) {
+  var range = section.querySelector('input');
+  var top = section.querySelector('.top');
+  function show() { top.style.clipPath = 'inset(0 0 0 ' + range.value + '%)'; }
+  range.addEventListener('input', show);
+  document.addEventListener('keydown', function (e) {
+    if (e.key === 't') { range.value = range.value > 50 ? 0 : 100; show(); }
+  });
+  section.hidden = false;
+  show();
+});
+)JS";
+
+std::string escaped(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// `v` as `fmt` says; -0 (a mean of zeros, negated) as 0.
+std::string format(const char* fmt, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, v == 0 ? 0.0 : v);
+  return buf;
+}
+
+// A number for JSON: finite ones as they are, infinity (the PSNR of identical images) as null.
+std::string jsonNumber(double v) { return std::isfinite(v) ? format("%.6g", v) : "null"; }
+
+std::string pageName(std::size_t submission, std::size_t scene) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "pages/s%04zu-c%03zu.html", submission + 1, scene + 1);
+  return buf;
+}
+
+std::string submissionFolder(std::size_t submission) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "images/s%04zu", submission + 1);
+  return buf;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  writeFileAtomic(path, ".tmp", [&](int fd) {
+    writeAll(fd, reinterpret_cast<const std::uint8_t*>(text.data()), text.size(), path);
+  });
+}
+
+std::string head(const std::string& title, const std::string& up) {
+  return "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+         "<link rel=\"icon\" href=\"data:,\">\n<title>" + escaped(title) + "</title>\n"
+         "<link rel=\"stylesheet\" href=\"" + up + "grade.css\">\n</head>\n<body>\n";
+}
+
+std::string foot(const std::string& up) { return "<script src=\"" + up + "grade.js\"></script>\n</body>\n</html>\n"; }
+
+// "37 (0.012%)" or "size differs", or the outcome for one without figures.
+std::string cellFigure(const ReportEntry& e) {
+  if (e.grade.outcome == GradeOutcome::Missing || e.grade.outcome == GradeOutcome::Unreadable) return "";
+  return e.grade.key.text;
+}
+
+// The overview's sort value of a cell: its key figure, failures after passes, missing last.
+double sortValue(const ReportEntry& e) {
+  switch (e.grade.outcome) {
+    case GradeOutcome::Pass: return std::isfinite(e.grade.key.value) ? e.grade.key.value : 1e300;
+    case GradeOutcome::Fail: return 1e15 + (std::isfinite(e.grade.key.value) ? e.grade.key.value : 1e14);
+    case GradeOutcome::Unreadable: return 2e15;
+    case GradeOutcome::Missing: return 3e15;
+  }
+  return 0;
+}
+
+// The boxes around failing pixels over an image of `width` x `height`, in shares of it, so
+// that they stay in place however large the image is shown.
+std::string regionBoxes(const Grade& g, int width, int height) {
+  std::string s;
+  for (const PixelRect& r : g.regions)
+    s += "<span class=\"region\" style=\"left:" + format("%.3f", 100.0 * r.x0 / width) + "%;top:" +
+         format("%.3f", 100.0 * r.y0 / height) + "%;width:" + format("%.3f", 100.0 * r.width() / width) +
+         "%;height:" + format("%.3f", 100.0 * r.height() / height) + "%\" title=\"" + std::to_string(r.width()) +
+         "x" + std::to_string(r.height()) + " at " + std::to_string(r.x0) + "," + std::to_string(r.y0) + "\"></span>";
+  return s;
+}
+
+std::string indexPage(const GradeReport& r) {
+  const OutcomeCounts n = countOutcomes(r);
+  const std::size_t total = n.pass + n.fail + n.missing + n.unreadable;
+  std::string s = head("Grading: " + counted(r.submissions.size(), "submission", "submissions") + ", " +
+                           counted(r.scenes.size(), "scene", "scenes"), "");
+  s += "<h1>Grading report</h1>\n<p>" + counted(r.submissions.size(), "submission", "submissions") + " against " +
+       counted(r.scenes.size(), "reference", "references") + " in <code>" + escaped(r.references) + "</code>: <strong>" +
+       std::to_string(n.pass) + " of " + std::to_string(total) + " pass</strong>, " + std::to_string(n.fail) +
+       " fail, " + std::to_string(n.missing) + " missing" +
+       (n.unreadable ? ", " + std::to_string(n.unreadable) + " unreadable" : "") + ". Graded by vkrt " +
+       VKRT_VERSION + format(" in %.1f s.", r.seconds) +
+       " Click a column's heading to sort by it; a cell opens its comparison. The figures for scripts: "
+       "<a href=\"summary.json\">summary.json</a>, <a href=\"summary.csv\">summary.csv</a>.</p>\n";
+  s += "<table class=\"sortable\" id=\"overview\">\n<thead><tr><th>submission</th><th>passed</th>";
+  for (const ReportScene& sc : r.scenes)
+    s += "<th>" + escaped(sc.name) + "<br><span class=\"key\">" + escaped(sc.keyLabel) + "</span></th>";
+  s += "</tr></thead>\n<tbody>\n";
+  std::vector<std::size_t> passedPerScene(r.scenes.size(), 0);
+  for (std::size_t i = 0; i < r.submissions.size(); ++i) {
+    const ReportSubmission& sub = r.submissions[i];
+    std::size_t passed = 0;
+    for (std::size_t c = 0; c < sub.entries.size(); ++c)
+      if (sub.entries[c].grade.outcome == GradeOutcome::Pass) ++passed, ++passedPerScene[c];
+    s += "<tr><th scope=\"row\">" + escaped(sub.name) + "</th><td class=\"num\" data-sort=\"" + std::to_string(passed) +
+         "\">" + std::to_string(passed) + "/" + std::to_string(sub.entries.size()) + "</td>";
+    for (std::size_t c = 0; c < sub.entries.size(); ++c) {
+      const ReportEntry& e = sub.entries[c];
+      const char* outcome = outcomeName(e.grade.outcome);
+      s += "<td class=\"" + std::string(outcome) + "\" data-sort=\"" + format("%.17g", sortValue(e)) + "\">";
+      std::string inner;
+      if (e.hasImage)
+        inner += "<img class=\"thumb\" loading=\"lazy\" src=\"" + entryImagePath(i, c, ReportImage::Thumbnail) +
+                 "\" alt=\"\">";
+      inner += "<span class=\"word\">" + std::string(outcome) + "</span> <span class=\"num\">" +
+               escaped(cellFigure(e)) + "</span>";
+      if (e.grade.outcome == GradeOutcome::Missing)
+        s += inner;
+      else
+        s += "<a href=\"" + pageName(i, c) + "\">" + inner + "</a>";
+      s += "</td>";
+    }
+    s += "</tr>\n";
+  }
+  s += "</tbody>\n<tfoot><tr><th>passed</th><td></td>";
+  for (std::size_t c = 0; c < r.scenes.size(); ++c)
+    s += "<td class=\"num\">" + std::to_string(passedPerScene[c]) + "/" + std::to_string(r.submissions.size()) + "</td>";
+  s += "</tr></tfoot>\n</table>\n";
+  s += "<h2>Scenes</h2>\n<table>\n<thead><tr><th>scene</th><th>reference</th><th>size</th><th>passes when</th></tr></thead>\n<tbody>\n";
+  for (std::size_t c = 0; c < r.scenes.size(); ++c) {
+    const ReportScene& sc = r.scenes[c];
+    s += "<tr><td>" + escaped(sc.name) + "</td><td><a href=\"" + referenceImagePath(c) + "\">" + escaped(sc.reference) +
+         "</a></td><td class=\"num\">" + std::to_string(sc.width) + "x" + std::to_string(sc.height) + "</td><td><code>" +
+         escaped(sc.thresholds) + "</code></td></tr>\n";
+  }
+  s += "</tbody>\n</table>\n";
+  std::string notes;
+  for (const ReportSubmission& sub : r.submissions)
+    for (const std::string& note : sub.notes) notes += "<li>" + escaped(sub.name) + ": " + escaped(note) + "</li>\n";
+  if (!notes.empty()) s += "<h2>Notes</h2>\n<ul class=\"notes\">\n" + notes + "</ul>\n";
+  return s + foot("");
+}
+
+std::string figureRow(const std::string& name, const std::string& value) {
+  return "<tr><th scope=\"row\">" + name + "</th><td class=\"num\">" + value + "</td></tr>\n";
+}
+
+std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
+  const ReportSubmission& sub = r.submissions[i];
+  const ReportScene& sc = r.scenes[c];
+  const ReportEntry& e = sub.entries[c];
+  const Grade& g = e.grade;
+  const std::string outcome = outcomeName(g.outcome);
+  std::string s = head(sub.name + ": " + sc.name + " (" + outcome + ")", "../");
+  // Links: the overview, the same scene of the neighbouring submissions, the neighbouring
+  // scenes of this submission (those with a page).
+  auto link = [&](std::size_t si, std::size_t ci, const std::string& text) {
+    if (si >= r.submissions.size() || ci >= r.scenes.size() ||
+        r.submissions[si].entries[ci].grade.outcome == GradeOutcome::Missing)
+      return std::string();
+    return " &middot; <a href=\"../" + pageName(si, ci) + "\">" + text + "</a>";
+  };
+  s += "<nav><a href=\"../index.html\">overview</a>" + link(i - 1, c, "previous submission") +
+       link(i + 1, c, "next submission") + link(i, c - 1, "previous scene") + link(i, c + 1, "next scene") + "</nav>\n";
+  s += "<h1>" + escaped(sub.name) + ": " + escaped(sc.name) + " <span class=\"" + outcome + "\"><span class=\"word\">" +
+       outcome + "</span></span></h1>\n";
+  s += "<p>" + escaped(e.source) + " against the reference " + escaped(sc.reference) + "; passes when: <code>" +
+       escaped(sc.thresholds) + "</code>.</p>\n";
+  if (!g.failures.empty()) {
+    s += "<ul class=\"failures\">\n";
+    for (const std::string& f : g.failures) s += "<li>" + escaped(f) + "</li>\n";
+    s += "</ul>\n";
+  }
+  if (e.hasImage) {
+    const std::string ref = "../" + referenceImagePath(c), img = "../" + entryImagePath(i, c, ReportImage::Submission);
+    const bool sameSize = g.width == sc.width && g.height == sc.height;
+    const std::string boxes = sameSize ? regionBoxes(g, sc.width, sc.height) : "";
+    if (!g.regions.empty())
+      s += "<p>Boxed in magenta: the " + counted(g.regions.size(), "region", "regions") + " of failing pixels" +
+           (g.moreRegions ? " with the most of them (" + std::to_string(g.moreRegions) + " smaller ones not boxed)" : "") +
+           ".</p>\n";
+    s += "<div class=\"images\">\n";
+    s += "<figure><div class=\"frame\"><img src=\"" + ref + "\" width=\"" + std::to_string(sc.width) + "\" height=\"" +
+         std::to_string(sc.height) + "\" alt=\"the reference image\">" + boxes + "</div><figcaption>reference</figcaption></figure>\n";
+    s += "<figure><div class=\"frame\"><img src=\"" + img + "\" width=\"" + std::to_string(g.width) + "\" height=\"" +
+         std::to_string(g.height) + "\" alt=\"the submitted image\">" + boxes + "</div><figcaption>submission</figcaption></figure>\n";
+    if (e.hasDiff)
+      s += "<figure><div class=\"frame\"><img src=\"../" + entryImagePath(i, c, ReportImage::Difference) +
+           "\" alt=\"the difference: black where equal, blue to red as it grows\"></div><figcaption>difference: black "
+           "where equal, blue to red as it grows (legend below it)</figcaption></figure>\n";
+    s += "</div>\n";
+    if (sameSize)
+      s += "<section class=\"compare\" hidden>\n<h2>Reference and submission in one frame</h2>\n<div class=\"frame\"><img src=\"" +
+           ref + "\" width=\"" + std::to_string(sc.width) + "\" height=\"" + std::to_string(sc.height) +
+           "\" alt=\"the reference image\"><img class=\"top\" src=\"" + img + "\" alt=\"the submitted image\">" + boxes +
+           "</div>\n<input type=\"range\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"where the submission starts\">\n"
+           "<p>Left of the split: the reference; right of it: the submission. Drag the slider, or press t to flip "
+           "between the two.</p>\n</section>\n";
+  }
+  if (g.outcome != GradeOutcome::Unreadable && g.width == sc.width && g.height == sc.height) {
+    s += "<h2>Figures</h2>\n<table>\n";
+    s += figureRow("largest channel difference", std::to_string(g.maxDiff) + "/255");
+    s += figureRow("RMSE", format("%.4f/255", g.rmse));
+    s += figureRow("PSNR", std::isfinite(g.psnr) ? format("%.2f dB", g.psnr) : "infinite (identical)");
+    const double pixels = static_cast<double>(g.width) * g.height;
+    auto share = [&](long long n) { return std::to_string(n) + format(" (%.4g%%)", 100.0 * static_cast<double>(n) / pixels); };
+    s += figureRow("pixels that differ", share(g.differing));
+    s += figureRow("pixels over 1/255", share(g.over1));
+    s += figureRow("pixels over 2/255", share(g.over2));
+    s += figureRow("bias, mean(reference &minus; image)", format("%.4f", g.stats.bias));
+    s += figureRow("variance of (image &minus; reference)", format("%.4f", g.stats.variance));
+    s += "</table>\n";
+  }
+  return s + foot("../");
+}
+
+std::string summaryJson(const GradeReport& r) {
+  const OutcomeCounts n = countOutcomes(r);
+  std::string s = kSummaryJsonStart + jsonQuoted(VKRT_VERSION) + ",\n\"references\": " + jsonQuoted(r.references) +
+                  ",\n\"counts\": {\"pass\": " + std::to_string(n.pass) + ", \"fail\": " + std::to_string(n.fail) +
+                  ", \"missing\": " + std::to_string(n.missing) + ", \"unreadable\": " + std::to_string(n.unreadable) +
+                  "},\n\"scenes\": [";
+  for (std::size_t c = 0; c < r.scenes.size(); ++c) {
+    const ReportScene& sc = r.scenes[c];
+    s += std::string(c ? "," : "") + "\n  {\"name\": " + jsonQuoted(sc.name) + ", \"reference\": " + jsonQuoted(sc.reference) +
+         ", \"width\": " + std::to_string(sc.width) + ", \"height\": " + std::to_string(sc.height) +
+         ", \"thresholds\": " + jsonQuoted(sc.thresholds) + ", \"key_figure\": " + jsonQuoted(sc.keyLabel) + "}";
+  }
+  s += "\n],\n\"submissions\": [";
+  for (std::size_t i = 0; i < r.submissions.size(); ++i) {
+    const ReportSubmission& sub = r.submissions[i];
+    s += std::string(i ? "," : "") + "\n  {\"name\": " + jsonQuoted(sub.name) + ", \"folder\": " + jsonQuoted(sub.folder) +
+         ", \"notes\": [";
+    for (std::size_t k = 0; k < sub.notes.size(); ++k) s += (k ? ", " : "") + jsonQuoted(sub.notes[k]);
+    s += "],\n   \"results\": [";
+    for (std::size_t c = 0; c < sub.entries.size(); ++c) {
+      const ReportEntry& e = sub.entries[c];
+      const Grade& g = e.grade;
+      s += std::string(c ? "," : "") + "\n    {\"scene\": " + jsonQuoted(r.scenes[c].name) + ", \"status\": \"" +
+           outcomeName(g.outcome) + "\", \"image\": " + jsonQuoted(e.source);
+      if (g.outcome != GradeOutcome::Missing) s += ", \"page\": " + jsonQuoted(pageName(i, c));
+      if (g.outcome == GradeOutcome::Pass || g.outcome == GradeOutcome::Fail) {
+        s += ", \"width\": " + std::to_string(g.width) + ", \"height\": " + std::to_string(g.height);
+        s += ", \"key_figure\": " + jsonNumber(g.key.value);
+        s += ", \"max_channel_diff\": " + std::to_string(g.maxDiff) + ", \"rmse\": " + jsonNumber(g.rmse) +
+             ", \"psnr_db\": " + jsonNumber(g.psnr) + ", \"pixels_differing\": " + std::to_string(g.differing) +
+             ", \"pixels_over_1\": " + std::to_string(g.over1) + ", \"pixels_over_2\": " + std::to_string(g.over2) +
+             ", \"bias\": " + jsonNumber(g.stats.bias) + ", \"variance\": " + jsonNumber(g.stats.variance);
+      }
+      s += ", \"failures\": [";
+      for (std::size_t k = 0; k < g.failures.size(); ++k) s += (k ? ", " : "") + jsonQuoted(g.failures[k]);
+      s += "]}";
+    }
+    s += "]}";
+  }
+  return s + "\n]\n}\n";
+}
+
+// A CSV field: quoted when it holds a comma, a quote or a line break (RFC 4180).
+std::string csvField(const std::string& v) {
+  if (v.find_first_of(",\"\n\r") == std::string::npos) return v;
+  std::string q = "\"";
+  for (char c : v) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string summaryCsv(const GradeReport& r) {
+  std::string s = "submission,scene,status,key_figure,max_channel_diff,rmse,psnr_db,pixels_differing,pixels_over_1,"
+                  "pixels_over_2,bias,variance,image,failures\n";
+  for (const ReportSubmission& sub : r.submissions)
+    for (std::size_t c = 0; c < sub.entries.size(); ++c) {
+      const Grade& g = sub.entries[c].grade;
+      const bool figures = g.outcome == GradeOutcome::Pass || (g.outcome == GradeOutcome::Fail && g.key.text != "size differs");
+      std::string failures;
+      for (const std::string& f : g.failures) failures += (failures.empty() ? "" : "; ") + f;
+      s += csvField(sub.name) + "," + csvField(r.scenes[c].name) + "," + outcomeName(g.outcome) + ",";
+      if (figures)
+        s += format("%.6g", g.key.value) + "," + std::to_string(g.maxDiff) + "," + format("%.6g", g.rmse) + "," +
+             (std::isfinite(g.psnr) ? format("%.6g", g.psnr) : "inf") + "," + std::to_string(g.differing) + "," +
+             std::to_string(g.over1) + "," + std::to_string(g.over2) + "," + format("%.6g", g.stats.bias) + "," +
+             format("%.6g", g.stats.variance) + ",";
+      else
+        s += ",,,,,,,,,";
+      s += csvField(sub.entries[c].source) + "," + csvField(failures) + "\n";
+    }
+  return s;
+}
+
+}  // namespace
+
+std::string referenceImagePath(std::size_t scene) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "images/ref/c%03zu.png", scene + 1);
+  return buf;
+}
+
+std::string entryImagePath(std::size_t submission, std::size_t scene, ReportImage which) {
+  const char* suffix = which == ReportImage::Submission ? "" : which == ReportImage::Thumbnail ? "-thumb" : "-diff";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "/c%03zu%s.png", scene + 1, suffix);
+  return submissionFolder(submission) + buf;
+}
+
+std::vector<std::string> reportImageFolders(std::size_t submissions) {
+  std::vector<std::string> folders{"images", "images/ref", "pages"};
+  for (std::size_t i = 0; i < submissions; ++i) folders.push_back(submissionFolder(i));
+  return folders;
+}
+
+bool isReportEntry(const std::string& name) {
+  for (const char* entry : {"index.html", "grade.css", "grade.js", "summary.json", "summary.csv", "images", "pages"})
+    if (name == entry) return true;
+  return false;
+}
+
+OutcomeCounts countOutcomes(const GradeReport& report) {
+  OutcomeCounts n;
+  for (const ReportSubmission& sub : report.submissions)
+    for (const ReportEntry& e : sub.entries) {
+      switch (e.grade.outcome) {
+        case GradeOutcome::Pass: ++n.pass; break;
+        case GradeOutcome::Fail: ++n.fail; break;
+        case GradeOutcome::Missing: ++n.missing; break;
+        case GradeOutcome::Unreadable: ++n.unreadable; break;
+      }
+    }
+  return n;
+}
+
+void writeReportPages(const GradeReport& report, const std::string& folder) {
+  writeText(folder + "/grade.css", kStyle);
+  writeText(folder + "/grade.js", kScript);
+  for (std::size_t i = 0; i < report.submissions.size(); ++i)
+    for (std::size_t c = 0; c < report.scenes.size(); ++c)
+      if (report.submissions[i].entries[c].grade.outcome != GradeOutcome::Missing)
+        writeText(folder + "/" + pageName(i, c), entryPage(report, i, c));
+  writeText(folder + "/summary.json", summaryJson(report));
+  writeText(folder + "/summary.csv", summaryCsv(report));
+  writeText(folder + "/index.html", indexPage(report));   // last: a folder with it is whole
+}
+
+}  // namespace vkrt

@@ -1,0 +1,70 @@
+// The grading report as files: a self-contained folder that a browser opens with no network
+// (index.html: the overview table; pages/: one page per comparison; grade.css and grade.js;
+// images/), and the same figures for scripts (summary.json, summary.csv). The images are
+// written by the caller at the paths this file names; everything else here.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "grade/grade_compare.h"
+
+namespace vkrt {
+
+struct ReportScene {
+  std::string name;           // as the reference's file spells it
+  std::string reference;      // the reference's path, as found
+  std::string thresholds;     // GradeThresholds::text()
+  std::string keyLabel;       // keyFigureLabel()
+  int width = 0, height = 0;  // the reference's size
+};
+
+struct ReportEntry {
+  Grade grade;
+  std::string source;   // the submitted image's path, or the scene file rendered; empty when missing
+  bool hasImage = false;   // the submission's image (and its thumbnail) written
+  bool hasDiff = false;    // the difference image written
+};
+
+struct ReportSubmission {
+  std::string name, folder;
+  std::vector<std::string> notes;
+  std::vector<ReportEntry> entries;   // one per scene, in the scenes' order
+};
+
+struct GradeReport {
+  std::string references;   // the folder given
+  std::vector<ReportScene> scenes;
+  std::vector<ReportSubmission> submissions;
+  double seconds = 0;       // how long the grading took
+};
+
+// Where a comparison's images go inside the report folder (relative paths):
+// the reference once per scene, and per comparison the submission, its thumbnail and the
+// difference image (image/compare.h's heatmap, with its legend).
+enum class ReportImage { Submission, Thumbnail, Difference };
+std::string referenceImagePath(std::size_t scene);
+std::string entryImagePath(std::size_t submission, std::size_t scene, ReportImage which);
+// The folders those paths lie in, to make before writing them.
+std::vector<std::string> reportImageFolders(std::size_t submissions);
+
+// The largest size of a thumbnail (the overview's cells).
+inline constexpr int kThumbnailWidth = 96, kThumbnailHeight = 72;
+
+// Writes index.html, pages/*.html, grade.css, grade.js, summary.json and summary.csv into
+// `folder` (which exists). Throws IoError.
+void writeReportPages(const GradeReport& report, const std::string& folder);
+
+// Whether `name` is one of the entries a report folder holds (index.html, pages, images, ...),
+// and how its summary.json starts: what tells a report this command wrote.
+bool isReportEntry(const std::string& name);
+inline constexpr const char* kSummaryJsonStart = "{\n\"vkrt\": ";
+
+// Counts of the report's comparisons by outcome.
+struct OutcomeCounts {
+  std::size_t pass = 0, fail = 0, missing = 0, unreadable = 0;
+};
+OutcomeCounts countOutcomes(const GradeReport& report);
+
+}  // namespace vkrt

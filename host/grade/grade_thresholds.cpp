@@ -1,0 +1,121 @@
+// Thresholds of `vkrt grade`, from the command line and from a thresholds file.
+#include "grade/grade_thresholds.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "errors.h"
+#include "grade/grade_inputs.h"
+#include "scene/diagnostic.h"   // echoed, abbreviated
+
+namespace vkrt {
+
+namespace {
+
+double nonNegative(const std::string& name, const std::string& v) {
+  double f = 0;
+  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
+  if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || f < 0)
+    throw UsageError(name + " expects a number of 0 or more (8-bit units), got '" + echoed(v) + "'");
+  return f;
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::string GradeThresholds::text() const {
+  if (!any()) return "any difference fails";
+  std::string s;
+  auto add = [&](const std::string& part) { s += (s.empty() ? "" : " ") + part; };
+  for (const PixelThreshold& p : pixels.pixelsOver) add("--max-pixels-over " + p.text);
+  if (pixels.maxDiff >= 0) add("--max-diff " + std::to_string(pixels.maxDiff));
+  if (maxBias) add("--max-bias " + number(*maxBias));
+  if (maxVariance) add("--max-variance " + number(*maxVariance));
+  return s;
+}
+
+const GradeThresholds& ThresholdTable::forScene(const std::string& key) const {
+  auto at = byScene.find(key);
+  return at == byScene.end() ? all : at->second;
+}
+
+bool applyThresholdOption(const std::string& name, const std::string& value, GradeThresholds& t) {
+  if (name == "--max-pixels-over") {
+    t.pixels.pixelsOver.push_back(parsePixelThreshold(value));
+  } else if (name == "--max-diff") {
+    int n = 0;
+    auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), n);
+    if (ec != std::errc() || end != value.data() + value.size() || n < 0 || n > 255)
+      throw UsageError("--max-diff expects an integer from 0 to 255, got '" + echoed(value) + "'");
+    t.pixels.maxDiff = n;
+  } else if (name == "--max-bias") {
+    t.maxBias = nonNegative(name, value);
+  } else if (name == "--max-variance") {
+    t.maxVariance = nonNegative(name, value);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds& commandLine,
+                                 const std::vector<std::string>& knownKeys) {
+  std::ifstream in(path);
+  if (!in) throw IoError("cannot read the thresholds file '" + abbreviated(path) + "'");
+  ThresholdTable table;
+  table.all = commandLine;
+  int lineNumber = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++lineNumber;
+    auto fail = [&](const std::string& what) {
+      return UsageError(abbreviated(path) + ":" + std::to_string(lineNumber) + ": error: " + what);
+    };
+    if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+    std::istringstream words(line);
+    std::string scene;
+    if (!(words >> scene)) continue;
+    const std::string key = sceneKey(scene);
+    if (std::find(knownKeys.begin(), knownKeys.end(), key) == knownKeys.end())
+      throw fail("no reference image for the scene '" + echoed(scene) + "'");
+    if (table.byScene.count(key))
+      throw fail("the scene '" + echoed(scene) + "' was given on line " + std::to_string(table.lineOf[key]));
+    GradeThresholds t;
+    std::vector<std::string> rest;
+    for (std::string w; words >> w;) rest.push_back(w);
+    if (rest.empty()) throw fail("no threshold for " + echoed(scene) + " (e.g. --max-pixels-over 2:0.1%)");
+    for (std::size_t i = 0; i < rest.size(); ++i) {
+      std::string name = rest[i], value;
+      if (auto eq = name.find('='); eq != std::string::npos) {
+        value = name.substr(eq + 1);
+        name.resize(eq);
+      } else if (i + 1 < rest.size()) {
+        value = rest[++i];
+      } else {
+        throw fail("'" + echoed(name) + "' needs a value");
+      }
+      try {
+        if (!applyThresholdOption(name, value, t))
+          throw fail("unknown threshold '" + echoed(name) +
+                     "' (expected --max-pixels-over, --max-diff, --max-bias or --max-variance)");
+      } catch (const UsageError& e) {
+        if (std::string(e.what()).rfind(abbreviated(path) + ":", 0) == 0) throw;
+        throw fail(e.what());
+      }
+    }
+    table.byScene.emplace(key, t);
+    table.lineOf[key] = lineNumber;
+  }
+  if (in.bad()) throw IoError("cannot read the thresholds file '" + abbreviated(path) + "'");
+  return table;
+}
+
+}  // namespace vkrt

@@ -1,0 +1,48 @@
+// What decides pass or fail in `vkrt grade`: the comparison thresholds of `vkrt diff` (pixels
+// over a step, the largest difference) and the course grader's measures (bias and variance
+// of the difference, image/grader_stats.h), given once on the command line or per scene in a
+// file (doc/usage.md, "Grading").
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/image_check.h"
+
+namespace vkrt {
+
+struct GradeThresholds {
+  CheckThresholds pixels;              // --max-pixels-over, --max-diff
+  std::optional<double> maxBias;       // fails when |bias| exceeds it (8-bit units)
+  std::optional<double> maxVariance;   // fails when the variance exceeds it (8-bit units squared)
+  // None at all: any difference fails, as in `vkrt diff`.
+  bool any() const { return pixels.any() || maxBias || maxVariance; }
+  // The options that give these thresholds ("--max-pixels-over 2:0.1% --max-bias 1"), or
+  // "any difference fails".
+  std::string text() const;
+};
+
+// The thresholds of each scene: a scene's line in the file replaces the command line's.
+struct ThresholdTable {
+  GradeThresholds all;
+  std::map<std::string, GradeThresholds> byScene;   // by sceneKey (grade/grade_inputs.h)
+  std::map<std::string, int> lineOf;                // by sceneKey: the line that set it
+  const GradeThresholds& forScene(const std::string& key) const;
+};
+
+// Applies one threshold option to `t`: `name` ("--max-bias") and its value. Returns false
+// for a name that is not a threshold option; throws UsageError for a bad value.
+bool applyThresholdOption(const std::string& name, const std::string& value, GradeThresholds& t);
+
+// A thresholds file: one scene per line, its name then its options, '#' to the end of the
+// line a comment:
+//     scene7      --max-pixels-over 2:0.1%
+//     cornellNEE  --max-bias 0.5 --max-variance 250
+// Throws IoError when the file cannot be read, UsageError naming the file and line for a bad
+// line, a scene named twice, or a scene that has no reference (`knownKeys`).
+ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds& commandLine,
+                                 const std::vector<std::string>& knownKeys);
+
+}  // namespace vkrt
