@@ -28,6 +28,7 @@
 #include "image/encode.h"
 #include "image/image_file.h"
 #include "image/image_read.h"
+#include "image/png.h"   // isPngFile
 #include "image/thumbnail.h"
 #include "interrupt.h"
 #include "render/progress.h"
@@ -232,7 +233,11 @@ void gradeOne(const Job& job, const Image& reference, const GradeThresholds& t, 
   auto write = [&](const Image& img, ReportImage which) {
     writeImageAtomic(img, folder + "/" + entryImagePath(job.submission, job.scene, which));
   };
-  write(*image, ReportImage::Submission);
+  // A PNG as it was sent (a browser shows it as it is, and copying costs less than encoding);
+  // any other format as the PNG of its bytes.
+  const std::string copy = folder + "/" + entryImagePath(job.submission, job.scene, ReportImage::Submission);
+  std::error_code ec;
+  if (job.rendered || !isPngFile(job.path) || !fs::copy_file(job.path, copy, ec)) write(*image, ReportImage::Submission);
   write(thumbnail(*image, kThumbnailWidth, kThumbnailHeight), ReportImage::Thumbnail);
   entry.hasImage = true;
   if (diff.width > 0) {
@@ -348,6 +353,7 @@ int gradeCommand(const Options& o) {
   }, progress);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeReportPages(report, folder.path());
+  waitForSignalIfTesting("grade");
   throwIfInterrupted();
   swapIntoPlace(folder.path(), out);
   folder.release();

@@ -45,7 +45,8 @@ figcaption { margin-top: 4px; }
 .frame img { max-width: 100%; height: auto; }
 .region { position: absolute; border: 2px solid #ff00ff; outline: 1px solid #000a; box-sizing: border-box; }
 .compare .top { position: absolute; left: 0; top: 0; width: 100%; height: 100%; clip-path: inset(0 0 0 50%); }
-.compare input { width: 100%; max-width: 640px; display: block; }
+.compare .split { display: inline-block; max-width: 100%; }
+.compare input { width: 100%; display: block; margin: 6px 0 0; }
 .failures li { color: var(--fail); }
 .notes li { color: var(--missing); }
 )CSS";
@@ -294,10 +295,10 @@ std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
            "where equal, blue to red as it grows (legend below it)</figcaption></figure>\n";
     s += "</div>\n";
     if (sameSize)
-      s += "<section class=\"compare\" hidden>\n<h2>Reference and submission in one frame</h2>\n<div class=\"frame\"><img src=\"" +
+      s += "<section class=\"compare\" hidden>\n<h2>Reference and submission in one frame</h2>\n<div class=\"split\"><div class=\"frame\"><img src=\"" +
            ref + "\" width=\"" + std::to_string(sc.width) + "\" height=\"" + std::to_string(sc.height) +
            "\" alt=\"the reference image\"><img class=\"top\" src=\"" + img + "\" alt=\"the submitted image\">" + boxes +
-           "</div>\n<input type=\"range\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"where the submission starts\">\n"
+           "</div>\n<input type=\"range\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"where the submission starts\"></div>\n"
            "<p>Left of the split: the reference; right of it: the submission. Drag the slider, or press t to flip "
            "between the two.</p>\n</section>\n";
   }

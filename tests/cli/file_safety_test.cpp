@@ -356,6 +356,28 @@ TEST(FileSafety, ASignalDuringAnyWriteLeavesNoTemporaryFile) {
   }
 }
 
+// A signal when the grading report is whole but not yet in place: exit 130, the earlier
+// report as it was, the new one's folder removed.
+TEST(FileSafety, ASignalWhileGradingLeavesTheEarlierReport) {
+  std::string dir = freshDir("file-safety/grade");
+  fs::create_directories(dir + "/refs");
+  fs::create_directories(dir + "/class/ann");
+  writeBlackPng(dir + "/refs/s.png");
+  writeBlackPng(dir + "/class/ann/s.png");
+  const std::vector<std::string> grade{"grade", "-q", dir + "/refs", dir + "/class", "-o", dir + "/report"};
+  ASSERT_EQ(runVkrt("grade -q " + dir + "/refs " + dir + "/class -o " + dir + "/report").exitCode, 0);
+  const std::string before = readFile(dir + "/report/summary.json");
+  writeBlackPng(dir + "/class/ann/t.png");   // a note in the new report: it would differ
+  Spawned p = spawnVkrt(grade, dir + "/log", {"VKRT_TEST_WAIT_FOR_SIGNAL=grade"});
+  ASSERT_TRUE(waitingForSignal(p.logPath, "grade"));
+  EXPECT_EQ(leftovers(dir).size(), 1u) << "the new report's folder, while it is written";
+  ::kill(p.pid, SIGINT);
+  Finished r = waitVkrt(p);
+  EXPECT_EQ(r.exitCode, 130) << r.output;
+  EXPECT_EQ(readFile(dir + "/report/summary.json"), before);
+  EXPECT_TRUE(leftovers(dir).empty());
+}
+
 // Under nohup (SIGHUP ignored when vkrt starts) a hangup does not stop it.
 TEST(FileSafety, AnIgnoredHangupStaysIgnored) {
   std::string dir = freshDir("file-safety/nohup");
