@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -41,11 +42,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A folder, as one name per folder (links and '..' resolved), for telling folders apart.
+// A folder, as one name per folder (links and '..' resolved, no trailing '/'), for telling
+// folders apart.
 fs::path canonicalFolder(const std::string& path) {
+  fs::path p = fs::absolute(path).lexically_normal();
+  if (p.filename().empty() && p.has_parent_path() && p != p.root_path()) p = p.parent_path();   // "report/"
   std::error_code ec;
-  fs::path p = fs::weakly_canonical(fs::absolute(path), ec);
-  return ec ? fs::absolute(path).lexically_normal() : p;
+  fs::path c = fs::weakly_canonical(p, ec);
+  return ec ? p : c;
 }
 
 bool inside(const fs::path& inner, const fs::path& outer) {
@@ -53,15 +57,16 @@ bool inside(const fs::path& inner, const fs::path& outer) {
   return o == outer.end();
 }
 
-// Whether `folder` may be replaced by a new report: it is empty, or it holds a report this
-// command wrote (its summary.json says so) and nothing else (a file someone added is kept
-// by refusing).
+// Whether `folder` may take a new report: it is empty, or it holds a report this command
+// wrote (its summary.json says so) and nothing else, at any depth (a file someone added is
+// kept by refusing).
 bool replaceableReport(const fs::path& folder) {
   std::error_code ec;
-  bool empty = true;
-  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-    empty = false;
-    if (!isReportEntry(it->path().filename().string())) return false;
+  bool empty = true;   // but for temporary folders that a killed run left
+  for (fs::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string relative = it->path().lexically_relative(folder).generic_string();
+    if (!isReportPath(relative)) return false;
+    if (relative.rfind(kTemporaryPrefix, 0) != 0) empty = false;
   }
   if (ec) return false;
   if (empty) return true;
@@ -74,8 +79,8 @@ bool replaceableReport(const fs::path& folder) {
 }
 
 // Where the report goes: refused (UsageError) when it is, holds or lies in a folder the run
-// reads, or is something other than a folder this command may replace. Returns its path
-// with links resolved (a link to a folder is written through, and stays a link).
+// reads, or is something other than a folder this command may fill. Returns its path with
+// links resolved (a link to a folder is written through, and stays a link).
 fs::path checkReportFolder(const std::string& output, const std::vector<std::string>& inputs) {
   const fs::path out = canonicalFolder(output);
   for (const std::string& in : inputs) {
@@ -92,6 +97,7 @@ fs::path checkReportFolder(const std::string& output, const std::vector<std::str
     if (!replaceableReport(out))
       throw RefusedOutput("-o " + abbreviated(output) + " is a folder that holds other files than a vkrt report; "
                           "name a new folder (or an empty one, or an earlier report, which is replaced)");
+    return out;
   }
   const fs::path parent = out.parent_path();
   if (!fs::is_directory(parent, ec))
@@ -100,11 +106,11 @@ fs::path checkReportFolder(const std::string& output, const std::vector<std::str
   return out;
 }
 
-// A fresh folder beside `out`, for the report until it is whole.
-std::string temporaryFolderBeside(const fs::path& out) {
-  std::string pattern = (out.parent_path() / ".vkrt-grade-XXXXXX").string();
+// A fresh folder in `folder`, named .vkrt-grade-XXXXXX, readable as a new folder would be.
+std::string temporaryFolderIn(const fs::path& folder) {
+  std::string pattern = (folder / (std::string(kTemporaryPrefix) + "XXXXXX")).string();
   if (!::mkdtemp(pattern.data()))
-    throw IoError("cannot write the report beside '" + abbreviated(out.string()) + "': " + std::strerror(errno));
+    throw IoError("cannot write the report in '" + abbreviated(folder.string()) + "': " + std::strerror(errno));
   // mkdtemp makes it for this user alone; the report is for whoever may read a new folder.
   const mode_t mask = ::umask(0);
   ::umask(mask);
@@ -112,8 +118,35 @@ std::string temporaryFolderBeside(const fs::path& out) {
   return pattern;
 }
 
-// Puts the whole report at `out`: renamed into place, an earlier one moved aside first and
-// then removed. Throws IoError.
+// Where the report is written until it is whole: beside a new report folder, inside one that
+// exists (an empty folder, an earlier report; perhaps a mount point, which cannot be renamed).
+std::string temporaryFolderFor(const fs::path& out) {
+  std::error_code ec;
+  return temporaryFolderIn(fs::exists(out, ec) ? out : out.parent_path());
+}
+
+// Moves every entry of `from` but `except` into `to` (renames, one folder apart); on a
+// failure, moves back what it moved and throws IoError.
+void moveEntries(const fs::path& from, const fs::path& to, const fs::path& except, const fs::path& out) {
+  std::vector<fs::path> moved;
+  std::error_code ec;
+  std::vector<fs::path> entries;
+  for (fs::directory_iterator it(from, ec), end; !ec && it != end; it.increment(ec))
+    if (it->path() != except) entries.push_back(it->path());
+  for (const fs::path& e : entries) {
+    fs::rename(e, to / e.filename(), ec);
+    if (ec) {
+      const std::string why = ec.message();
+      for (const fs::path& m : moved) fs::rename(to / m.filename(), m, ec);
+      throw IoError("cannot put the report in '" + abbreviated(out.string()) + "': " + why);
+    }
+    moved.push_back(e);
+  }
+}
+
+// Puts the whole report written in `temporary` at `out`: a new folder renamed into place;
+// into an existing one, its earlier report moved aside (into a second temporary folder in
+// it), the new one's entries moved in, then the earlier one removed. Throws IoError.
 void swapIntoPlace(const std::string& temporary, const fs::path& out) {
   std::error_code ec;
   if (!fs::exists(out, ec)) {
@@ -121,16 +154,33 @@ void swapIntoPlace(const std::string& temporary, const fs::path& out) {
     if (ec) throw IoError("cannot put the report at '" + abbreviated(out.string()) + "': " + ec.message());
     return;
   }
-  const std::string old = temporaryFolderBeside(out);
-  fs::rename(out, old, ec);   // over the empty folder just made
-  if (ec) throw IoError("cannot replace the report '" + abbreviated(out.string()) + "': " + ec.message());
-  fs::rename(temporary, out, ec);
-  if (ec) {
-    std::error_code back;
-    fs::rename(old, out, back);
-    throw IoError("cannot replace the report '" + abbreviated(out.string()) + "': " + ec.message());
+  const fs::path old = temporaryFolderIn(out);
+  struct RemoveOld {
+    fs::path path;
+    ~RemoveOld() {
+      std::error_code e;
+      fs::remove_all(path, e);
+    }
+  } removeOld{old};
+  // The earlier report's entries (and any grade left of an earlier, killed run) aside.
+  std::vector<fs::path> earlier;
+  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec))
+    if (it->path() != old && it->path() != fs::path(temporary)) earlier.push_back(it->path());
+  for (const fs::path& e : earlier) {
+    fs::rename(e, old / e.filename(), ec);
+    if (ec) {
+      const std::string why = ec.message();
+      moveEntries(old, out, fs::path(), out);
+      throw IoError("cannot replace the report in '" + abbreviated(out.string()) + "': " + why);
+    }
   }
-  fs::remove_all(old, ec);
+  try {
+    moveEntries(temporary, out, fs::path(), out);
+  } catch (...) {
+    moveEntries(old, out, fs::path(), out);
+    throw;
+  }
+  fs::remove(temporary, ec);
 }
 
 // The temporary folder, removed unless the report was put in place.
@@ -150,9 +200,37 @@ class TemporaryFolder {
   std::string path_;
 };
 
+// A folder is a folder of submissions, a file named .test a scene file to render. A name of
+// nothing is an error (IoError), and so is anything else (UsageError: a zip file, a typo),
+// before anything is read.
 bool isSceneArgument(const std::string& path) {
   std::error_code ec;
-  return !fs::is_directory(path, ec);
+  fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st))
+    throw IoError("'" + abbreviated(path) + "' does not exist (give a folder of submissions, or a scene file to render)");
+  if (fs::is_directory(st)) return false;
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".test")
+    throw UsageError("grade: '" + abbreviated(path) + "' is neither a folder of submissions nor a scene file (.test)");
+  return true;
+}
+
+// A name for the terminal: its control bytes escaped (a folder name may hold any byte), the
+// rest, UTF-8 included, as it is.
+std::string printable(const std::string& name) {
+  std::string s;
+  for (char ch : name) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c == 0x7F) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      s += buf;
+    } else {
+      s += ch;
+    }
+  }
+  return s;
 }
 
 // One comparison to make: a submission's image of a scene (a file, or a render held here).
@@ -168,7 +246,7 @@ struct Job {
 struct Rendered {
   Submission submission;
   std::map<std::string, Image> images;                       // sceneKey -> image
-  std::map<std::string, std::string> errors;                 // sceneKey -> what went wrong
+  std::map<std::string, std::pair<std::string, int>> errors;   // sceneKey -> what went wrong, its status
 };
 
 Rendered renderScenes(const Options& o, const std::vector<std::string>& scenes,
@@ -193,7 +271,10 @@ Rendered renderScenes(const Options& o, const std::vector<std::string>& scenes,
     r.submission.images[key] = scene;
     RenderRequest request = o.request;
     request.scenePath = scene;
-    request.onWarnings = nullptr;
+    if (!o.quiet)
+      request.onWarnings = [](const std::vector<Diagnostic>& warnings) {
+        for (const Diagnostic& w : warnings) std::fprintf(stderr, "%s\n", w.format().c_str());
+      };
     try {
       ProgressBar progress(!o.quiet);
       RenderReport report;
@@ -207,7 +288,7 @@ Rendered renderScenes(const Options& o, const std::vector<std::string>& scenes,
       if (int signal = pendingInterrupt()) throw Interrupted(signal);
       int s = reportError(e, {scene, o.quiet}, stderr);
       status = worseExitStatus(status, s);
-      r.errors[key] = "cannot be rendered: " + exitStatusName(s) + " (its messages are on the terminal)";
+      r.errors[key] = {"cannot be rendered: " + exitStatusName(s) + " (its messages are on the terminal)", s};
     }
   }
   return r;
@@ -276,7 +357,7 @@ void runJobs(std::size_t count, unsigned threads, const std::function<void(std::
 
 std::string joined(const std::vector<std::string>& names) {
   std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + printable(n);
   return s;
 }
 
@@ -311,7 +392,7 @@ int gradeCommand(const Options& o) {
     submissions.insert(submissions.begin(), rendered->submission);
   }
 
-  TemporaryFolder folder(temporaryFolderBeside(out));
+  TemporaryFolder folder(temporaryFolderFor(out));
   for (const std::string& sub : reportImageFolders(submissions.size())) fs::create_directories(folder.path() + "/" + sub);
   GradeReport report;
   report.references = o.gradeReferences;
@@ -332,7 +413,8 @@ int gradeCommand(const Options& o) {
       if (rendered && i == 0) {
         if (auto err = rendered->errors.find(keys[c]); err != rendered->errors.end()) {
           rs.entries[c].grade.outcome = GradeOutcome::Unreadable;
-          rs.entries[c].grade.failures.push_back(err->second);
+          rs.entries[c].grade.failures.push_back(err->second.first);
+          rs.entries[c].renderStatus = err->second.second;
           continue;
         }
         jobs.push_back({i, c, at->second, &rendered->images.at(keys[c])});
@@ -370,22 +452,25 @@ int gradeCommand(const Options& o) {
         case GradeOutcome::Missing: missing.push_back(scene); break;
         case GradeOutcome::Unreadable:
           unreadable.push_back(scene);
-          std::fprintf(stderr, "vkrt: %s: %s: %s\n", s.name.c_str(), scene.c_str(),
+          // A scene that could not be rendered has its status (in `status` already) and
+          // printed its messages; an image that cannot be read is an I/O error.
+          if (s.entries[c].renderStatus == 0) status = worseExitStatus(status, kExitIo);
+          std::fprintf(stderr, "vkrt: %s: %s: %s\n", printable(s.name).c_str(), printable(scene).c_str(),
                        s.entries[c].grade.failures.empty() ? "unreadable" : s.entries[c].grade.failures[0].c_str());
           break;
       }
     }
     if (!fail.empty() || !missing.empty()) status = worseExitStatus(status, kExitDiffers);
-    if (!unreadable.empty()) status = worseExitStatus(status, kExitIo);
     if (!o.quiet)
-      std::fprintf(stderr, "vkrt: %-20s %zu/%zu pass%s%s%s\n", s.name.c_str(), pass, s.entries.size(),
+      std::fprintf(stderr, "vkrt: %-20s %zu/%zu pass%s%s%s\n", printable(s.name).c_str(), pass, s.entries.size(),
                    fail.empty() ? "" : ("; fail: " + joined(fail)).c_str(),
                    missing.empty() ? "" : ("; missing: " + joined(missing)).c_str(),
                    unreadable.empty() ? "" : ("; unreadable: " + joined(unreadable)).c_str());
   }
   if (!o.quiet)
     for (const ReportSubmission& s : report.submissions)
-      for (const std::string& note : s.notes) std::fprintf(stderr, "vkrt: note: %s: %s\n", s.name.c_str(), note.c_str());
+      for (const std::string& note : s.notes)
+        std::fprintf(stderr, "vkrt: note: %s: %s\n", printable(s.name).c_str(), printable(note).c_str());
   const OutcomeCounts n = countOutcomes(report);
   if (o.quiet && status == kExitOk) return status;
   std::fprintf(stderr, "vkrt: graded %s x %s in %.2f s: %zu pass, %zu fail, %zu missing%s; report: %s; exit status %d\n",

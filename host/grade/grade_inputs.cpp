@@ -24,9 +24,10 @@ std::string lower(std::string s) {
   return s;
 }
 
+// Hidden entries, and the folder of resource forks that a zip made on a Mac unpacks into.
 bool hidden(const fs::path& p) {
   const std::string name = p.filename().string();
-  return !name.empty() && name[0] == '.';
+  return (!name.empty() && name[0] == '.') || name == "__MACOSX";
 }
 
 // The entries of `folder` (not hidden), sorted naturally; IoError when it cannot be listed.
@@ -56,14 +57,34 @@ bool isImageFile(const fs::directory_entry& e) {
   return e.is_regular_file(ec) && hasReadableImageName(e.path().string());
 }
 
-// The images under `folder` (itself and `depth` levels below), in path order.
-void collectImages(const std::string& folder, int depth, std::vector<std::string>& out) {
+bool isOtherFile(const fs::directory_entry& e) {
+  std::error_code ec;
+  return e.is_regular_file(ec) && !hasReadableImageName(e.path().string());
+}
+
+// The images under `folder` (itself and `depth` levels below), in path order, and the other
+// files there (`others`).
+void collectImages(const std::string& folder, int depth, std::vector<std::string>& out,
+                   std::vector<std::string>& others) {
   const std::vector<fs::directory_entry> entries = entriesOf(folder);
-  for (const fs::directory_entry& e : entries)
+  for (const fs::directory_entry& e : entries) {
     if (isImageFile(e)) out.push_back(e.path().string());
+    if (isOtherFile(e)) others.push_back(e.path().string());
+  }
   if (depth == 0) return;
   for (const fs::directory_entry& e : entries)
-    if (isFolder(e)) collectImages(e.path().string(), depth - 1, out);
+    if (isFolder(e)) collectImages(e.path().string(), depth - 1, out, others);
+}
+
+constexpr std::size_t kOtherFilesNoted = 5;   // per submission; then "and N more"
+
+// The notes for files that are not images vkrt reads.
+void noteOthers(Submission& s, const std::vector<std::string>& others) {
+  for (std::size_t i = 0; i < others.size() && i < kOtherFilesNoted; ++i)
+    s.notes.push_back(abbreviated(others[i]) + ": not an image vkrt reads (" + imageExtensionsText() +
+                      ", .jpg); not graded");
+  if (others.size() > kOtherFilesNoted)
+    s.notes.push_back("and " + std::to_string(others.size() - kOtherFilesNoted) + " more files that are not images");
 }
 
 // The submission made of `images`, matched to `references` (by key).
@@ -94,9 +115,9 @@ std::string baseName(const std::string& folder) {
 
 }  // namespace
 
-std::string sceneOfFileName(const std::string& path) {
+std::string sceneOfFileName(const std::string& path, bool reference) {
   std::string stem = fs::path(path).stem().string();
-  if (stem.size() > 4 && (lower(stem.substr(0, 4)) == "ref_" || lower(stem.substr(0, 4)) == "ref-"))
+  if (reference && stem.size() > 4 && (lower(stem.substr(0, 4)) == "ref_" || lower(stem.substr(0, 4)) == "ref-"))
     stem = stem.substr(4);
   return stem;
 }
@@ -142,7 +163,7 @@ std::vector<SceneReference> findReferences(const std::string& folder) {
   std::map<std::string, std::string> byKey;
   for (const fs::directory_entry& e : entriesOf(folder)) {
     if (!isImageFile(e)) continue;
-    SceneReference r{sceneOfFileName(e.path().string()), e.path().string()};
+    SceneReference r{sceneOfFileName(e.path().string(), true), e.path().string()};
     if (auto [at, added] = byKey.emplace(sceneKey(r.scene), r.path); !added)
       throw UsageError("two reference images for the scene " + r.scene + ": " + abbreviated(at->second) + " and " +
                        abbreviated(r.path) + " (keep one)");
@@ -165,16 +186,23 @@ std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
       throw IoError("the submissions '" + abbreviated(folder) + "' are not a folder (a folder per student, or a "
                     "folder of images)");
     const std::vector<fs::directory_entry> entries = entriesOf(folder);
-    std::vector<std::string> own;
-    for (const fs::directory_entry& e : entries)
+    std::vector<std::string> own, ownOthers;
+    for (const fs::directory_entry& e : entries) {
       if (isImageFile(e)) own.push_back(e.path().string());
+      if (isOtherFile(e)) ownOthers.push_back(e.path().string());
+    }
     std::vector<Submission> here;
-    if (!own.empty()) here.push_back(matched(baseName(folder), folder, own, keys));
+    if (!own.empty()) {
+      here.push_back(matched(baseName(folder), folder, own, keys));
+      noteOthers(here.back(), ownOthers);
+    }
     for (const fs::directory_entry& e : entries) {
       if (!isFolder(e)) continue;
-      std::vector<std::string> images;
-      collectImages(e.path().string(), kSubmissionDepth - 1, images);
-      if (!images.empty()) here.push_back(matched(e.path().filename().string(), e.path().string(), images, keys));
+      std::vector<std::string> images, others;
+      collectImages(e.path().string(), kSubmissionDepth - 1, images, others);
+      here.push_back(matched(e.path().filename().string(), e.path().string(), images, keys));
+      if (images.empty()) here.back().notes.push_back("no image in " + abbreviated(e.path().string()));
+      noteOthers(here.back(), others);
     }
     for (Submission& s : here) {
       bool taken = std::any_of(found.begin(), found.end(), [&](const Submission& f) { return f.name == s.name; });

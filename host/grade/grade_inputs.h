@@ -16,9 +16,10 @@ struct SceneReference {
   std::string path;
 };
 
-// The scene a file name is for: the name without its folder, its extension and a leading
-// "ref_" or "ref-".
-std::string sceneOfFileName(const std::string& path);
+// The scene a file name is for: the name without its folder and its extension, and for a
+// reference (`reference`) without a leading "ref_" or "ref-" too. A submitted
+// "ref_scene5.png" is no scene's: a copy of the reference is not the student's image.
+std::string sceneOfFileName(const std::string& path, bool reference = false);
 
 // The key names are matched by: the scene in lower case ("Scene5.PNG" is scene5).
 std::string sceneKey(const std::string& scene);
@@ -40,12 +41,13 @@ struct Submission {
   std::vector<std::string> notes;               // images left out, and why
 };
 
-// The submissions in each of `folders`: each sub-folder holding images (looked for down to
-// four levels, hidden entries skipped) is one student's; images directly in a folder are
-// that folder's own submission. Images that match no reference are noted, as are second
-// images for one scene (the first in path order is graded). Names that repeat across
-// folders get the folder's name in front. Throws IoError for a folder that cannot be listed,
-// UsageError when no submission is found.
+// The submissions in each of `folders`: each sub-folder (hidden ones skipped) is one
+// student's, its images looked for down to four levels; images directly in a folder are
+// that folder's own submission. A student's folder without an image is still a submission
+// (every image missing). Noted: images that match no reference, second images for one scene
+// (the first in path order is graded), and files vkrt does not read as images. Names that
+// repeat across folders get the folder's name in front. Throws IoError for a folder that
+// cannot be listed, UsageError when no submission is found.
 std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
                                         const std::vector<SceneReference>& references);
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
+#include <cstring>
+#include <initializer_list>
 #include <string>
 
 #include "cli/image_check.h"   // jsonQuoted
@@ -66,11 +68,11 @@ document.querySelectorAll('table.sortable').forEach(function (table) {
     function key(row) {
       var cell = row.cells[column];
       var v = cell.getAttribute('data-sort');
-      return v === null ? cell.textContent.trim().toLowerCase() : parseFloat(v);
+      return v === null ? cell.textContent.trim() : parseFloat(v);
     }
     rows.sort(function (a, b) {
       var ka = key(a), kb = key(b);
-      var c = typeof ka === 'number' ? ka - kb : (ka < kb ? -1 : ka > kb ? 1 : 0);
+      var c = typeof ka === 'number' ? ka - kb : ka.localeCompare(kb, undefined, { numeric: true, sensitivity: 'base' });
       return up ? c : -c;
     });
     rows.forEach(function (row) { body.appendChild(row); });
@@ -123,6 +125,11 @@ std::string format(const char* fmt, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, fmt, v == 0 ? 0.0 : v);
   return buf;
+}
+
+// Whether the two images were compared (the figures mean something): both read, one size.
+bool compared(const Grade& g) {
+  return g.outcome == GradeOutcome::Pass || (g.outcome == GradeOutcome::Fail && std::isfinite(g.key.value));
 }
 
 // A number for JSON: finite ones as they are, infinity (the PSNR of identical images) as null.
@@ -344,8 +351,9 @@ std::string summaryJson(const GradeReport& r) {
       s += std::string(c ? "," : "") + "\n    {\"scene\": " + jsonQuoted(r.scenes[c].name) + ", \"status\": \"" +
            outcomeName(g.outcome) + "\", \"image\": " + jsonQuoted(e.source);
       if (g.outcome != GradeOutcome::Missing) s += ", \"page\": " + jsonQuoted(pageName(i, c));
-      if (g.outcome == GradeOutcome::Pass || g.outcome == GradeOutcome::Fail) {
+      if (g.outcome == GradeOutcome::Pass || g.outcome == GradeOutcome::Fail)
         s += ", \"width\": " + std::to_string(g.width) + ", \"height\": " + std::to_string(g.height);
+      if (compared(g)) {
         s += ", \"key_figure\": " + jsonNumber(g.key.value);
         s += ", \"max_channel_diff\": " + std::to_string(g.maxDiff) + ", \"rmse\": " + jsonNumber(g.rmse) +
              ", \"psnr_db\": " + jsonNumber(g.psnr) + ", \"pixels_differing\": " + std::to_string(g.differing) +
@@ -361,8 +369,11 @@ std::string summaryJson(const GradeReport& r) {
   return s + "\n]\n}\n";
 }
 
-// A CSV field: quoted when it holds a comma, a quote or a line break (RFC 4180).
-std::string csvField(const std::string& v) {
+// A CSV field of text (a name, a path, a message): quoted when it holds a comma, a quote or
+// a line break (RFC 4180), and a leading = + - @ or tab made harmless with a ' before it, so
+// that a spreadsheet shows a folder named "=HYPERLINK(...)" instead of running it.
+std::string csvField(std::string v) {
+  if (!v.empty() && std::string("=+-@\t\r").find(v[0]) != std::string::npos) v = "'" + v;
   if (v.find_first_of(",\"\n\r") == std::string::npos) return v;
   std::string q = "\"";
   for (char c : v) q += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -375,7 +386,7 @@ std::string summaryCsv(const GradeReport& r) {
   for (const ReportSubmission& sub : r.submissions)
     for (std::size_t c = 0; c < sub.entries.size(); ++c) {
       const Grade& g = sub.entries[c].grade;
-      const bool figures = g.outcome == GradeOutcome::Pass || (g.outcome == GradeOutcome::Fail && g.key.text != "size differs");
+      const bool figures = compared(g);
       std::string failures;
       for (const std::string& f : g.failures) failures += (failures.empty() ? "" : "; ") + f;
       s += csvField(sub.name) + "," + csvField(r.scenes[c].name) + "," + outcomeName(g.outcome) + ",";
@@ -412,9 +423,40 @@ std::vector<std::string> reportImageFolders(std::size_t submissions) {
   return folders;
 }
 
-bool isReportEntry(const std::string& name) {
-  for (const char* entry : {"index.html", "grade.css", "grade.js", "summary.json", "summary.csv", "images", "pages"})
-    if (name == entry) return true;
+namespace {
+
+// Whether `text` from `at` is `prefix` and then one or more digits, up to `end` (returned).
+bool digitsAfter(const std::string& text, std::size_t& at, const char* prefix) {
+  const std::size_t n = std::strlen(prefix);
+  if (text.compare(at, n, prefix) != 0) return false;
+  at += n;
+  const std::size_t start = at;
+  while (at < text.size() && text[at] >= '0' && text[at] <= '9') ++at;
+  return at > start;
+}
+
+bool rest(const std::string& text, std::size_t at, std::initializer_list<const char*> endings) {
+  for (const char* e : endings)
+    if (text.compare(at, std::string::npos, e) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
+bool isReportPath(const std::string& relative) {
+  for (const char* entry : {"index.html", "grade.css", "grade.js", "summary.json", "summary.csv", "images", "pages",
+                            "images/ref"})
+    if (relative == entry) return true;
+  if (relative.rfind(kTemporaryPrefix, 0) == 0) return true;
+  std::size_t at = 0;
+  if (relative.rfind("pages/", 0) == 0)   // pages/sNNNN-cNNN.html
+    return digitsAfter(relative, at = 6, "s") && digitsAfter(relative, at, "-c") && rest(relative, at, {".html"});
+  if (relative.rfind("images/ref/", 0) == 0)   // images/ref/cNNN.png
+    return digitsAfter(relative, at = 11, "c") && rest(relative, at, {".png"});
+  if (relative.rfind("images/", 0) == 0 && digitsAfter(relative, at = 7, "s")) {   // images/sNNNN[/cNNN[-x].png]
+    if (at == relative.size()) return true;
+    return digitsAfter(relative, at, "/c") && rest(relative, at, {".png", "-thumb.png", "-diff.png"});
+  }
   return false;
 }
 

@@ -25,6 +25,7 @@ struct ReportEntry {
   std::string source;   // the submitted image's path, or the scene file rendered; empty when missing
   bool hasImage = false;   // the submission's image (and its thumbnail) written
   bool hasDiff = false;    // the difference image written
+  int renderStatus = 0;    // a scene file that could not be rendered: its exit status
 };
 
 struct ReportSubmission {
@@ -56,9 +57,12 @@ inline constexpr int kThumbnailWidth = 96, kThumbnailHeight = 72;
 // `folder` (which exists). Throws IoError.
 void writeReportPages(const GradeReport& report, const std::string& folder);
 
-// Whether `name` is one of the entries a report folder holds (index.html, pages, images, ...),
-// and how its summary.json starts: what tells a report this command wrote.
-bool isReportEntry(const std::string& name);
+// Whether `relative` (a path inside a report folder, '/' between its parts) is one that a
+// report writes: index.html, pages/s0001-c001.html, images/s0001/c001-thumb.png, ... (or
+// lies in a temporary folder of grade's, ".vkrt-grade-..."); and how its summary.json
+// starts: what tells a report this command wrote from a folder of someone's files.
+bool isReportPath(const std::string& relative);
+inline constexpr const char* kTemporaryPrefix = ".vkrt-grade-";
 inline constexpr const char* kSummaryJsonStart = "{\n\"vkrt\": ";
 
 // Counts of the report's comparisons by outcome.

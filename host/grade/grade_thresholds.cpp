@@ -76,6 +76,7 @@ ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds&
   int lineNumber = 0;
   for (std::string line; std::getline(in, line);) {
     ++lineNumber;
+    if (lineNumber == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);   // a byte-order mark
     auto fail = [&](const std::string& what) {
       return UsageError(abbreviated(path) + ":" + std::to_string(lineNumber) + ": error: " + what);
     };

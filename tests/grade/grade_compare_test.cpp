@@ -6,6 +6,7 @@
 #include "errors.h"
 #include "grade/grade_compare.h"
 #include "grade/grade_inputs.h"
+#include "grade/grade_report.h"
 #include "grade/grade_thresholds.h"
 #include "image/thumbnail.h"
 #include "test_support.h"
@@ -35,10 +36,11 @@ bool sameRect(const PixelRect& a, const PixelRect& b) {
 }  // namespace
 
 TEST(GradeNames, FileNamesMatchScenesWhateverTheCaseOrTheGradersPrefix) {
-  EXPECT_EQ(sceneOfFileName("refs/ref_scene5.png"), "scene5");
-  EXPECT_EQ(sceneOfFileName("refs/REF-scene5.ppm"), "scene5");
+  EXPECT_EQ(sceneOfFileName("refs/ref_scene5.png", true), "scene5");
+  EXPECT_EQ(sceneOfFileName("refs/REF-scene5.ppm", true), "scene5");
+  EXPECT_EQ(sceneOfFileName("subs/ref_scene5.png"), "ref_scene5");   // a submission's: a copy of the reference
   EXPECT_EQ(sceneOfFileName("a/b/scene4-ambient.png"), "scene4-ambient");
-  EXPECT_EQ(sceneOfFileName("ref_.png"), "ref_");   // nothing after the prefix: the name itself
+  EXPECT_EQ(sceneOfFileName("ref_.png", true), "ref_");   // nothing after the prefix: the name itself
   EXPECT_EQ(sceneKey("Scene5"), sceneKey("scene5"));
   EXPECT_TRUE(hasReadableImageName("x.PNG"));
   EXPECT_TRUE(hasReadableImageName("x.jpeg"));
@@ -140,6 +142,33 @@ TEST(GradeThresholdFile, EachSceneItsOwnLineElseTheCommandLine) {
   EXPECT_EQ(table.forScene("cornellnee").text(), "--max-bias 0.5 --max-variance 250");
   EXPECT_EQ(table.forScene("scene6").text(), "--max-diff 4");
   EXPECT_EQ(GradeThresholds{}.text(), "any difference fails");
+}
+
+TEST(GradeThresholdFile, AByteOrderMarkIsNotPartOfTheFirstScene) {
+  std::string dir = freshDir("grade/thresholds-bom");
+  writeFile(dir + "/t.txt", "\xEF\xBB\xBFscene6 --max-diff 2\r\n");
+  EXPECT_EQ(readThresholdFile(dir + "/t.txt", GradeThresholds{}, {"scene6"}).forScene("scene6").text(), "--max-diff 2");
+}
+
+// What tells a report folder from a folder of someone's files: only the paths a report writes.
+TEST(GradeReportFolder, OnlyTheReportsOwnPaths) {
+  for (const char* p : {"index.html", "grade.js", "summary.json", "pages", "pages/s0001-c001.html", "pages/s12345-c999.html",
+                        "images", "images/ref", "images/ref/c003.png", "images/s0002", "images/s0002/c001.png",
+                        "images/s0002/c001-thumb.png", "images/s0002/c010-diff.png", ".vkrt-grade-x1Y2z3/anything"})
+    EXPECT_TRUE(isReportPath(p)) << p;
+  for (const char* p : {"notes.txt", "pages/notes.html", "pages/s0001-c001.htm", "pages/s-c1.html", "images/ref/c1.jpg",
+                        "images/s0002/c001-other.png", "images/s0002/x", "images/sx", "imagesx", "pages/s0001-c001.html/x"})
+    EXPECT_FALSE(isReportPath(p)) << p;
+}
+
+// JSON of any bytes is JSON: what is not UTF-8 becomes U+FFFD; UTF-8 stays as it is.
+TEST(GradeReportFolder, SummaryStringsAreValidJsonWhateverTheBytes) {
+  EXPECT_EQ(jsonQuoted("bad\xffname"), "\"bad\\ufffdname\"");
+  EXPECT_EQ(jsonQuoted("Jos\xc3\xa9"), "\"Jos\xc3\xa9\"");
+  EXPECT_EQ(jsonQuoted("\xe2\x82"), "\"\\ufffd\\ufffd\"");   // cut short
+  EXPECT_EQ(jsonQuoted("\xc0\xaf"), "\"\\ufffd\\ufffd\"");   // overlong
+  EXPECT_EQ(jsonQuoted("\xed\xa0\x80"), "\"\\ufffd\\ufffd\\ufffd\"");   // a surrogate
+  EXPECT_EQ(jsonQuoted("\xf0\x9f\x98\x80 \"q\"\n"), "\"\xf0\x9f\x98\x80 \\\"q\\\"\\u000a\"");
 }
 
 TEST(GradeThresholdFile, ABadLineIsAnErrorAtItsLine) {
