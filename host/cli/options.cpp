@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <cstdlib>
 #include <span>
 #include <string_view>
@@ -396,6 +397,33 @@ Options parseConvertOptions(const std::vector<std::string>& args) {
   return o;
 }
 
+// The options of the render that both the render commands and grade take: --backend,
+// --device, --spp, --seed, --threads; `value()` takes the option's value. False for another
+// option.
+bool applyRenderOption(const std::string& name, const std::function<std::string()>& value, RenderRequest& request) {
+  if (name == "--backend") {
+    std::string b = value();
+    if (b == "cpu")
+      request.backend = Backend::Cpu;
+    else if (b == "vulkan")
+      request.backend = Backend::Vulkan;
+    else
+      throw UsageError("unknown backend '" + echoed(b) + "' (expected: vulkan or cpu)");
+  } else if (name == "--device") {
+    request.device = value();
+    if (request.device.empty()) throw UsageError("--device needs an index or a name");
+  } else if (name == "--spp") {
+    request.spp = static_cast<std::uint64_t>(integerValue(name, value(), 1, 1 << 30));
+  } else if (name == "--seed") {
+    request.seed = seedValue(value());
+  } else if (name == "--threads") {
+    request.threads = integerValue(name, value(), 1, 1024);
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // vkrt grade [options] REFS/ SUBMISSIONS/|SCENE.test ... -o REPORT/
 Options parseGradeOptions(const std::vector<std::string>& args) {
   Options o;
@@ -433,23 +461,7 @@ Options parseGradeOptions(const std::vector<std::string>& args) {
       applyThresholdOption(name, take(), o.gradeThresholds);
     } else if (name == "--diff-scale") {
       o.heatmapScale = integerValue(name, take(), 1, 255);
-    } else if (name == "--backend") {
-      std::string b = take();
-      if (b == "cpu")
-        o.request.backend = Backend::Cpu;
-      else if (b == "vulkan")
-        o.request.backend = Backend::Vulkan;
-      else
-        throw UsageError("unknown backend '" + echoed(b) + "' (expected: vulkan or cpu)");
-    } else if (name == "--device") {
-      o.request.device = take();
-      if (o.request.device.empty()) throw UsageError("--device needs an index or a name");
-    } else if (name == "--spp") {
-      o.request.spp = static_cast<std::uint64_t>(integerValue(name, take(), 1, 1 << 30));
-    } else if (name == "--seed") {
-      o.request.seed = seedValue(take());
-    } else if (name == "--threads") {
-      o.request.threads = integerValue(name, take(), 1, 1024);
+    } else if (applyRenderOption(name, take, o.request)) {
     } else if (a == "--validation") {
       o.request.validation = true;
     } else if (a == "-q" || a == "--quiet") {
@@ -532,17 +544,7 @@ Options parseOptions(const std::vector<std::string>& args) {
       if (!o.request.crop)
         throw UsageError("--crop expects X0,Y0,X1,Y1 (four whole numbers, the pixels [X0,X1) x [Y0,Y1)), got '" +
                          echoed(v) + "'");
-    } else if (name == "--backend") {
-      std::string b = take(name);
-      if (b == "cpu")
-        o.request.backend = Backend::Cpu;
-      else if (b == "vulkan")
-        o.request.backend = Backend::Vulkan;
-      else
-        throw UsageError("unknown backend '" + echoed(b) + "' (expected: vulkan or cpu)");
-    } else if (name == "--device") {
-      o.request.device = take(name);
-      if (o.request.device.empty()) throw UsageError("--device needs an index or a name");
+    } else if (applyRenderOption(name, [&] { return take(name); }, o.request)) {
     } else if (a == "--list-devices") {
       o.listDevices = true;
     } else if (name == "--reads") {
@@ -567,10 +569,6 @@ Options parseOptions(const std::vector<std::string>& args) {
         o.request.variant = ShaderVariant::General;
       else
         throw UsageError("unknown --variant '" + echoed(v) + "' (expected: auto, specialized or general)");
-    } else if (name == "--spp") {
-      o.request.spp = static_cast<std::uint64_t>(integerValue(name, take(name), 1, 1 << 30));
-    } else if (name == "--seed") {
-      o.request.seed = seedValue(take(name));
     } else if (name == "--time") {
       o.request.timeLimitSeconds = timeValue(take(name));
     } else if (name == "--maxdepth") {
@@ -587,8 +585,6 @@ Options parseOptions(const std::vector<std::string>& args) {
       o.request.validation = true;
     } else if (name == "--step-budget") {   // for tests of the loop budget; not in --help
       o.request.stepBudget = static_cast<std::uint32_t>(integerValue(name, take(name), 1, 8192));
-    } else if (name == "--threads") {
-      o.request.threads = integerValue(name, take(name), 1, 1024);
     } else if (a == "--compare") {
       o.compare = true;
     } else if (a == "--watch") {
