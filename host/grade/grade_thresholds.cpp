@@ -84,6 +84,13 @@ ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds&
     std::istringstream words(line);
     std::string scene;
     if (!(words >> scene)) continue;
+    if (scene[0] == '"') {   // "a scene name with spaces"
+      const std::size_t open = line.find('"'), close = line.find('"', open + 1);
+      if (close == std::string::npos) throw fail("the scene's name has no closing '\"'");
+      scene = line.substr(open + 1, close - open - 1);
+      words.str(line.substr(close + 1));
+      words.clear();
+    }
     const std::string key = sceneKey(scene);
     if (std::find(knownKeys.begin(), knownKeys.end(), key) == knownKeys.end())
       throw fail("no reference image for the scene '" + echoed(scene) + "'");

@@ -36,8 +36,8 @@ struct ThresholdTable {
 // for a name that is not a threshold option; throws UsageError for a bad value.
 bool applyThresholdOption(const std::string& name, const std::string& value, GradeThresholds& t);
 
-// A thresholds file: one scene per line, its name then its options, '#' to the end of the
-// line a comment:
+// A thresholds file: one scene per line, its name (in double quotes when it holds a space)
+// then its options, '#' to the end of the line a comment:
 //     scene7      --max-pixels-over 2:0.1%
 //     cornellNEE  --max-bias 0.5 --max-variance 250
 // Throws IoError when the file cannot be read, UsageError naming the file and line for a bad

@@ -150,6 +150,16 @@ TEST(GradeThresholdFile, AByteOrderMarkIsNotPartOfTheFirstScene) {
   EXPECT_EQ(readThresholdFile(dir + "/t.txt", GradeThresholds{}, {"scene6"}).forScene("scene6").text(), "--max-diff 2");
 }
 
+TEST(GradeThresholdFile, ASceneNameWithSpacesInQuotes) {
+  std::string dir = freshDir("grade/thresholds-quoted");
+  writeFile(dir + "/t.txt", "\"my scene 2\"   --max-diff 3\n\"scene6\"--max-diff=1\n");
+  ThresholdTable t = readThresholdFile(dir + "/t.txt", GradeThresholds{}, {"my scene 2", "scene6"});
+  EXPECT_EQ(t.forScene("my scene 2").text(), "--max-diff 3");
+  EXPECT_EQ(t.forScene("scene6").text(), "--max-diff 1");
+  writeFile(dir + "/t.txt", "\"my scene 2 --max-diff 3\n");
+  EXPECT_THROW(readThresholdFile(dir + "/t.txt", GradeThresholds{}, {"my scene 2"}), UsageError);
+}
+
 // What tells a report folder from a folder of someone's files: only the paths a report writes.
 TEST(GradeReportFolder, OnlyTheReportsOwnPaths) {
   for (const char* p : {"index.html", "grade.js", "summary.json", "pages", "pages/s0001-c001.html", "pages/s12345-c999.html",
