@@ -92,8 +92,16 @@ uint pixelSlot;        // the pixel's place in the band's accumulation[]
 // ---- random numbers (gpu_rng.h: the generator and how each number is used) ------------------
 
 uint sampleKey;   // rngSampleKey of the current sample
-void keySample() { sampleKey = rngSampleKey(path.seed, pixelIndex, path.firstSample + sampleIndex); }
-float random(uint dimension) { return rngUniformKeyed(sampleKey, dimension); }
+uint pixelKey;    // rngPixelKey of the current pixel (stratified samples)
+void keySample() {
+  sampleKey = rngSampleKey(path.seed, pixelIndex, path.firstSample + sampleIndex);
+  pixelKey = rngPixelKey(path.seed, pixelIndex);
+}
+float random(uint dimension) {
+  float r = rngUniformKeyed(sampleKey, dimension);
+  if (path.strataSide == 0u) return r;
+  return rngStratify(r, pixelKey, path.firstSample + sampleIndex, dimension, path.strataSide, path.strataStep);
+}
 // The number of `slot` at the current path vertex.
 float randomAt(uint slot) { return random(rngDimension(bounce, slot)); }
 

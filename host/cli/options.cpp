@@ -113,6 +113,9 @@ std::string makeUsageText() {
          "  --spp N                path integrators: N samples per pixel instead of the scene's spp\n"
          "  --seed N               path integrators: the random numbers' seed, 0 to 4294967295\n"
          "                         (default 0); another seed gives independent samples\n"
+         "  --sampler independent|stratified  path integrators: each sample's numbers independent\n"
+         "                         (default, as the scene rules say) or stratified across a pixel's\n"
+         "                         samples (camera, first bounce, first light sample): less noise\n"
          "  --time SECONDS         path integrators: render batches of samples until the time is up,\n"
          "                         then write (at most --spp samples when given, else no limit);\n"
          "                         the samples taken are reported\n"
@@ -208,7 +211,7 @@ namespace {
 constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert", "grade"};
 constexpr std::string_view kLongOptions[] = {
     "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "variant",
-    "maxdepth", "spp", "seed", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
+    "maxdepth", "spp", "seed", "sampler", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
     "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version", "watch"};
 constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "quiet", "help"};
 constexpr std::string_view kConvertLongOptions[] = {"quiet", "help"};
@@ -569,6 +572,14 @@ Options parseOptions(const std::vector<std::string>& args) {
         o.request.variant = ShaderVariant::General;
       else
         throw UsageError("unknown --variant '" + echoed(v) + "' (expected: auto, specialized or general)");
+    } else if (name == "--sampler") {
+      std::string v = take(name);
+      if (v == "stratified")
+        o.request.stratified = true;
+      else if (v == "independent")
+        o.request.stratified = false;
+      else
+        throw UsageError("unknown --sampler '" + echoed(v) + "' (expected: independent or stratified)");
     } else if (name == "--time") {
       o.request.timeLimitSeconds = timeValue(take(name));
     } else if (name == "--maxdepth") {

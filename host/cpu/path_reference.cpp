@@ -41,7 +41,12 @@ struct AreaLight {
 // The random numbers of one camera sample (gpu_types.h): keyed by seed, pixel, sample.
 struct SampleNumbers {
   std::uint32_t seed, pixel, sample;
-  double at(std::uint32_t dimension) const { return gpu::rngUniform(seed, pixel, sample, dimension); }
+  std::uint32_t strataSide = 0, strataStep = 1;   // stratified samples (gpu_rng.h); side 0: none
+  double at(std::uint32_t dimension) const {
+    const float r = gpu::rngUniform(seed, pixel, sample, dimension);
+    if (strataSide == 0) return r;
+    return gpu::rngStratify(r, gpu::rngPixelKey(seed, pixel), sample, dimension, strataSide, strataStep);
+  }
   double at(std::uint32_t bounce, std::uint32_t slot) const { return at(gpu::rngDimension(bounce, slot)); }
 };
 
@@ -368,6 +373,8 @@ RadianceImage renderPathReference(const SceneDesc& scene, const Bvh& bvh, const 
   RadianceImage image(region.width(), region.height());
   image.samples = count;
   PathIntegrator integrator(scene, bvh);
+  const std::uint32_t strataSide = options.stratified ? gpu::rngStrataSide(totalSpp) : 0u;
+  const std::uint32_t strataStep = gpu::rngStrataStep(strataSide);
   shadeTiles(
       region, options.threads, count,
       [&](int x, int y, RayCounts& local) {
@@ -375,7 +382,7 @@ RadianceImage renderPathReference(const SceneDesc& scene, const Bvh& bvh, const 
                                     static_cast<std::uint32_t>(x);
         dvec3 sum(0.0);
         for (std::uint32_t s = first; s < first + count; ++s) {
-          const SampleNumbers rng{options.seed, pixel, s};
+          const SampleNumbers rng{options.seed, pixel, s, strataSide, strataStep};
           // spp 1 samples the pixel's centre; otherwise a uniform point in the pixel.
           const double u = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelX);
           const double v = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelY);

@@ -26,6 +26,8 @@ struct PathOptions {
   // averaged with their sample counts as weights, are the full render's (up to float rounding).
   std::uint32_t firstSample = 0;
   std::uint32_t sampleCount = 0;
+  // Stratified samples over scene.path.spp (gpu_rng.h, rngStratify); false: independent ones.
+  bool stratified = false;
   // Only these pixels of the scene's image (inside it), as an image of the crop's size; camera
   // rays and random numbers are the full image's, so a crop's pixels are a full render's.
   std::optional<PixelRect> crop;

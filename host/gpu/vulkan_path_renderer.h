@@ -28,6 +28,8 @@ struct VulkanPathOptions {
   // The whole render's samples per pixel, for the camera rule (gpu_types.h: a render of spp 1
   // samples the pixel centres, whatever sampleCount says); 0: the scene's spp.
   std::uint32_t renderSpp = 0;
+  // Stratified samples over renderSpp (gpu_rng.h, rngStratify); false: independent ones.
+  bool stratified = false;
   std::uint32_t stepBudget = 0;           // steps per invocation per dispatch; 0: paced by time
   // Pixels an invocation renders in turn (one of each tile of its workgroup's run); 0:
   // pathPixelsPerInvocation. The same image either way.

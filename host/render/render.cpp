@@ -115,6 +115,7 @@ RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene
     } else {
       PathOptions o;
       o.threads = request.threads;
+      o.stratified = request.stratified;
       setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
       image = renderPathReference(scene, bvh, o, &rays);
     }
@@ -169,6 +170,7 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
       o.stepBudget = request.stepBudget;
       o.reads = request.reads;
       o.variant = request.variant;
+      o.stratified = request.stratified;
       setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
       image = renderVulkanPath(context, gpuScene, o, &rays, &timings);
     }

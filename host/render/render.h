@@ -60,6 +60,9 @@ struct RenderRequest {
   std::uint64_t spp = 0;
   std::optional<std::uint32_t> seed;   // none: 0
   double timeLimitSeconds = 0;
+  // Path integrators: stratified samples (--sampler stratified; gpu_rng.h, rngStratify)
+  // instead of independent ones. The Whitted model ignores it.
+  bool stratified = false;
   // Every warning is an error: the scene's (doc/scene-format.md, "Warnings and errors"), and pixels whose colour came
   // out NaN or infinite (then no image is written).
   bool strict = false;

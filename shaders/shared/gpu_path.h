@@ -82,7 +82,9 @@ struct GpuPathParams {
   float emitterWeightScale; // 1 / the emitters' total weight (GpuEmitter)
   uint triangleCount;       // the scene's triangles and spheres (read with kPathSpecTestAll)
   uint sphereCount;
-  uint pad0, pad1, pad2;    // size 144
+  uint strataSide;          // stratified samples (gpu_rng.h, rngStratify): side x side strata; 0: independent
+  uint strataStep;          // rngStrataStep(strataSide)
+  uint pad0;                // size 144
 };
 GPU_ASSERT_SIZE(GpuPathParams, 144)
 GPU_ASSERT_OFFSET(GpuPathParams, integrator, 64)

@@ -64,5 +64,62 @@ GPU_FN float rngUniform(uint seed, uint pixel, uint sampleIndex, uint dimension)
 // The dimension of `slot` at path vertex `bounce`.
 GPU_FN uint rngDimension(uint bounce, uint slot) { return kRngBounceBase + bounce * kRngBounceStride + slot; }
 
+// Stratified samples (`--sampler stratified`; doc/design.md, "Random numbers and sampling
+// rules"). Three pairs of dimensions are stratified across the samples of a pixel: the
+// camera jitter (kRngPixelX/Y), the first vertex's direction (bounce 0, kRngSlotDirectionU/V)
+// and its first light sample (bounce 0, the first two light slots). With `side` x `side`
+// strata (side at most kRngMaxStrataSide; 0: none), sample s < side^2 of a pixel takes, in
+// each pair p, the stratum (step s + offset_p) mod side^2, offset_p a hash of the pixel's key
+// and p: a permutation of the strata, so that the first side^2 samples fill every stratum
+// once; within it, the pair's two independent numbers. Every sample is still uniform on its
+// own (the offset is), so a render stopped after any number of samples is unbiased; samples
+// from side^2 on are independent.
+GPU_CONST uint kRngMaxStrataSide = 256u;        // step s and side^2 stay below 2^32
+GPU_CONST float kRngBelowOne = 0.99999994f;     // the largest float below 1
+
+// The key of a pixel's strata permutation: the seed's and the pixel's, not the sample's.
+GPU_FN uint rngPixelKey(uint seed, uint pixel) { return rngHash(pixel + rngHash(seed)); }
+
+// The pair of `dimension` among the stratified ones (0, 1, 3), or 0xFFFFFFFF.
+GPU_FN uint rngStratifiedPair(uint dimension) {
+  uint pair = dimension >> 1u;   // 0: pixel; 1: bounce 0 direction; 2: lobe and roulette; 3: first light sample
+  return dimension < 8u && pair != 2u ? pair : 0xFFFFFFFFu;
+}
+
+// The number of `dimension` for global sample `sampleIndex` of the pixel whose key is
+// `pixelKey`, given that dimension's independent number `r`: r itself outside the strata.
+GPU_FN float rngStratify(float r, uint pixelKey, uint sampleIndex, uint dimension, uint side, uint step) {
+  uint pair = rngStratifiedPair(dimension);
+  uint n = side * side;
+  if (side == 0u || pair == 0xFFFFFFFFu || sampleIndex >= n) return r;
+  uint stratum = (step * sampleIndex + rngHash(pair + pixelKey) % n) % n;
+  uint cell = (dimension & 1u) == 0u ? stratum % side : stratum / side;
+  float x = (float(cell) + r) / float(side);
+  return x < kRngBelowOne ? x : kRngBelowOne;
+}
+
+// The strata of a render of `spp` samples: side = floor(sqrt(spp)), at most
+// kRngMaxStrataSide (0 for one sample: nothing to stratify), and the step, the number near
+// 0.618 side^2 that shares no factor with side^2 (consecutive samples land far apart).
+GPU_FN uint rngStrataSide(uint spp) {
+  uint side = 0u;
+  while (side < kRngMaxStrataSide && (side + 1u) * (side + 1u) <= spp) side += 1u;
+  return side < 2u ? 0u : side;
+}
+GPU_FN uint rngStrataStep(uint side) {
+  uint n = side * side;
+  if (n < 2u) return 1u;
+  uint step = uint(float(n) * 0.618034f);
+  for (;; step -= 1u) {
+    uint a = step, b = n;
+    while (b != 0u) {
+      uint t = a % b;
+      a = b;
+      b = t;
+    }
+    if (a == 1u) return step;
+  }
+}
+
 GPU_END
 #endif  // VKRT_GPU_RNG_H

@@ -37,7 +37,7 @@ double mean(const RadianceImage& r) {
 // A 32x32 crop below the image's centre, samples [0, 4) of the scene's render, seed 17.
 // Tolerance: at most 3% of the pixels (30 of 1024) more than 2/255 apart in some channel, and
 // the crop's mean radiance within 1% (float32 against double; paths that part at an edge).
-void expectBackendsAgree(const SceneDesc& scene, const std::string& name) {
+void expectBackendsAgree(const SceneDesc& scene, const std::string& name, bool stratified = false) {
   Context* context = gpuContextOrSkip();
   if (!context) return;
   const int x0 = scene.width / 2 - 16, y0 = scene.height * 3 / 4 - 16;
@@ -47,12 +47,14 @@ void expectBackendsAgree(const SceneDesc& scene, const std::string& name) {
   cpu.seed = 17;
   cpu.sampleCount = 4;
   cpu.crop = crop;
+  cpu.stratified = stratified;
   RadianceImage onCpu = renderPathReference(scene, buildBvh(scene), cpu, nullptr);
 
   VulkanPathOptions gpu;
   gpu.seed = 17;
   gpu.sampleCount = 4;
   gpu.crop = crop;
+  gpu.stratified = stratified;
   int before = context->validationMessages();
   RadianceImage onGpu = renderVulkanPath(*context, flatten(scene), gpu, nullptr, nullptr);
   EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";
@@ -91,6 +93,25 @@ TEST(PathBackendsEmitters, NextEventEstimationAndMisAgree) {
     scene.path.lightStratify = true;
     expectBackendsAgree(scene, nee == NextEvent::On ? "path-backends-emitters-nee" : "path-backends-emitters-mis");
   }
+}
+
+// Stratified samples (--sampler stratified): the same numbers on both backends (gpu_rng.h's
+// rngStratify, shared), so the same agreement; and not the independent samples' image.
+TEST(PathBackendsStratified, BothBackendsStratifyAlike) {
+  ParsedScene parsed = parseSceneFileWithWarnings(sourcePath("scenes/gi/box.test"));
+  expectBackendsAgree(parsed.scene, "path-backends-gi-box-stratified", true);
+  SceneDesc emitters = emissiveSurfacesBox(64, 3);
+  emitters.path.nextEvent = NextEvent::Mis;
+  emitters.path.sampling = Sampling::Brdf;
+  expectBackendsAgree(emitters, "path-backends-emitters-stratified", true);
+  PathOptions o;
+  o.seed = 17;
+  o.sampleCount = 4;
+  o.crop = PixelRect{0, 0, 16, 16};
+  const Bvh bvh = buildBvh(parsed.scene);
+  RadianceImage independent = renderPathReference(parsed.scene, bvh, o, nullptr);
+  o.stratified = true;
+  EXPECT_NE(renderPathReference(parsed.scene, bvh, o, nullptr).rgb, independent.rgb);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cse168, PathBackends,
