@@ -125,14 +125,13 @@ std::string temporaryFolderFor(const fs::path& out) {
   return temporaryFolderIn(fs::exists(out, ec) ? out : out.parent_path());
 }
 
-// Moves every entry of `from` but `except` into `to` (renames, one folder apart); on a
-// failure, moves back what it moved and throws IoError.
-void moveEntries(const fs::path& from, const fs::path& to, const fs::path& except, const fs::path& out) {
-  std::vector<fs::path> moved;
+// Moves every entry of `from` but those in `except` into `to` (renames, one folder apart);
+// on a failure, moves back what it moved and throws IoError naming `out`.
+void moveEntries(const fs::path& from, const fs::path& to, const std::vector<fs::path>& except, const fs::path& out) {
   std::error_code ec;
-  std::vector<fs::path> entries;
+  std::vector<fs::path> entries, moved;
   for (fs::directory_iterator it(from, ec), end; !ec && it != end; it.increment(ec))
-    if (it->path() != except) entries.push_back(it->path());
+    if (std::find(except.begin(), except.end(), it->path()) == except.end()) entries.push_back(it->path());
   for (const fs::path& e : entries) {
     fs::rename(e, to / e.filename(), ec);
     if (ec) {
@@ -162,22 +161,13 @@ void swapIntoPlace(const std::string& temporary, const fs::path& out) {
       fs::remove_all(path, e);
     }
   } removeOld{old};
-  // The earlier report's entries (and any grade left of an earlier, killed run) aside.
-  std::vector<fs::path> earlier;
-  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec))
-    if (it->path() != old && it->path() != fs::path(temporary)) earlier.push_back(it->path());
-  for (const fs::path& e : earlier) {
-    fs::rename(e, old / e.filename(), ec);
-    if (ec) {
-      const std::string why = ec.message();
-      moveEntries(old, out, fs::path(), out);
-      throw IoError("cannot replace the report in '" + abbreviated(out.string()) + "': " + why);
-    }
-  }
+  // The earlier report's entries (and any grade left of an earlier, killed run) aside, then
+  // the new ones in; a failure puts the earlier ones back.
+  moveEntries(out, old, {old, fs::path(temporary)}, out);
   try {
-    moveEntries(temporary, out, fs::path(), out);
+    moveEntries(temporary, out, {}, out);
   } catch (...) {
-    moveEntries(old, out, fs::path(), out);
+    moveEntries(old, out, {}, out);
     throw;
   }
   fs::remove(temporary, ec);
@@ -361,6 +351,51 @@ std::string joined(const std::vector<std::string>& names) {
   return s;
 }
 
+// On stderr: an unreadable image's error, a line per submission (its failures named), the
+// notes, then the summary (with -q: the errors, and the summary when something failed).
+// Returns the run's exit status: `status` (the rendered scenes') made worse by what the
+// comparisons found.
+int printOutcomes(const Options& o, const GradeReport& report, int status) {
+  for (const ReportSubmission& s : report.submissions) {
+    std::vector<std::string> fail, missing, unreadable;
+    std::size_t pass = 0;
+    for (std::size_t c = 0; c < s.entries.size(); ++c) {
+      const std::string& scene = report.scenes[c].name;
+      switch (s.entries[c].grade.outcome) {
+        case GradeOutcome::Pass: ++pass; break;
+        case GradeOutcome::Fail: fail.push_back(scene); break;
+        case GradeOutcome::Missing: missing.push_back(scene); break;
+        case GradeOutcome::Unreadable:
+          unreadable.push_back(scene);
+          // A scene that could not be rendered has its status (in `status` already) and
+          // printed its messages; an image that cannot be read is an I/O error.
+          if (s.entries[c].renderStatus == 0) status = worseExitStatus(status, kExitIo);
+          std::fprintf(stderr, "vkrt: %s: %s: %s\n", printable(s.name).c_str(), printable(scene).c_str(),
+                       s.entries[c].grade.failures.empty() ? "unreadable" : s.entries[c].grade.failures[0].c_str());
+          break;
+      }
+    }
+    if (!fail.empty() || !missing.empty()) status = worseExitStatus(status, kExitDiffers);
+    if (!o.quiet)
+      std::fprintf(stderr, "vkrt: %-20s %zu/%zu pass%s%s%s\n", printable(s.name).c_str(), pass, s.entries.size(),
+                   fail.empty() ? "" : ("; fail: " + joined(fail)).c_str(),
+                   missing.empty() ? "" : ("; missing: " + joined(missing)).c_str(),
+                   unreadable.empty() ? "" : ("; unreadable: " + joined(unreadable)).c_str());
+  }
+  if (!o.quiet)
+    for (const ReportSubmission& s : report.submissions)
+      for (const std::string& note : s.notes)
+        std::fprintf(stderr, "vkrt: note: %s: %s\n", printable(s.name).c_str(), printable(note).c_str());
+  const OutcomeCounts n = countOutcomes(report);
+  if (o.quiet && status == kExitOk) return status;
+  std::fprintf(stderr, "vkrt: graded %s x %s in %.2f s: %zu pass, %zu fail, %zu missing%s; report: %s; exit status %d\n",
+               counted(report.submissions.size(), "submission", "submissions").c_str(),
+               counted(report.scenes.size(), "scene", "scenes").c_str(), report.seconds, n.pass, n.fail, n.missing,
+               n.unreadable ? (", " + std::to_string(n.unreadable) + " unreadable").c_str() : "",
+               (o.gradeOutput + (o.gradeOutput.back() == '/' ? "" : "/") + "index.html").c_str(), status);
+  return status;
+}
+
 }  // namespace
 
 int gradeCommand(const Options& o) {
@@ -440,45 +475,7 @@ int gradeCommand(const Options& o) {
   swapIntoPlace(folder.path(), out);
   folder.release();
 
-  // A line per submission (its failures named), then the summary.
-  for (const ReportSubmission& s : report.submissions) {
-    std::vector<std::string> fail, missing, unreadable;
-    std::size_t pass = 0;
-    for (std::size_t c = 0; c < s.entries.size(); ++c) {
-      const std::string& scene = report.scenes[c].name;
-      switch (s.entries[c].grade.outcome) {
-        case GradeOutcome::Pass: ++pass; break;
-        case GradeOutcome::Fail: fail.push_back(scene); break;
-        case GradeOutcome::Missing: missing.push_back(scene); break;
-        case GradeOutcome::Unreadable:
-          unreadable.push_back(scene);
-          // A scene that could not be rendered has its status (in `status` already) and
-          // printed its messages; an image that cannot be read is an I/O error.
-          if (s.entries[c].renderStatus == 0) status = worseExitStatus(status, kExitIo);
-          std::fprintf(stderr, "vkrt: %s: %s: %s\n", printable(s.name).c_str(), printable(scene).c_str(),
-                       s.entries[c].grade.failures.empty() ? "unreadable" : s.entries[c].grade.failures[0].c_str());
-          break;
-      }
-    }
-    if (!fail.empty() || !missing.empty()) status = worseExitStatus(status, kExitDiffers);
-    if (!o.quiet)
-      std::fprintf(stderr, "vkrt: %-20s %zu/%zu pass%s%s%s\n", printable(s.name).c_str(), pass, s.entries.size(),
-                   fail.empty() ? "" : ("; fail: " + joined(fail)).c_str(),
-                   missing.empty() ? "" : ("; missing: " + joined(missing)).c_str(),
-                   unreadable.empty() ? "" : ("; unreadable: " + joined(unreadable)).c_str());
-  }
-  if (!o.quiet)
-    for (const ReportSubmission& s : report.submissions)
-      for (const std::string& note : s.notes)
-        std::fprintf(stderr, "vkrt: note: %s: %s\n", printable(s.name).c_str(), printable(note).c_str());
-  const OutcomeCounts n = countOutcomes(report);
-  if (o.quiet && status == kExitOk) return status;
-  std::fprintf(stderr, "vkrt: graded %s x %s in %.2f s: %zu pass, %zu fail, %zu missing%s; report: %s; exit status %d\n",
-               counted(report.submissions.size(), "submission", "submissions").c_str(),
-               counted(report.scenes.size(), "scene", "scenes").c_str(), report.seconds, n.pass, n.fail, n.missing,
-               n.unreadable ? (", " + std::to_string(n.unreadable) + " unreadable").c_str() : "",
-               (o.gradeOutput + (o.gradeOutput.back() == '/' ? "" : "/") + "index.html").c_str(), status);
-  return status;
+  return printOutcomes(o, report, status);
 }
 
 }  // namespace vkrt

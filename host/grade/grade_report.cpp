@@ -402,6 +402,23 @@ std::string summaryCsv(const GradeReport& r) {
   return s;
 }
 
+// Whether `text` from `at` is `prefix` and then one or more digits; `at` moves past them.
+bool digitsAfter(const std::string& text, std::size_t& at, const char* prefix) {
+  const std::size_t n = std::strlen(prefix);
+  if (text.compare(at, n, prefix) != 0) return false;
+  at += n;
+  const std::size_t start = at;
+  while (at < text.size() && text[at] >= '0' && text[at] <= '9') ++at;
+  return at > start;
+}
+
+// Whether `text` from `at` to its end is one of `endings`.
+bool rest(const std::string& text, std::size_t at, std::initializer_list<const char*> endings) {
+  for (const char* e : endings)
+    if (text.compare(at, std::string::npos, e) == 0) return true;
+  return false;
+}
+
 }  // namespace
 
 std::string referenceImagePath(std::size_t scene) {
@@ -422,26 +439,6 @@ std::vector<std::string> reportImageFolders(std::size_t submissions) {
   for (std::size_t i = 0; i < submissions; ++i) folders.push_back(submissionFolder(i));
   return folders;
 }
-
-namespace {
-
-// Whether `text` from `at` is `prefix` and then one or more digits, up to `end` (returned).
-bool digitsAfter(const std::string& text, std::size_t& at, const char* prefix) {
-  const std::size_t n = std::strlen(prefix);
-  if (text.compare(at, n, prefix) != 0) return false;
-  at += n;
-  const std::size_t start = at;
-  while (at < text.size() && text[at] >= '0' && text[at] <= '9') ++at;
-  return at > start;
-}
-
-bool rest(const std::string& text, std::size_t at, std::initializer_list<const char*> endings) {
-  for (const char* e : endings)
-    if (text.compare(at, std::string::npos, e) == 0) return true;
-  return false;
-}
-
-}  // namespace
 
 bool isReportPath(const std::string& relative) {
   for (const char* entry : {"index.html", "grade.css", "grade.js", "summary.json", "summary.csv", "images", "pages",
