@@ -2,12 +2,12 @@
 
 Mitsuba is never part of vkrt; it renders the same scene so that vkrt's converged images and
 its speed can be compared with an independent, well-tested path tracer. This reads the subset
-of the format that the comparison scenes use (camera, triangles, quad lights, transforms,
-diffuse and modified-Phong materials, maxdepth, russianroulette) and refuses the rest.
+of the format that the comparison scenes use (camera, triangles, spheres, quad lights,
+transforms, modified-Phong and GGX materials, maxdepth, russianroulette) and refuses the rest.
 
-The modified Phong BRDF of doc/path-tracing.md, "Integrators" is not one of Mitsuba's, so it is a
-Python BSDF here, sampled as that section says (cosine lobe or Phong lobe, chosen with
-probability t = avg(ks) / (avg(kd) + avg(ks))).
+The modified Phong and GGX BRDFs of doc/path-tracing.md, "BRDFs" are not Mitsuba's (its rough
+conductors and plastics weigh their lobes otherwise), so they are Python BSDFs here, sampled as
+that document's "Direction sampling" says.
 
     import mitsuba as mi; mi.set_variant("llvm_ad_rgb")
     scene, spp = load("cornellNEE.test")     # mi.Scene, the scene's spp
@@ -90,6 +90,84 @@ class ModifiedPhong(mi.BSDF):
         return "ModifiedPhong"
 
 
+class Ggx(mi.BSDF):
+    """f = kd/pi + F G D / (4 (n.wi)(n.wo)), alpha = roughness, Schlick's F with ks at normal
+    incidence; one-sided. Mitsuba's si.wi is the viewer's direction, wo the light's."""
+
+    def __init__(self, props):
+        mi.BSDF.__init__(self, props)
+        self.kd = mi.Color3f(props["kd_r"], props["kd_g"], props["kd_b"])
+        self.ks = mi.Color3f(props["ks_r"], props["ks_g"], props["ks_b"])
+        self.a = props["roughness"]
+        avg_kd = (props["kd_r"] + props["kd_g"] + props["kd_b"]) / 3
+        avg_ks = (props["ks_r"] + props["ks_g"] + props["ks_b"]) / 3
+        self.t = max(0.25, avg_ks / (avg_ks + avg_kd) if avg_kd + avg_ks > 0 else 0.0)
+        flags = mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.FrontSide
+        self.m_components = [flags]
+        self.m_flags = flags
+
+    def _d(self, cos_h):
+        a2 = self.a * self.a
+        c2 = cos_h * cos_h
+        tan2 = dr.maximum(1 - c2, 0.0) / c2
+        return a2 / (math.pi * c2 * c2 * dr.square(a2 + tan2))
+
+    def _g1(self, cos_v):
+        c2 = cos_v * cos_v
+        tan2 = dr.maximum(1 - c2, 0.0) / c2
+        return 2 / (1 + dr.sqrt(1 + self.a * self.a * tan2))
+
+    def _f(self, wi, wo):
+        h = dr.normalize(wi + wo)
+        cos_i, cos_o = mi.Frame3f.cos_theta(wi), mi.Frame3f.cos_theta(wo)
+        fresnel = self.ks + (1 - self.ks) * dr.power(1 - dr.dot(wo, h), 5)
+        spec = fresnel * self._g1(cos_i) * self._g1(cos_o) * self._d(mi.Frame3f.cos_theta(h)) / (4 * cos_i * cos_o)
+        return self.kd * dr.inv_pi + spec
+
+    def _pdf(self, wi, wo):
+        h = dr.normalize(wi + wo)
+        cos_o = mi.Frame3f.cos_theta(wo)
+        cos_h = mi.Frame3f.cos_theta(h)
+        lobe = self._d(cos_h) * cos_h / (4 * dr.abs(dr.dot(h, wo)))
+        return (1 - self.t) * dr.maximum(cos_o, 0.0) * dr.inv_pi + self.t * lobe
+
+    def _valid(self, si, wo):
+        return (mi.Frame3f.cos_theta(si.wi) > 0) & (mi.Frame3f.cos_theta(wo) > 0)
+
+    def sample(self, ctx, si, sample1, sample2, active=True):
+        cosine = mi.warp.square_to_cosine_hemisphere(sample2)
+        theta = dr.atan(self.a * dr.sqrt(sample2.x) / dr.sqrt(1 - sample2.x))
+        phi = 2 * math.pi * sample2.y
+        h = mi.Vector3f(dr.sin(theta) * dr.cos(phi), dr.sin(theta) * dr.sin(phi), dr.cos(theta))
+        reflected = 2 * dr.dot(si.wi, h) * h - si.wi
+        wo = dr.select(sample1 < self.t, reflected, cosine)
+        bs = mi.BSDFSample3f()
+        bs.wo = wo
+        bs.pdf = self._pdf(si.wi, wo)
+        bs.eta = 1.0
+        bs.sampled_type = mi.UInt32(+mi.BSDFFlags.GlossyReflection)
+        bs.sampled_component = mi.UInt32(0)
+        ok = active & self._valid(si, wo) & (bs.pdf > 0)
+        value = self._f(si.wi, wo) * mi.Frame3f.cos_theta(wo) / dr.maximum(bs.pdf, 1e-20)
+        return bs, dr.select(ok, value, 0.0)
+
+    def eval(self, ctx, si, wo, active=True):
+        value = self._f(si.wi, wo) * mi.Frame3f.cos_theta(wo)
+        return dr.select(active & self._valid(si, wo), value, 0.0)
+
+    def pdf(self, ctx, si, wo, active=True):
+        return dr.select(active & self._valid(si, wo), self._pdf(si.wi, wo), 0.0)
+
+    def eval_pdf(self, ctx, si, wo, active=True):
+        return self.eval(ctx, si, wo, active), self.pdf(ctx, si, wo, active)
+
+    def traverse(self, callback):
+        pass
+
+    def to_string(self):
+        return "Ggx"
+
+
 _registered = False
 
 
@@ -97,6 +175,7 @@ def _register():
     global _registered
     if not _registered:
         mi.register_bsdf("vkrt_phong", lambda props: ModifiedPhong(props))
+        mi.register_bsdf("vkrt_ggx", lambda props: Ggx(props))
         _registered = True
 
 
@@ -124,7 +203,7 @@ def read_test(path):
     identity = [[1.0 if i == j else 0.0 for j in range(4)] for i in range(4)]
     stack = [identity]
     material = {"diffuse": (0, 0, 0), "specular": (0, 0, 0), "shininess": 1.0, "emission": (0, 0, 0),
-                "brdf": "phong"}
+                "brdf": "phong", "roughness": 0.0}
     scene = {"size": (160, 120), "camera": None, "maxdepth": 5, "spp": 1, "rr": False, "nee": "off",
              "groups": {}, "quads": [], "spheres": [], "gamma": 1.0}
     vertices = []
@@ -155,22 +234,22 @@ def read_test(path):
         elif cmd == "tri":
             m = stack[-1]
             tri = [_apply(m, vertices[int(i)]) for i in num]
-            key = (material["diffuse"], material["specular"], material["shininess"], material["emission"])
-            if material["brdf"] != "phong":
-                raise ValueError(f"{path}:{number}: only phong materials are converted")
+            key = tuple(sorted(material.items()))
             scene["groups"].setdefault(key, []).append(tri)
         elif cmd == "sphere":
             m = _mul(stack[-1], _mul([[1, 0, 0, num[0]], [0, 1, 0, num[1]], [0, 0, 1, num[2]], [0, 0, 0, 1]],
                                      [[num[3], 0, 0, 0], [0, num[3], 0, 0], [0, 0, num[3], 0], [0, 0, 0, 1]]))
-            if material["brdf"] != "phong":
-                raise ValueError(f"{path}:{number}: only phong materials are converted")
             scene["spheres"].append((m, dict(material)))
         elif cmd in ("diffuse", "specular", "emission"):
             material = dict(material, **{cmd: tuple(num)})
         elif cmd == "shininess":
             material = dict(material, shininess=num[0])
         elif cmd == "brdf":
+            if args[0] not in ("phong", "ggx"):
+                raise ValueError(f"{path}:{number}: brdf {args[0]} is not converted")
             material = dict(material, brdf=args[0])
+        elif cmd == "roughness":
+            material = dict(material, roughness=num[0])
         elif cmd == "quadLight":
             m = stack[-1]
             a = _apply(m, num[0:3])
@@ -190,16 +269,17 @@ def read_test(path):
         elif cmd == "rotate":
             stack[-1] = _mul(stack[-1], _rotation(num[0:3], num[3]))
         elif cmd in ("ambient", "maxverts", "output", "integrator", "importancesampling", "lightsamples",
-                     "lightstratify", "roughness"):
+                     "lightstratify"):
             pass
         else:
             raise ValueError(f"{path}:{number}: '{cmd}' is not converted to Mitsuba")
     return scene
 
 
-def load(path, spp=None):
+def load(path, spp=None, sampler="independent"):
     """(scene dict for mi.load_dict, spp). Light paths of at most maxdepth + 1 segments, as
-    vkrt's depth rule; Russian roulette only when the scene asks for it."""
+    vkrt's depth rule; Russian roulette only when the scene asks for it. `sampler`: one of
+    Mitsuba's ("independent", "stratified", ...)."""
     _register()
     s = read_test(path)
     fx, fy, fz, ax, ay, az, ux, uy, uz, fovy = s["camera"]
@@ -214,16 +294,15 @@ def load(path, spp=None):
             "to_world": mi.ScalarTransform4f().look_at(origin=[fx, fy, fz], target=[ax, ay, az], up=[ux, uy, uz]),
             "film": {"type": "hdrfilm", "width": width, "height": height, "rfilter": {"type": "box"},
                      "pixel_format": "rgb"},
-            "sampler": {"type": "independent", "sample_count": spp or s["spp"]},
+            "sampler": {"type": sampler, "sample_count": spp or s["spp"]},
         },
     }
     folder = Path(tempfile.mkdtemp(prefix="vkrt-mitsuba-"))
     for i, (key, tris) in enumerate(s["groups"].items()):
-        kd, ks, shininess, emission = key
-        bsdf = _phong({"diffuse": kd, "specular": ks, "shininess": shininess})
-        d[f"group{i}"] = _mesh(folder / f"group{i}.obj", tris, bsdf, emission)
+        mat = dict(key)
+        d[f"group{i}"] = _mesh(folder / f"group{i}.obj", tris, _bsdf(mat), mat["emission"])
     for i, (m, mat) in enumerate(s["spheres"]):
-        d[f"sphere{i}"] = {"type": "sphere", "to_world": mi.ScalarTransform4f(m), "bsdf": _phong(mat)}
+        d[f"sphere{i}"] = {"type": "sphere", "to_world": mi.ScalarTransform4f(m), "bsdf": _bsdf(mat)}
         if any(e != 0 for e in mat["emission"]):
             d[f"sphere{i}"]["emitter"] = {"type": "area", "radiance": {"type": "rgb", "value": list(mat["emission"])}}
     for i, (a, ab, ac, L) in enumerate(s["quads"]):
@@ -236,10 +315,12 @@ def load(path, spp=None):
     return d, spp or s["spp"]
 
 
-def _phong(mat):
+def _bsdf(mat):
     kd, ks = mat["diffuse"], mat["specular"]
-    return {"type": "vkrt_phong", "kd_r": kd[0], "kd_g": kd[1], "kd_b": kd[2], "ks_r": ks[0], "ks_g": ks[1],
-            "ks_b": ks[2], "shininess": mat["shininess"]}
+    d = {"kd_r": kd[0], "kd_g": kd[1], "kd_b": kd[2], "ks_r": ks[0], "ks_g": ks[1], "ks_b": ks[2]}
+    if mat["brdf"] == "ggx":
+        return dict(d, type="vkrt_ggx", roughness=mat["roughness"])
+    return dict(d, type="vkrt_phong", shininess=mat["shininess"])
 
 
 def _mesh(path, tris, bsdf, emission):
@@ -274,6 +355,7 @@ def main():
     ap.add_argument("--spp", default="1,4,16,64")
     ap.add_argument("--out", required=True)
     ap.add_argument("--threads", type=int, default=0)
+    ap.add_argument("--sampler", default="independent", help="Mitsuba's sampler: independent, stratified, ...")
     args = ap.parse_args()
     mi.set_variant("llvm_ad_rgb")
     if args.threads:
@@ -281,7 +363,7 @@ def main():
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
-    scene_dict, _ = load(args.scene)
+    scene_dict, _ = load(args.scene, sampler=args.sampler)
     scene = mi.load_dict(scene_dict)
     times = {"load": time.perf_counter() - t0, "renders": []}
     t0 = time.perf_counter()

@@ -148,6 +148,7 @@ void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
                r.maxDepth, primitives.c_str(), lightsText(r.lights).c_str(), r.backend.c_str());
   if (req.backend == vkrt::Backend::Cpu)
     std::fprintf(stderr, ", %s", vkrt::counted(r.threads, "thread", "threads").c_str());
+  if (!r.estimator.empty()) std::fprintf(stderr, "\n  estimator: %s", r.estimator.c_str());
   std::fprintf(stderr, "\n  parse   %9.1f ms\n", r.parseSeconds * ms);
   std::fprintf(stderr, "  build   %9.1f ms  (BVH, %s)\n", r.buildSeconds * ms,
                vkrt::counted(r.bvhNodes, "node", "nodes").c_str());

@@ -100,7 +100,7 @@ void keySample() {
 float random(uint dimension) {
   float r = rngUniformKeyed(sampleKey, dimension);
   if (path.strataSide == 0u) return r;
-  return rngStratify(r, pixelKey, path.firstSample + sampleIndex, dimension, path.strataSide, path.strataStep);
+  return rngStratify(r, pixelKey, path.firstSample + sampleIndex, dimension, path.strataSide);
 }
 // The number of `slot` at the current path vertex.
 float randomAt(uint slot) { return random(rngDimension(bounce, slot)); }

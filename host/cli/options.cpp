@@ -115,7 +115,11 @@ std::string makeUsageText() {
          "                         (default 0); another seed gives independent samples\n"
          "  --sampler independent|stratified  path integrators: each sample's numbers independent\n"
          "                         (default, as the scene rules say) or stratified across a pixel's\n"
-         "                         samples (camera, first bounce, first light sample): less noise\n"
+         "                         samples (camera jitter, each bounce's direction and first light\n"
+         "                         sample): less noise\n"
+         "  --estimator scene|best  pathtracer: the scene's importancesampling and\n"
+         "                         nexteventestimation (default), or the least noisy for the same\n"
+         "                         image: BRDF sampling and MIS (with --sampler stratified: least noise)\n"
          "  --time SECONDS         path integrators: render batches of samples until the time is up,\n"
          "                         then write (at most --spp samples when given, else no limit);\n"
          "                         the samples taken are reported\n"
@@ -211,7 +215,7 @@ namespace {
 constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert", "grade"};
 constexpr std::string_view kLongOptions[] = {
     "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "variant",
-    "maxdepth", "spp", "seed", "sampler", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
+    "maxdepth", "spp", "seed", "sampler", "estimator", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
     "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version", "watch"};
 constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "quiet", "help"};
 constexpr std::string_view kConvertLongOptions[] = {"quiet", "help"};
@@ -580,6 +584,14 @@ Options parseOptions(const std::vector<std::string>& args) {
         o.request.stratified = false;
       else
         throw UsageError("unknown --sampler '" + echoed(v) + "' (expected: independent or stratified)");
+    } else if (name == "--estimator") {
+      std::string v = take(name);
+      if (v == "scene")
+        o.request.estimator = Estimator::Scene;
+      else if (v == "best")
+        o.request.estimator = Estimator::Best;
+      else
+        throw UsageError("unknown --estimator '" + echoed(v) + "' (expected: scene or best)");
     } else if (name == "--time") {
       o.request.timeLimitSeconds = timeValue(take(name));
     } else if (name == "--maxdepth") {

@@ -41,11 +41,11 @@ struct AreaLight {
 // The random numbers of one camera sample (gpu_types.h): keyed by seed, pixel, sample.
 struct SampleNumbers {
   std::uint32_t seed, pixel, sample;
-  std::uint32_t strataSide = 0, strataStep = 1;   // stratified samples (gpu_rng.h); side 0: none
+  std::uint32_t strataSide = 0;   // stratified samples (gpu_rng.h); side 0: none
   double at(std::uint32_t dimension) const {
     const float r = gpu::rngUniform(seed, pixel, sample, dimension);
     if (strataSide == 0) return r;
-    return gpu::rngStratify(r, gpu::rngPixelKey(seed, pixel), sample, dimension, strataSide, strataStep);
+    return gpu::rngStratify(r, gpu::rngPixelKey(seed, pixel), sample, dimension, strataSide);
   }
   double at(std::uint32_t bounce, std::uint32_t slot) const { return at(gpu::rngDimension(bounce, slot)); }
 };
@@ -374,7 +374,6 @@ RadianceImage renderPathReference(const SceneDesc& scene, const Bvh& bvh, const 
   image.samples = count;
   PathIntegrator integrator(scene, bvh);
   const std::uint32_t strataSide = options.stratified ? gpu::rngStrataSide(totalSpp) : 0u;
-  const std::uint32_t strataStep = gpu::rngStrataStep(strataSide);
   shadeTiles(
       region, options.threads, count,
       [&](int x, int y, RayCounts& local) {
@@ -382,7 +381,7 @@ RadianceImage renderPathReference(const SceneDesc& scene, const Bvh& bvh, const 
                                     static_cast<std::uint32_t>(x);
         dvec3 sum(0.0);
         for (std::uint32_t s = first; s < first + count; ++s) {
-          const SampleNumbers rng{options.seed, pixel, s, strataSide, strataStep};
+          const SampleNumbers rng{options.seed, pixel, s, strataSide};
           // spp 1 samples the pixel's centre; otherwise a uniform point in the pixel.
           const double u = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelX);
           const double v = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelY);

@@ -113,7 +113,6 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   path.sampleCount = samples;
   path.jitter = renderSpp == 1 ? 0u : 1u;
   path.strataSide = options.stratified ? gpu::rngStrataSide(renderSpp) : 0u;
-  path.strataStep = gpu::rngStrataStep(path.strataSide);
   path.triangleCount = static_cast<std::uint32_t>(scene.triangles.size());
   path.sphereCount = static_cast<std::uint32_t>(scene.spheres.size());
   Buffer pathBuffer(context, sizeof path);

@@ -183,6 +183,34 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
   return image;
 }
 
+// Warns (or with --strict refuses) an option that the scene's integrator ignores.
+void warnOption(const RenderRequest& request, const std::string& warning) {
+  if (request.strict) throw UsageError(warning + " [--strict]");
+  if (request.onOptionWarning) request.onOptionWarning(warning);
+}
+
+// --estimator best on a `pathtracer` scene: BRDF sampling, and next-event estimation combined
+// with the scattered rays' hits by MIS (doc/path-tracing.md, "Estimators": the same image in
+// the limit). Returns the path tracer's estimator as rendered ("" for other integrators).
+std::string applyEstimator(const RenderRequest& request, SceneDesc& scene) {
+  PathSettings& path = scene.path;
+  if (path.integrator != Integrator::PathTracer) {
+    if (request.estimator == Estimator::Best)
+      warnOption(request, "--estimator best does not apply to " + scene.sourcePath + ": its integrator is " +
+                              std::string(nameOf(path.integrator)) + ", not pathtracer");
+    return "";
+  }
+  if (request.estimator == Estimator::Best) {
+    path.sampling = Sampling::Brdf;
+    path.nextEvent = NextEvent::Mis;
+  }
+  return "nexteventestimation " + std::string(kNextEventNames[static_cast<int>(path.nextEvent)]) +
+         ", importancesampling " + std::string(kSamplingNames[static_cast<int>(path.sampling)]) +
+         ", russianroulette " + (path.russianRoulette ? "on" : "off") +
+         (request.stratified ? ", stratified samples" : ", independent samples") +
+         (request.estimator == Estimator::Best ? " (--estimator best)" : "");
+}
+
 // The samples of this render, and the warnings for options that do not apply (the Whitted
 // model has one deterministic sample: --spp, --seed and --time change nothing).
 SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress) {
@@ -197,10 +225,8 @@ SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, Prog
       std::string list;
       for (std::size_t i = 0; i < given.size(); ++i)
         list += (i == 0 ? "" : i + 1 == given.size() ? " and " : ", ") + given[i];
-      std::string w = list + (given.size() > 1 ? " do" : " does") + " not apply to " + scene.sourcePath +
-                      ": its integrator is raytracer (one deterministic sample per pixel)";
-      if (request.strict) throw UsageError(w + " [--strict]");
-      if (request.onOptionWarning) request.onOptionWarning(w);
+      warnOption(request, list + (given.size() > 1 ? " do" : " does") + " not apply to " + scene.sourcePath +
+                              ": its integrator is raytracer (one deterministic sample per pixel)");
     }
     plan.progressive.spp = 1;   // one batch; the bar counts pixels (the backend's progress)
     plan.progressive.progress = nullptr;
@@ -414,6 +440,7 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   if (!prepared.parsed.warnings.empty() && request.onWarnings) request.onWarnings(prepared.parsed.warnings);
   if (request.maxDepth >= 0) scene.maxDepth = request.maxDepth;
   applySizeOverride(request, scene);
+  report.estimator = applyEstimator(request, scene);
   if (checkOutput) {
     report.outputPath = resolveOutput(scene, request);
     if (request.onOutput) request.onOutput(report.outputPath);

@@ -28,6 +28,9 @@ class Context;   // gpu/context.h: made and used in render.cpp only
 
 enum class Backend { Vulkan, Cpu };
 
+// The path tracer's estimator (RenderRequest::estimator).
+enum class Estimator { Scene, Best };
+
 struct RenderRequest {
   std::string scenePath;
   std::optional<std::string> output;   // overrides the scene's `output`
@@ -63,6 +66,11 @@ struct RenderRequest {
   // Path integrators: stratified samples (--sampler stratified; gpu_rng.h, rngStratify)
   // instead of independent ones. The Whitted model ignores it.
   bool stratified = false;
+  // The path tracer's estimator (--estimator): the scene's own (`importancesampling`,
+  // `nexteventestimation`), or the least noisy one for the same image (Estimator::Best: BRDF
+  // sampling, and light and BRDF samples combined by MIS). Other integrators ignore it, with a
+  // warning (onOptionWarning).
+  Estimator estimator = Estimator::Scene;
   // Every warning is an error: the scene's (doc/scene-format.md, "Warnings and errors"), and pixels whose colour came
   // out NaN or infinite (then no image is written).
   bool strict = false;
@@ -111,6 +119,9 @@ struct RenderReport {
   std::uint32_t batches = 1;
   bool timeUp = false;
   double gamma = 1.0;
+  // The path tracer's estimator as rendered: "nexteventestimation mis, importancesampling
+  // brdf, ..." (empty for the other integrators).
+  std::string estimator;
 };
 
 // What scenes rendered one after another in one process share: the Vulkan context (instance

@@ -40,9 +40,8 @@ constexpr double kMaxColour = 3.4028234663852886e38;   // the largest float
 constexpr double kMaxRoughness = 1e4;
 
 // The keyword values of doc/path-tracing.md, "Commands", in the order of their enums (those of
-// `integrator`: kIntegratorNames, integrator_table.h).
-constexpr std::string_view kNextEventNames[] = {"off", "on", "mis"};
-constexpr std::string_view kSamplingNames[] = {"hemisphere", "cosine", "brdf"};
+// `integrator`: kIntegratorNames, integrator_table.h; kNextEventNames, kSamplingNames:
+// scene_desc.h).
 constexpr std::string_view kBrdfNames[] = {"phong", "ggx"};
 constexpr std::string_view kOnOffNames[] = {"on", "off"};
 

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -21,6 +22,9 @@ using glm::dvec3;
 // integrator_table.h).
 enum class NextEvent { Off, On, Mis };
 enum class Sampling { Hemisphere, Cosine, Brdf };
+// Their keywords (`nexteventestimation`, `importancesampling`), in the enums' order.
+inline constexpr std::string_view kNextEventNames[] = {"off", "on", "mis"};
+inline constexpr std::string_view kSamplingNames[] = {"hemisphere", "cosine", "brdf"};
 enum class BrdfModel { Phong, Ggx };
 
 struct Material {

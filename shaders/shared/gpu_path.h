@@ -83,8 +83,8 @@ struct GpuPathParams {
   uint triangleCount;       // the scene's triangles and spheres (read with kPathSpecTestAll)
   uint sphereCount;
   uint strataSide;          // stratified samples (gpu_rng.h, rngStratify): side x side strata; 0: independent
-  uint strataStep;          // rngStrataStep(strataSide)
-  uint pad0;                // size 144
+  uint pad0;
+  uint pad1;                // size 144
 };
 GPU_ASSERT_SIZE(GpuPathParams, 144)
 GPU_ASSERT_OFFSET(GpuPathParams, integrator, 64)

@@ -65,61 +65,86 @@ GPU_FN float rngUniform(uint seed, uint pixel, uint sampleIndex, uint dimension)
 GPU_FN uint rngDimension(uint bounce, uint slot) { return kRngBounceBase + bounce * kRngBounceStride + slot; }
 
 // Stratified samples (`--sampler stratified`; doc/design.md, "Random numbers and sampling
-// rules"). Three pairs of dimensions are stratified across the samples of a pixel: the
-// camera jitter (kRngPixelX/Y), the first vertex's direction (bounce 0, kRngSlotDirectionU/V)
-// and its first light sample (bounce 0, the first two light slots). With `side` x `side`
-// strata (side at most kRngMaxStrataSide; 0: none), sample s < side^2 of a pixel takes, in
-// each pair p, the stratum (step s + offset_p) mod side^2, offset_p a hash of the pixel's key
-// and p: a permutation of the strata, so that the first side^2 samples fill every stratum
-// once; within it, the pair's two independent numbers. Every sample is still uniform on its
-// own (the offset is), so a render stopped after any number of samples is unbiased; samples
-// from side^2 on are independent.
-GPU_CONST uint kRngMaxStrataSide = 256u;        // step s and side^2 stay below 2^32
+// rules"). These pairs of dimensions are stratified across the samples of a pixel: the camera
+// jitter (kRngPixelX/Y), and at every path vertex its direction (kRngSlotDirectionU/V) and its
+// first light sample (the first two light slots). With `side` x `side` strata (side at most
+// kRngMaxStrataSide; 0: none), sample s < side^2 of a pixel takes, in each pair p, the stratum
+// (perm_p(s) + offset_p) mod side^2: perm_p a permutation of the strata and offset_p a number
+// below side^2, both chosen by a hash of the pixel's key and p, so that the first side^2
+// samples fill every stratum once, and different pairs' strata are not related; within the
+// stratum, the pair's two independent numbers. Every sample is still uniform on its own (the
+// offset is), so a render stopped after any number of samples is unbiased; samples from
+// side^2 on are independent.
+GPU_CONST uint kRngMaxStrataSide = 256u;        // side^2 stays below 2^32
 GPU_CONST float kRngBelowOne = 0.99999994f;     // the largest float below 1
+GPU_CONST uint kRngNotStratified = 0xFFFFFFFFu;
 
 // The key of a pixel's strata permutation: the seed's and the pixel's, not the sample's.
 GPU_FN uint rngPixelKey(uint seed, uint pixel) { return rngHash(pixel + rngHash(seed)); }
 
-// The pair of `dimension` among the stratified ones (0, 1, 3), or 0xFFFFFFFF.
+// The pair of `dimension` among the stratified ones, or kRngNotStratified: 0 for the camera
+// jitter; at vertex b, 4 b + 1 for its direction and 4 b + 3 for its first light sample.
 GPU_FN uint rngStratifiedPair(uint dimension) {
-  uint pair = dimension >> 1u;   // 0: pixel; 1: bounce 0 direction; 2: lobe and roulette; 3: first light sample
-  return dimension < 8u && pair != 2u ? pair : 0xFFFFFFFFu;
+  if (dimension < kRngBounceBase) return 0u;
+  uint bounce = (dimension - kRngBounceBase) / kRngBounceStride;
+  uint slot = (dimension - kRngBounceBase) % kRngBounceStride;
+  if (slot == kRngSlotDirectionU || slot == kRngSlotDirectionV) return 4u * bounce + 1u;
+  if (slot == kRngSlotLightBase || slot == kRngSlotLightBase + 1u) return 4u * bounce + 3u;
+  return kRngNotStratified;
+}
+
+// A permutation of 0 .. n-1 chosen by `key`, at i < n: the hash-based permutation of Kensler
+// ("Correlated Multi-Jittered Sampling", Pixar technical memo 13-01, 2013): invertible steps
+// on the bits of the next power of two, repeated while the value falls outside [0, n).
+GPU_FN uint rngPermute(uint i, uint n, uint key) {
+  uint w = n - 1u;
+  w |= w >> 1u;
+  w |= w >> 2u;
+  w |= w >> 4u;
+  w |= w >> 8u;
+  w |= w >> 16u;
+  do {
+    i ^= key;
+    i *= 0xe170893du;
+    i ^= key >> 16u;
+    i ^= (i & w) >> 4u;
+    i ^= key >> 8u;
+    i *= 0x0929eb3fu;
+    i ^= key >> 23u;
+    i ^= (i & w) >> 1u;
+    i *= 1u | key >> 27u;
+    i *= 0x6935fa69u;
+    i ^= (i & w) >> 11u;
+    i *= 0x74dcb303u;
+    i ^= (i & w) >> 2u;
+    i *= 0x9e501cc3u;
+    i ^= (i & w) >> 2u;
+    i *= 0xc860a3dfu;
+    i &= w;
+    i ^= i >> 5u;
+  } while (i >= n);
+  return i;
 }
 
 // The number of `dimension` for global sample `sampleIndex` of the pixel whose key is
 // `pixelKey`, given that dimension's independent number `r`: r itself outside the strata.
-GPU_FN float rngStratify(float r, uint pixelKey, uint sampleIndex, uint dimension, uint side, uint step) {
+GPU_FN float rngStratify(float r, uint pixelKey, uint sampleIndex, uint dimension, uint side) {
   uint pair = rngStratifiedPair(dimension);
   uint n = side * side;
-  if (side == 0u || pair == 0xFFFFFFFFu || sampleIndex >= n) return r;
-  uint stratum = (step * sampleIndex + rngHash(pair + pixelKey) % n) % n;
+  if (side == 0u || pair == kRngNotStratified || sampleIndex >= n) return r;
+  uint key = rngHash(pair + pixelKey);
+  uint stratum = (rngPermute(sampleIndex, n, key) + rngHash(key) % n) % n;
   uint cell = (dimension & 1u) == 0u ? stratum % side : stratum / side;
   float x = (float(cell) + r) / float(side);
   return x < kRngBelowOne ? x : kRngBelowOne;
 }
 
 // The strata of a render of `spp` samples: side = floor(sqrt(spp)), at most
-// kRngMaxStrataSide (0 for one sample: nothing to stratify), and the step, the number near
-// 0.618 side^2 that shares no factor with side^2 (consecutive samples land far apart).
+// kRngMaxStrataSide (0 for one sample: nothing to stratify).
 GPU_FN uint rngStrataSide(uint spp) {
   uint side = 0u;
   while (side < kRngMaxStrataSide && (side + 1u) * (side + 1u) <= spp) side += 1u;
   return side < 2u ? 0u : side;
 }
-GPU_FN uint rngStrataStep(uint side) {
-  uint n = side * side;
-  if (n < 2u) return 1u;
-  uint step = uint(float(n) * 0.618034f);
-  for (;; step -= 1u) {
-    uint a = step, b = n;
-    while (b != 0u) {
-      uint t = a % b;
-      a = b;
-      b = t;
-    }
-    if (a == 1u) return step;
-  }
-}
-
 GPU_END
 #endif  // VKRT_GPU_RNG_H

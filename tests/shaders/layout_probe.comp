@@ -66,7 +66,7 @@ void main() {
   put(pp.maxDepth); put(pp.lightSamples); put(pp.lightStrata); put(pp.quadLightCount);
   put(pp.lightCount); put(pp.seed); put(pp.firstSample); put(pp.sampleCount);
   put(pp.jitter); put(pp.emitterCount); put(pp.emitterWeightScale); put(pp.triangleCount);
-  put(pp.sphereCount); put(pp.strataSide); put(pp.strataStep); put(pp.pad0);
+  put(pp.sphereCount); put(pp.strataSide); put(pp.pad0); put(pp.pad1);
   GpuEmitter e = emitters[1];
   put(e.primRef); put(e.cdf);
   GpuWhittedState w = whittedStates[1];
