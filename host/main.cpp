@@ -25,6 +25,7 @@
 #include "image/image_file.h"
 #include "image/image_read.h"
 #include "image/merge.h"
+#include "gpu/loader_drivers.h"
 #include "interrupt.h"
 #include "render/render.h"
 #include "scene/diagnostic.h"
@@ -403,6 +404,8 @@ int main(int argc, char** argv) {
     std::printf("vkrt %s\n", VKRT_VERSION);
     return kExitOk;
   }
+  // Before any thread starts and before the Vulkan loader is opened.
+  vkrt::skipDriversWithoutDevices();
   // Before any file is opened: a signal stops every command cleanly, its temporary file removed.
   vkrt::installInterruptHandlers();
   if (!options.quiet)

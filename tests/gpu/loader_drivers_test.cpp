@@ -1,0 +1,81 @@
+// The drivers vkrt asks the Vulkan loader to skip (gpu/loader_drivers.h): those that reach GPUs
+// only through DRM render nodes, on a machine without one; never a user's own choice.
+#include <filesystem>
+#include <map>
+
+#include <gtest/gtest.h>
+
+#include "gpu/loader_drivers.h"
+#include "test_support.h"
+
+using namespace vkrt;
+using namespace vkrt::test;
+
+namespace {
+
+std::vector<std::pair<std::string, std::string>> settingsWith(const std::map<std::string, std::string>& env,
+                                                              bool hasRenderNode) {
+  return loaderDriverSettings(
+      [&](const char* name) {
+        auto it = env.find(name);
+        return it == env.end() ? static_cast<const char*>(nullptr) : it->second.c_str();
+      },
+      hasRenderNode);
+}
+
+bool hasSetting(const std::vector<std::pair<std::string, std::string>>& settings, const std::string& name) {
+  for (const auto& s : settings)
+    if (s.first == name) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(LoaderDrivers, WithoutARenderNodeTheGpuDriversAreSkipped) {
+  auto settings = settingsWith({}, false);
+  ASSERT_EQ(settings.size(), 2u);
+  EXPECT_EQ(settings[0].first, "VK_LOADER_DRIVERS_DISABLE");
+  for (const char* driver : {"intel_icd*", "intel_hasvk_icd*", "radeon_icd*"})
+    EXPECT_NE(settings[0].second.find(driver), std::string::npos) << driver;
+  for (const char* kept : {"lvp", "nvidia", "swiftshader"})   // drivers that need no render node
+    EXPECT_EQ(settings[0].second.find(kept), std::string::npos) << kept;
+  EXPECT_EQ(settings[1], std::make_pair(std::string("VK_LOADER_LAYERS_DISABLE"), std::string("VK_LAYER_MESA_device_select")));
+}
+
+TEST(LoaderDrivers, WithARenderNodeNothingIsSkipped) { EXPECT_TRUE(settingsWith({}, true).empty()); }
+
+TEST(LoaderDrivers, TheUsersChoiceStands) {
+  for (const char* drivers : {"VK_ICD_FILENAMES", "VK_DRIVER_FILES", "VK_ADD_DRIVER_FILES", "VK_LOADER_DRIVERS_SELECT",
+                              "VK_LOADER_DRIVERS_DISABLE"}) {
+    auto settings = settingsWith({{drivers, "x"}}, false);
+    EXPECT_FALSE(hasSetting(settings, "VK_LOADER_DRIVERS_DISABLE")) << drivers;
+    EXPECT_TRUE(hasSetting(settings, "VK_LOADER_LAYERS_DISABLE")) << drivers;
+  }
+  for (const char* layers : {"VK_LOADER_LAYERS_ENABLE", "VK_LOADER_LAYERS_DISABLE", "VK_INSTANCE_LAYERS",
+                             "MESA_VK_DEVICE_SELECT"}) {
+    auto settings = settingsWith({{layers, "x"}}, false);
+    EXPECT_TRUE(hasSetting(settings, "VK_LOADER_DRIVERS_DISABLE")) << layers;
+    EXPECT_FALSE(hasSetting(settings, "VK_LOADER_LAYERS_DISABLE")) << layers;
+  }
+}
+
+// The binary on this machine: without a render node, the loader's own log says an installed
+// Intel or Radeon driver was skipped at vkrt's request, and the devices listed are those the
+// loader lists with every driver (a user's VK_LOADER_DRIVERS_SELECT, obeyed as given).
+TEST(LoaderDrivers, TheBinarySkipsThemAndFindsTheSameDevices) {
+  if (hasDrmRenderNode()) GTEST_SKIP() << "this machine has a DRM render node: nothing is skipped here";
+  bool installed = false;
+  for (const char* name : {"intel_icd.x86_64.json", "radeon_icd.x86_64.json"})
+    installed = installed || std::filesystem::exists(std::string("/usr/share/vulkan/icd.d/") + name);
+  if (!installed) VKRT_SKIP_UNLESS_CI("no Mesa Intel or Radeon Vulkan driver installed to be skipped");
+  if (!installed) return;
+  RunResult logged = runVkrt("--list-devices", "VK_LOADER_DEBUG=driver");
+  EXPECT_EQ(logged.exitCode, 0) << logged.output;
+  EXPECT_NE(logged.output.find("disabled by env var 'VK_LOADER_DRIVERS_DISABLE'"), std::string::npos) << logged.output;
+  RunResult skipped = runVkrt("--list-devices");
+  RunResult every = runVkrt("--list-devices", "VK_LOADER_DRIVERS_SELECT='*'");
+  EXPECT_EQ(skipped.exitCode, 0) << skipped.output;
+  EXPECT_EQ(skipped.output, every.output);
+  RunResult chosen = runVkrt("--list-devices", "VK_LOADER_DEBUG=driver VK_LOADER_DRIVERS_SELECT='*'");
+  EXPECT_EQ(chosen.output.find("VK_LOADER_DRIVERS_DISABLE"), std::string::npos) << chosen.output;
+}
