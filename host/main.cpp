@@ -25,6 +25,7 @@
 #include "image/image_file.h"
 #include "image/image_read.h"
 #include "image/merge.h"
+#include "cli/warning_printers.h"
 #include "gpu/loader_drivers.h"
 #include "interrupt.h"
 #include "render/render.h"
@@ -41,20 +42,6 @@ using vkrt::kExitOk;
 std::exception_ptr failure() {
   if (int signal = vkrt::pendingInterrupt()) return std::make_exception_ptr(vkrt::Interrupted(signal));
   return std::current_exception();
-}
-
-// The scene's warnings, on stderr before the render starts; -q leaves them out.
-std::function<void(const std::vector<vkrt::Diagnostic>&)> warningPrinter(bool quiet) {
-  if (quiet) return nullptr;
-  return [](const std::vector<vkrt::Diagnostic>& warnings) {
-    for (const vkrt::Diagnostic& w : warnings) std::fprintf(stderr, "%s\n", w.format().c_str());
-  };
-}
-
-// Warnings about options that the scene shows do not apply (--spp for a Whitted scene).
-std::function<void(const std::string&)> optionWarningPrinter(bool quiet) {
-  if (quiet) return nullptr;
-  return [](const std::string& w) { std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str()); };
 }
 
 // " (N samples)" after a path integrator's output, with "time up" when --time ended it.
@@ -208,8 +195,8 @@ int compareBackends(const vkrt::Options& o) {
   for (int i = 0; i < 2; ++i) {
     vkrt::RenderRequest request = o.request;
     request.backend = backends[i];
-    request.onWarnings = warningPrinter(o.quiet || i > 0);   // the same scene twice: once
-    request.onOptionWarning = optionWarningPrinter(o.quiet || i > 0);
+    request.onWarnings = vkrt::warningPrinter(o.quiet || i > 0);   // the same scene twice: once
+    request.onOptionWarning = vkrt::optionWarningPrinter(o.quiet || i > 0);
     vkrt::ProgressBar progress(!o.quiet && !o.json);
     images[i] = vkrt::encodeImage(vkrt::renderSceneInMemory(request, progress, reports[i], false), reports[i].gamma);
     if (o.stats && !o.json && !o.quiet) printStats(request, reports[i]);
@@ -263,8 +250,8 @@ int renderBatch(const vkrt::Options& o) {
     auto t0 = std::chrono::steady_clock::now();
     vkrt::RenderRequest request = o.request;
     request.scenePath = scenePath;
-    request.onWarnings = warningPrinter(o.quiet);
-    request.onOptionWarning = optionWarningPrinter(o.quiet);
+    request.onWarnings = vkrt::warningPrinter(o.quiet);
+    request.onOptionWarning = vkrt::optionWarningPrinter(o.quiet);
     const std::string role = "the output of " + scenePath;
     request.onOutput = [&files, &role](const std::string& path) { files.checkOutput(path, role); };
     int status = kExitOk;
@@ -374,8 +361,8 @@ int renderOne(vkrt::Options& options) {
   options.request.onOutput = [&files](const std::string& path) { files.checkOutput(path, "the image"); };
   vkrt::ProgressBar progress(!options.quiet);
   vkrt::Image image;
-  options.request.onWarnings = warningPrinter(options.quiet);
-  options.request.onOptionWarning = optionWarningPrinter(options.quiet);
+  options.request.onWarnings = vkrt::warningPrinter(options.quiet);
+  options.request.onOptionWarning = vkrt::optionWarningPrinter(options.quiet);
   vkrt::RenderReport report = vkrt::renderSceneFile(options.request, progress, reference ? &image : nullptr);
   if (options.stats) printStats(options.request, report);
   warnNonFinite(options, report);

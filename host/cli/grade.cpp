@@ -22,6 +22,7 @@
 
 #include "cli/exit_status.h"
 #include "cli/run_files.h"   // RefusedOutput
+#include "cli/warning_printers.h"
 #include "counted.h"
 #include "errors.h"
 #include "grade/grade_inputs.h"
@@ -261,10 +262,8 @@ Rendered renderScenes(const Options& o, const std::vector<std::string>& scenes,
     r.submission.images[key] = scene;
     RenderRequest request = o.request;
     request.scenePath = scene;
-    if (!o.quiet)
-      request.onWarnings = [](const std::vector<Diagnostic>& warnings) {
-        for (const Diagnostic& w : warnings) std::fprintf(stderr, "%s\n", w.format().c_str());
-      };
+    request.onWarnings = warningPrinter(o.quiet);
+    request.onOptionWarning = optionWarningPrinter(o.quiet);
     try {
       ProgressBar progress(!o.quiet);
       RenderReport report;

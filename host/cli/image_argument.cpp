@@ -3,7 +3,6 @@
 
 #include <cstring>
 #include <fstream>
-#include <string_view>
 
 #include <sys/stat.h>
 
@@ -13,16 +12,6 @@ namespace vkrt {
 namespace {
 
 bool blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
-
-bool endsWithIgnoringCase(const std::string& s, std::string_view suffix) {
-  if (s.size() < suffix.size()) return false;
-  for (std::size_t i = 0; i < suffix.size(); ++i) {
-    char c = s[s.size() - suffix.size() + i];
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-    if (c != suffix[i]) return false;
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -41,10 +30,7 @@ std::optional<std::string> imageKind(const std::string& path) {
       return std::nullopt;   // read, and not an image: a scene, or the parser says what is wrong
     }
   }
-  if (hasImageExtension(path)) return std::string(imageFormatFor(path).name);
-  for (std::string_view suffix : {".jpg", ".jpeg"})
-    if (endsWithIgnoringCase(path, suffix)) return "JPEG";
-  return std::nullopt;
+  return imageKindByName(path);
 }
 
 }  // namespace vkrt

@@ -7,6 +7,7 @@
 
 #include "cli/exit_status.h"
 #include "cli/file_watch.h"
+#include "cli/warning_printers.h"
 #include "cli/run_files.h"
 #include "counted.h"
 #include "image/image_file.h"
@@ -53,14 +54,11 @@ class Watcher {
     const auto t0 = std::chrono::steady_clock::now();
     RenderRequest request = o_.request;
     std::size_t warnings = 0;
-    request.onWarnings = [&](const std::vector<Diagnostic>& w) {
+    request.onWarnings = [&warnings, print = warningPrinter(o_.quiet)](const std::vector<Diagnostic>& w) {
       warnings = w.size();
-      if (!o_.quiet)
-        for (const Diagnostic& d : w) std::fprintf(stderr, "%s\n", d.format().c_str());
+      if (print) print(w);
     };
-    request.onOptionWarning = [&](const std::string& w) {
-      if (!o_.quiet && round == 1) std::fprintf(stderr, "vkrt: warning: %s\n", w.c_str());
-    };
+    request.onOptionWarning = optionWarningPrinter(o_.quiet || round != 1);
     // Named anew each round: an editor that saves by renaming gives the scene another inode,
     // and its old one may come back as the image's.
     RunFiles files;

@@ -54,12 +54,12 @@ bool isFolder(const fs::directory_entry& e) {
 
 bool isImageFile(const fs::directory_entry& e) {
   std::error_code ec;
-  return e.is_regular_file(ec) && hasReadableImageName(e.path().string());
+  return e.is_regular_file(ec) && imageKindByName(e.path().string());
 }
 
 bool isOtherFile(const fs::directory_entry& e) {
   std::error_code ec;
-  return e.is_regular_file(ec) && !hasReadableImageName(e.path().string());
+  return e.is_regular_file(ec) && !imageKindByName(e.path().string());
 }
 
 // The images under `folder` (itself and `depth` levels below), in path order, and the other
@@ -123,11 +123,6 @@ std::string sceneOfFileName(const std::string& path, bool reference) {
 }
 
 std::string sceneKey(const std::string& scene) { return lower(scene); }
-
-bool hasReadableImageName(const std::string& path) {
-  const std::string ext = lower(fs::path(path).extension().string());
-  return hasImageExtension(path) || ext == ".jpg" || ext == ".jpeg";
-}
 
 bool naturalLess(const std::string& a, const std::string& b) {
   std::size_t i = 0, j = 0;

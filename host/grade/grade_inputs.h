@@ -24,10 +24,6 @@ std::string sceneOfFileName(const std::string& path, bool reference = false);
 // The key names are matched by: the scene in lower case ("Scene5.PNG" is scene5).
 std::string sceneKey(const std::string& scene);
 
-// Whether vkrt reads `path` as an image, by its name: an extension of image/image_file.h's
-// table, .jpg or .jpeg (any case).
-bool hasReadableImageName(const std::string& path);
-
 // The images directly in `folder`, in the order people count them (scene2 before scene10).
 // Throws IoError when `folder` is not a folder that can be listed, UsageError when it holds
 // no image or two images for one scene.

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include "errors.h"
@@ -124,6 +125,14 @@ const ImageFormat& imageFormatFor(const std::string& path) {
 }
 
 bool hasImageExtension(const std::string& path) { return formatNamed(path) != nullptr; }
+
+std::optional<std::string> imageKindByName(const std::string& path) {
+  if (const ImageFormat* format = formatNamed(path)) return std::string(format->name);
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".jpg" || ext == ".jpeg") return std::string("JPEG");
+  return std::nullopt;
+}
 
 bool holdsLinearFloat(const std::string& path) { return imageFormatFor(path).linearFloat; }
 

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -64,6 +65,10 @@ const ImageFormat& imageFormatFor(const std::string& path);
 // True when `path` ends in an extension of the table (any case): a name vkrt writes as its
 // extension says. Any other name gets the default format, and a warning.
 bool hasImageExtension(const std::string& path);
+
+// The format vkrt reads `path` as, by its name alone (any case): the table's for one of its
+// extensions, "JPEG" for .jpg or .jpeg (read, never written); nothing for any other name.
+std::optional<std::string> imageKindByName(const std::string& path);
 
 // Whether what imageFormatFor(path) writes is linear float (an 8-bit image cannot be).
 bool holdsLinearFloat(const std::string& path);

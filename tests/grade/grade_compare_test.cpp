@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "errors.h"
+#include "image/image_file.h"
 #include "grade/grade_compare.h"
 #include "grade/grade_inputs.h"
 #include "grade/grade_report.h"
@@ -42,9 +43,10 @@ TEST(GradeNames, FileNamesMatchScenesWhateverTheCaseOrTheGradersPrefix) {
   EXPECT_EQ(sceneOfFileName("a/b/scene4-ambient.png"), "scene4-ambient");
   EXPECT_EQ(sceneOfFileName("ref_.png", true), "ref_");   // nothing after the prefix: the name itself
   EXPECT_EQ(sceneKey("Scene5"), sceneKey("scene5"));
-  EXPECT_TRUE(hasReadableImageName("x.PNG"));
-  EXPECT_TRUE(hasReadableImageName("x.jpeg"));
-  EXPECT_FALSE(hasReadableImageName("x.test"));
+  EXPECT_EQ(imageKindByName("x.PNG"), "PNG");
+  EXPECT_EQ(imageKindByName("x.jpeg"), "JPEG");
+  EXPECT_EQ(imageKindByName("dir.jpg/x.JPG"), "JPEG");
+  EXPECT_FALSE(imageKindByName("x.test"));
 }
 
 TEST(GradeNames, ScenesSortAsPeopleCountThem) {
