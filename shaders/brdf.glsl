@@ -57,8 +57,12 @@ vec3 brdf(GpuMaterial m, vec3 n, vec3 wi, vec3 wo) {
   return f;
 }
 
-// The probability of the specular lobe under `importancesampling brdf` (doc/path-tracing.md, "Estimators").
+// The probability of the specular lobe under `importancesampling brdf` (doc/path-tracing.md, "Estimators"):
+// 0 for a lobe with nothing to sample, GGX whose alpha^2 is 0 (D has no density: only the
+// diffuse part reflects) and Phong of shininess 0 (flat over the hemisphere: cosine sampling
+// takes it all).
 float specularLobeChance(GpuMaterial m) {
+  if (isGgx(m) ? m.diffuse.w * m.diffuse.w == 0.0 : m.specular.w == 0.0) return 0.0;
   float kd = average(m.diffuse.rgb), ks = average(m.specular.rgb);
   float t = kd + ks > 0.0 ? ks / (kd + ks) : 0.0;
   return isGgx(m) ? max(0.25, t) : t;

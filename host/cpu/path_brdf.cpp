@@ -75,6 +75,11 @@ dvec3 evalBrdf(const Material& m, const dvec3& n, const dvec3& wi, const dvec3& 
 }
 
 double specularLobeProbability(const Material& m) {
+  // A lobe with nothing to sample: GGX whose alpha^2 is 0 in float32, as the shader computes
+  // it (D has no density there: only the diffuse part reflects), or Phong of shininess 0 (flat
+  // over the hemisphere: cosine sampling takes it all).
+  const float alpha = static_cast<float>(m.roughness);
+  if (m.brdf == BrdfModel::Phong ? m.shininess == 0.0 : alpha * alpha == 0.0f) return 0.0;
   const double kd = average(m.diffuse), ks = average(m.specular);
   const double ratio = kd + ks > 0.0 ? ks / (kd + ks) : 0.0;
   return m.brdf == BrdfModel::Phong ? ratio : std::max(0.25, ratio);

@@ -42,9 +42,11 @@ std::vector<std::pair<std::string, std::string>> loaderDriverSettings(
 
 bool hasDrmRenderNode() {
   std::error_code ec;
-  for (std::filesystem::directory_iterator it("/dev/dri", ec), end; !ec && it != end; it.increment(ec))
+  std::filesystem::directory_iterator it("/dev/dri", ec), end;
+  if (ec) return ec != std::errc::no_such_file_or_directory;   // unreadable: assume there may be one
+  for (; !ec && it != end; it.increment(ec))
     if (it->path().filename().string().rfind("renderD", 0) == 0) return true;
-  return false;
+  return static_cast<bool>(ec);
 }
 
 void skipDriversWithoutDevices() {

@@ -20,7 +20,7 @@ namespace vkrt {
 std::vector<std::pair<std::string, std::string>> loaderDriverSettings(
     const std::function<const char*(const char*)>& lookup, bool hasRenderNode);
 
-// Whether /dev/dri holds a render node.
+// Whether /dev/dri holds a render node (or may: a /dev/dri that cannot be read counts as one).
 bool hasDrmRenderNode();
 
 // Sets loaderDriverSettings(getenv, hasDrmRenderNode()) in the process environment. Call it

@@ -67,8 +67,8 @@ struct RenderRequest {
   // instead of independent ones. The Whitted model ignores it.
   bool stratified = false;
   // The path tracer's estimator (--estimator): the scene's own (`importancesampling`,
-  // `nexteventestimation`), or the least noisy one for the same image (Estimator::Best: BRDF
-  // sampling, and light and BRDF samples combined by MIS). Other integrators ignore it, with a
+  // `nexteventestimation`), or one for the same image that is usually less noisy
+  // (Estimator::Best: BRDF sampling, and light and BRDF samples combined by MIS). Other integrators ignore it, with a
   // warning (onOptionWarning).
   Estimator estimator = Estimator::Scene;
   // Every warning is an error: the scene's (doc/scene-format.md, "Warnings and errors"), and pixels whose colour came
