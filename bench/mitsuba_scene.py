@@ -22,47 +22,28 @@ import drjit as dr
 mi.set_variant("llvm_ad_rgb")   # before any class derives from Mitsuba's: they are per variant
 
 
-class ModifiedPhong(mi.BSDF):
-    """f = kd/pi + ks (s+2)/(2 pi) max(r.wo, 0)^s, one-sided (black from behind)."""
+class LobeAndCosine(mi.BSDF):
+    """A BSDF sampled as doc/path-tracing.md's "Direction sampling" says: with probability t a
+    direction from the subclass's lobe (`_lobe`), else cosine; `_f` and `_pdf` are the
+    subclass's. kd and ks come from the properties; one-sided (black from behind)."""
 
     def __init__(self, props):
         mi.BSDF.__init__(self, props)
         self.kd = mi.Color3f(props["kd_r"], props["kd_g"], props["kd_b"])
         self.ks = mi.Color3f(props["ks_r"], props["ks_g"], props["ks_b"])
-        self.s = props["shininess"]
         avg_kd = (props["kd_r"] + props["kd_g"] + props["kd_b"]) / 3
         avg_ks = (props["ks_r"] + props["ks_g"] + props["ks_b"]) / 3
-        self.t = avg_ks / (avg_kd + avg_ks) if avg_kd + avg_ks > 0 else 0.0
+        self.ratio = avg_ks / (avg_kd + avg_ks) if avg_kd + avg_ks > 0 else 0.0
         flags = mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.FrontSide
         self.m_components = [flags]
         self.m_flags = flags
-
-    def _mirror(self, wi):
-        return mi.Vector3f(-wi.x, -wi.y, wi.z)
-
-    def _f(self, wi, wo):
-        r = self._mirror(wi)
-        lobe = dr.power(dr.maximum(dr.dot(r, wo), 0.0), self.s)
-        return self.kd * dr.inv_pi + self.ks * ((self.s + 2) / (2 * math.pi)) * lobe
-
-    def _pdf(self, wi, wo):
-        cos_o = mi.Frame3f.cos_theta(wo)
-        r = self._mirror(wi)
-        lobe = dr.power(dr.maximum(dr.dot(r, wo), 0.0), self.s)
-        return (1 - self.t) * dr.maximum(cos_o, 0.0) * dr.inv_pi + self.t * (self.s + 1) / (2 * math.pi) * lobe
 
     def _valid(self, si, wo):
         return (mi.Frame3f.cos_theta(si.wi) > 0) & (mi.Frame3f.cos_theta(wo) > 0)
 
     def sample(self, ctx, si, sample1, sample2, active=True):
         cosine = mi.warp.square_to_cosine_hemisphere(sample2)
-        # The Phong lobe around r: cos theta = u^(1/(s+1)).
-        cos_t = dr.power(sample2.x, 1.0 / (self.s + 1))
-        sin_t = dr.safe_sqrt(1 - cos_t * cos_t)
-        phi = 2 * math.pi * sample2.y
-        lobe_local = mi.Vector3f(sin_t * dr.cos(phi), sin_t * dr.sin(phi), cos_t)
-        lobe = mi.Frame3f(self._mirror(si.wi)).to_world(lobe_local)
-        wo = dr.select(sample1 < self.t, lobe, cosine)
+        wo = dr.select(sample1 < self.t, self._lobe(si.wi, sample2), cosine)
         bs = mi.BSDFSample3f()
         bs.wo = wo
         bs.pdf = self._pdf(si.wi, wo)
@@ -87,24 +68,49 @@ class ModifiedPhong(mi.BSDF):
         pass
 
     def to_string(self):
-        return "ModifiedPhong"
+        return type(self).__name__
 
 
-class Ggx(mi.BSDF):
-    """f = kd/pi + F G D / (4 (n.wi)(n.wo)), alpha = roughness, Schlick's F with ks at normal
-    incidence; one-sided. Mitsuba's si.wi is the viewer's direction, wo the light's."""
+class ModifiedPhong(LobeAndCosine):
+    """f = kd/pi + ks (s+2)/(2 pi) max(r.wo, 0)^s; the lobe's chance t = avg(ks) / (avg(kd) +
+    avg(ks)), 0 for shininess 0 (a flat lobe: cosine sampling covers it)."""
 
     def __init__(self, props):
-        mi.BSDF.__init__(self, props)
-        self.kd = mi.Color3f(props["kd_r"], props["kd_g"], props["kd_b"])
-        self.ks = mi.Color3f(props["ks_r"], props["ks_g"], props["ks_b"])
+        LobeAndCosine.__init__(self, props)
+        self.s = props["shininess"]
+        self.t = self.ratio if self.s != 0 else 0.0
+
+    def _mirror(self, wi):
+        return mi.Vector3f(-wi.x, -wi.y, wi.z)
+
+    def _f(self, wi, wo):
+        r = self._mirror(wi)
+        lobe = dr.power(dr.maximum(dr.dot(r, wo), 0.0), self.s)
+        return self.kd * dr.inv_pi + self.ks * ((self.s + 2) / (2 * math.pi)) * lobe
+
+    def _pdf(self, wi, wo):
+        cos_o = mi.Frame3f.cos_theta(wo)
+        r = self._mirror(wi)
+        lobe = dr.power(dr.maximum(dr.dot(r, wo), 0.0), self.s)
+        return (1 - self.t) * dr.maximum(cos_o, 0.0) * dr.inv_pi + self.t * (self.s + 1) / (2 * math.pi) * lobe
+
+    def _lobe(self, wi, sample2):
+        # The Phong lobe around r: cos theta = u^(1/(s+1)).
+        cos_t = dr.power(sample2.x, 1.0 / (self.s + 1))
+        sin_t = dr.safe_sqrt(1 - cos_t * cos_t)
+        phi = 2 * math.pi * sample2.y
+        return mi.Frame3f(self._mirror(wi)).to_world(mi.Vector3f(sin_t * dr.cos(phi), sin_t * dr.sin(phi), cos_t))
+
+
+class Ggx(LobeAndCosine):
+    """f = kd/pi + F G D / (4 (n.wi)(n.wo)), alpha = roughness, Schlick's F with ks at normal
+    incidence; the lobe's chance t = max(0.25, avg(ks) / (avg(kd) + avg(ks))), 0 for roughness
+    0 (D has no density). Mitsuba's si.wi is the viewer's direction, wo the light's."""
+
+    def __init__(self, props):
+        LobeAndCosine.__init__(self, props)
         self.a = props["roughness"]
-        avg_kd = (props["kd_r"] + props["kd_g"] + props["kd_b"]) / 3
-        avg_ks = (props["ks_r"] + props["ks_g"] + props["ks_b"]) / 3
-        self.t = max(0.25, avg_ks / (avg_ks + avg_kd) if avg_kd + avg_ks > 0 else 0.0)
-        flags = mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.FrontSide
-        self.m_components = [flags]
-        self.m_flags = flags
+        self.t = max(0.25, self.ratio) if self.a != 0 else 0.0
 
     def _d(self, cos_h):
         a2 = self.a * self.a
@@ -131,41 +137,12 @@ class Ggx(mi.BSDF):
         lobe = self._d(cos_h) * cos_h / (4 * dr.abs(dr.dot(h, wo)))
         return (1 - self.t) * dr.maximum(cos_o, 0.0) * dr.inv_pi + self.t * lobe
 
-    def _valid(self, si, wo):
-        return (mi.Frame3f.cos_theta(si.wi) > 0) & (mi.Frame3f.cos_theta(wo) > 0)
-
-    def sample(self, ctx, si, sample1, sample2, active=True):
-        cosine = mi.warp.square_to_cosine_hemisphere(sample2)
+    def _lobe(self, wi, sample2):
+        # A half vector from D (theta_h = atan(alpha sqrt(u) / sqrt(1 - u))), wi reflected about it.
         theta = dr.atan(self.a * dr.sqrt(sample2.x) / dr.sqrt(1 - sample2.x))
         phi = 2 * math.pi * sample2.y
         h = mi.Vector3f(dr.sin(theta) * dr.cos(phi), dr.sin(theta) * dr.sin(phi), dr.cos(theta))
-        reflected = 2 * dr.dot(si.wi, h) * h - si.wi
-        wo = dr.select(sample1 < self.t, reflected, cosine)
-        bs = mi.BSDFSample3f()
-        bs.wo = wo
-        bs.pdf = self._pdf(si.wi, wo)
-        bs.eta = 1.0
-        bs.sampled_type = mi.UInt32(+mi.BSDFFlags.GlossyReflection)
-        bs.sampled_component = mi.UInt32(0)
-        ok = active & self._valid(si, wo) & (bs.pdf > 0)
-        value = self._f(si.wi, wo) * mi.Frame3f.cos_theta(wo) / dr.maximum(bs.pdf, 1e-20)
-        return bs, dr.select(ok, value, 0.0)
-
-    def eval(self, ctx, si, wo, active=True):
-        value = self._f(si.wi, wo) * mi.Frame3f.cos_theta(wo)
-        return dr.select(active & self._valid(si, wo), value, 0.0)
-
-    def pdf(self, ctx, si, wo, active=True):
-        return dr.select(active & self._valid(si, wo), self._pdf(si.wi, wo), 0.0)
-
-    def eval_pdf(self, ctx, si, wo, active=True):
-        return self.eval(ctx, si, wo, active), self.pdf(ctx, si, wo, active)
-
-    def traverse(self, callback):
-        pass
-
-    def to_string(self):
-        return "Ggx"
+        return 2 * dr.dot(wi, h) * h - wi
 
 
 _registered = False

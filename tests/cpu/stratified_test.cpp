@@ -4,7 +4,6 @@
 // indirect light the error at equal samples drops against independent samples.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -160,33 +159,13 @@ TEST(Stratified, LessErrorAtEqualSamplesAndNoBias) {
     return renderPathReference(s, bvh, o, nullptr);
   };
   const RadianceImage reference = render(1024, 1000, false);
-  auto mean = [](const RadianceImage& image) {
-    double m = 0;
-    for (float v : image.rgb) m += v;
-    return m / static_cast<double>(image.rgb.size());
-  };
-  auto mse = [&](const RadianceImage& image) {
-    double sum = 0;
-    for (std::size_t i = 0; i < image.rgb.size(); ++i) sum += (image.rgb[i] - reference.rgb[i]) * (image.rgb[i] - reference.rgb[i]);
-    return sum / static_cast<double>(image.rgb.size());
-  };
-  const int seeds = 6;
-  std::vector<double> means[2];
-  double error[2] = {0, 0};
-  for (std::uint32_t seed = 1; seed <= seeds; ++seed)
-    for (int stratified = 0; stratified < 2; ++stratified) {
-      RadianceImage image = render(16, seed, stratified == 1);
-      error[stratified] += mse(image) / seeds;
-      means[stratified].push_back(mean(image));
-    }
-  auto average = [](const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size()); };
-  double spread = 0;   // the independent renders' standard error of the mean
-  for (double m : means[0]) spread += (m - average(means[0])) * (m - average(means[0]));
-  spread = std::sqrt(spread / (seeds - 1) / seeds);
+  const EstimatorComparison c =
+      compareEstimators(reference, 6, [&](int stratified, std::uint32_t seed) { return render(16, seed, stratified == 1); });
+  const double mean = imageMean(reference);
   std::printf("[ stats    ] MSE at 16 spp: independent %.4g, stratified %.4g (ratio %.3f); mean %.4g, %.4g, reference %.4g "
-              "(standard error %.2g)\n", error[0], error[1], error[1] / error[0], average(means[0]), average(means[1]),
-              mean(reference), spread);
-  EXPECT_LT(error[1], 0.75 * error[0]);
-  EXPECT_NEAR(average(means[1]), mean(reference), 4 * spread + 1e-3 * mean(reference));
-  EXPECT_NEAR(average(means[0]), mean(reference), 4 * spread + 1e-3 * mean(reference));
+              "(standard error %.2g)\n", c.mse[0], c.mse[1], c.mse[1] / c.mse[0], c.mean[0], c.mean[1], mean,
+              c.standardError);
+  EXPECT_LT(c.mse[1], 0.75 * c.mse[0]);
+  EXPECT_NEAR(c.mean[1], mean, 4 * c.standardError + 1e-3 * mean);
+  EXPECT_NEAR(c.mean[0], mean, 4 * c.standardError + 1e-3 * mean);
 }

@@ -3,7 +3,6 @@
 // `nexteventestimation` say: the same image in the limit (doc/path-tracing.md, "Estimators"),
 // with less noise at equal samples; other integrators ignore it with a warning.
 #include <cmath>
-#include <numeric>
 
 #include <gtest/gtest.h>
 
@@ -50,9 +49,6 @@ RadianceImage renderBox(const std::string& scene, std::uint64_t spp, std::uint32
   return image;
 }
 
-double meanOf(const RadianceImage& image) {
-  return std::accumulate(image.rgb.begin(), image.rgb.end(), 0.0) / static_cast<double>(image.rgb.size());
-}
 
 }  // namespace
 
@@ -77,30 +73,16 @@ TEST(EstimatorBest, ReportsWhatItRenders) {
 TEST(EstimatorBest, SameImageLessNoise) {
   const std::string scene = boxWithHemisphereSampling(freshDir("estimator/noise"));
   const RadianceImage reference = renderBox(scene, 1024, 1000, Estimator::Scene);
-  auto mse = [&](const RadianceImage& image) {
-    double sum = 0;
-    for (std::size_t i = 0; i < image.rgb.size(); ++i) sum += (image.rgb[i] - reference.rgb[i]) * (image.rgb[i] - reference.rgb[i]);
-    return sum / static_cast<double>(image.rgb.size());
-  };
-  const int seeds = 6;
-  std::vector<double> means[2];
-  double error[2] = {0, 0};
-  for (std::uint32_t seed = 1; seed <= seeds; ++seed)
-    for (int best = 0; best < 2; ++best) {
-      RadianceImage image = renderBox(scene, 16, seed, best ? Estimator::Best : Estimator::Scene);
-      error[best] += mse(image) / seeds;
-      means[best].push_back(std::accumulate(image.rgb.begin(), image.rgb.end(), 0.0) / static_cast<double>(image.rgb.size()));
-    }
-  auto average = [](const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size()); };
-  double spread = 0;
-  for (double m : means[0]) spread += (m - average(means[0])) * (m - average(means[0]));
-  spread = std::sqrt(spread / (seeds - 1) / seeds);
+  const EstimatorComparison c = compareEstimators(reference, 6, [&](int best, std::uint32_t seed) {
+    return renderBox(scene, 16, seed, best ? Estimator::Best : Estimator::Scene);
+  });
+  const double mean = imageMean(reference);
   std::printf("[ stats    ] MSE at 16 spp: scene's estimator %.4g, best %.4g (ratio %.3f); mean %.4g, %.4g, reference %.4g "
-              "(standard error %.2g)\n", error[0], error[1], error[1] / error[0], average(means[0]), average(means[1]),
-              meanOf(reference), spread);
-  EXPECT_LT(error[1], 0.6 * error[0]);
-  EXPECT_NEAR(average(means[1]), meanOf(reference), 4 * spread + 1e-3 * meanOf(reference));
-  EXPECT_NEAR(average(means[0]), meanOf(reference), 4 * spread + 1e-3 * meanOf(reference));
+              "(standard error %.2g)\n", c.mse[0], c.mse[1], c.mse[1] / c.mse[0], c.mean[0], c.mean[1], mean,
+              c.standardError);
+  EXPECT_LT(c.mse[1], 0.6 * c.mse[0]);
+  EXPECT_NEAR(c.mean[1], mean, 4 * c.standardError + 1e-3 * mean);
+  EXPECT_NEAR(c.mean[0], mean, 4 * c.standardError + 1e-3 * mean);
 }
 
 // Lobes with nothing to sample: a GGX floor of roughness 0 (only its diffuse part reflects)
@@ -133,7 +115,7 @@ static void expectFlatAndSpikeLobesKeepTheImage(Backend backend) {
         request.estimator = best ? Estimator::Best : Estimator::Scene;
         ProgressBar quiet(false);
         RenderReport report;
-        means.push_back(meanOf(renderSceneInMemory(request, quiet, report, false)));
+        means.push_back(imageMean(renderSceneInMemory(request, quiet, report, false)));
       }
       for (double m : means) mean[best] += m / seeds;
       for (double m : means) spread[best] += (m - mean[best]) * (m - mean[best]) / (seeds - 1) / seeds;

@@ -322,4 +322,31 @@ std::size_t fileCount(const std::string& dir) {
   return n;
 }
 
+double imageMean(const RadianceImage& image) {
+  double sum = 0;
+  for (float v : image.rgb) sum += v;
+  return sum / static_cast<double>(image.rgb.size());
+}
+
+EstimatorComparison compareEstimators(const RadianceImage& reference, int seeds,
+                                      const std::function<RadianceImage(int way, std::uint32_t seed)>& render) {
+  EstimatorComparison c;
+  std::vector<double> means0;
+  for (std::uint32_t seed = 1; seed <= static_cast<std::uint32_t>(seeds); ++seed)
+    for (int way = 0; way < 2; ++way) {
+      const RadianceImage image = render(way, seed);
+      double sum = 0;
+      for (std::size_t i = 0; i < image.rgb.size(); ++i)
+        sum += (image.rgb[i] - reference.rgb[i]) * (image.rgb[i] - reference.rgb[i]);
+      c.mse[way] += sum / static_cast<double>(image.rgb.size()) / seeds;
+      const double m = imageMean(image);
+      c.mean[way] += m / seeds;
+      if (way == 0) means0.push_back(m);
+    }
+  double spread = 0;
+  for (double m : means0) spread += (m - c.mean[0]) * (m - c.mean[0]);
+  c.standardError = std::sqrt(spread / (seeds - 1) / seeds);
+  return c;
+}
+
 }  // namespace vkrt::test

@@ -2,6 +2,7 @@
 // a scene from text, and image comparison that saves evidence on failure.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -113,6 +114,20 @@ inline constexpr MirrorChannel kParallelMirrorChannels[3] = {
 std::string parallelMirrorsScene(int maxDepth);
 // The closed form of the series above for one channel.
 double parallelMirrorsRadiance(const MirrorChannel& channel, int maxDepth);
+
+// The mean of an image's values (every channel of every pixel).
+double imageMean(const RadianceImage& image);
+
+// Two ways of rendering one image (way 0 and way 1), `seeds` renders each, seeds 1 to
+// `seeds`: each way's mean squared error against `reference` and its mean value, averaged over
+// the seeds, and the standard error of way 0's mean.
+struct EstimatorComparison {
+  double mse[2] = {0, 0};
+  double mean[2] = {0, 0};
+  double standardError = 0;   // of mean[0]
+};
+EstimatorComparison compareEstimators(const RadianceImage& reference, int seeds,
+                                      const std::function<RadianceImage(int way, std::uint32_t seed)>& render);
 
 // Result of running the vkrt binary.
 struct RunResult {
