@@ -25,7 +25,8 @@ namespace {
 
 const char* kUsage =
     "usage: vkrt_path_bench SCENE [--spp N] [--seed N] [--crop X0 Y0 X1 Y1] [--budget N] [--runs N]\n"
-    "                       [--reads auto|storage|texel] [--test-all on|off] [--raw FILE]\n"
+    "                       [--reads auto|storage|texel] [--test-all on|off] [--stratified] [--raw FILE]\n"
+    "  --stratified  stratified samples over the --spp samples (vkrt --sampler stratified)\n"
     "  --raw FILE   write the image's floats (rgb, row-major) to FILE\n";
 
 double cpuSeconds() {
@@ -74,6 +75,8 @@ int main(int argc, char** argv) {
     } else if (a == "--reads") {
       std::string r = next();
       options.reads = r == "storage" ? SceneReads::Storage : r == "texel" ? SceneReads::Texel : SceneReads::Auto;
+    } else if (a == "--stratified") {
+      options.stratified = true;
     } else if (a == "--test-all") {
       options.testAll = std::string(next()) != "off";
     } else if (a == "--crop") {
@@ -88,6 +91,7 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
+  options.renderSpp = options.sampleCount;
   try {
     auto w0 = std::chrono::steady_clock::now();
     double c0 = cpuSeconds();
@@ -110,11 +114,11 @@ int main(int argc, char** argv) {
       std::printf(
           "run %d: wall %.3f s, cpu %.3f s | pipeline %.3f first dispatch %.3f dispatch %.3f readback %.3f | "
           "dispatches %u bands %u suspensions %llu | rays %.2f M (primary %.2f shadow %.2f scatter %.2f) "
-          "%.2f Mrays/cpu-s | nonfinite %llu | image %016llx\n",
+          "%.2f Mrays/cpu-s | nonfinite %llu | %s variant | image %016llx\n",
           run, wall, cpu, t.pipelineSeconds, t.firstDispatchSeconds, t.dispatchSeconds, t.readbackSeconds,
           t.dispatches, t.bands, static_cast<unsigned long long>(t.suspensions), millions(total), millions(rays.primary),
           millions(rays.shadow), millions(rays.secondary), millions(total) / cpu,
-          static_cast<unsigned long long>(rays.nonFinite),
+          static_cast<unsigned long long>(rays.nonFinite), t.general ? "general" : "specialised",
           static_cast<unsigned long long>(fnv1a(image.rgb.data(), image.rgb.size() * sizeof(float))));
       if (!rawPath.empty() && run == 0) {
         std::ofstream out(rawPath, std::ios::binary);

@@ -30,6 +30,7 @@ layout(constant_id = kPathSpecStratified) const uint kSpecStratified = kPathSpec
 layout(constant_id = kPathSpecJitter) const uint kSpecJitter = kPathSpecFromParams;
 layout(constant_id = kPathSpecHasEmitters) const bool kHasEmitters = true;
 layout(constant_id = kPathSpecTestAll) const bool kTestAll = false;
+layout(constant_id = kPathSpecSampler) const uint kSpecSampler = kPathSpecFromParams;
 
 // rgb: the sum of the pixel's finished samples; w: 1 once all are done, 0 while suspended.
 layout(std430, binding = kBindingPixels) buffer Accumulation { vec4 accumulation[]; };
@@ -77,6 +78,7 @@ bool russianRoulette() {
 }
 bool stratified() { return kSpecStratified != kPathSpecFromParams ? kSpecStratified != 0u : path.lightStrata > 0u; }
 bool jitter() { return kSpecJitter != kPathSpecFromParams ? kSpecJitter != 0u : path.jitter != 0u; }
+bool stratifiedSamples() { return kSpecSampler != kPathSpecFromParams ? kSpecSampler != 0u : path.strataSide != 0u; }
 
 // ---- per-pixel state (registers; saved to states[] only on suspension) ----------------------
 // (the ray, its hit, the shadow ray and the traversal stack: traverse.glsl)
@@ -97,13 +99,37 @@ void keySample() {
   sampleKey = rngSampleKey(path.seed, pixelIndex, path.firstSample + sampleIndex);
   pixelKey = rngPixelKey(path.seed, pixelIndex);
 }
-float random(uint dimension) {
-  float r = rngUniformKeyed(sampleKey, dimension);
-  if (path.strataSide == 0u) return r;
-  return rngStratify(r, pixelKey, path.firstSample + sampleIndex, dimension, path.strataSide);
+
+// The stratum of `pair` in the current sample, or kRngNotStratified (independent numbers).
+uint pairStratum(uint pair) {
+  if (!stratifiedSamples()) return kRngNotStratified;
+  return rngPairStratum(pixelKey, path.firstSample + sampleIndex, pair, path.strataSide);
 }
+
+// The number of `dimension`, in `stratum` of its pair.
+float randomIn(uint dimension, uint stratum) {
+  float r = rngUniformKeyed(sampleKey, dimension);
+  if (stratum == kRngNotStratified) return r;
+  return rngInCell(r, rngStratumCell(stratum, dimension, path.strataSide), path.strataSide);
+}
+
+// The strata of the current vertex's stratified pairs, its direction's and its first light
+// sample's (stratifyVertex, where a vertex begins: one inlined copy of the permutation per call
+// site, where each number drawn would make one).
+uint directionStratum = kRngNotStratified, lightStratum = kRngNotStratified;
+void stratifyVertex() {
+  directionStratum = pairStratum(rngDirectionPair(bounce));
+  lightStratum = pairStratum(rngLightPair(bounce));
+}
+
 // The number of `slot` at the current path vertex.
-float randomAt(uint slot) { return random(rngDimension(bounce, slot)); }
+float randomAt(uint slot) {
+  uint dimension = rngDimension(bounce, slot);
+  uint pair = rngStratifiedPair(dimension);
+  return randomIn(dimension, pair == rngDirectionPair(bounce) ? directionStratum
+                             : pair == rngLightPair(bounce)   ? lightStratum
+                                                              : kRngNotStratified);
+}
 
 #include "brdf.glsl"   // (after sampling() and randomAt(), which it uses)
 
@@ -157,8 +183,9 @@ void startCamera() {
   keySample();
   float u = 0.5, v = 0.5;
   if (jitter()) {
-    u = random(kRngPixelX);
-    v = random(kRngPixelY);
+    uint stratum = pairStratum(kRngCameraPair);
+    u = randomIn(kRngPixelX, stratum);
+    v = randomIn(kRngPixelY, stratum);
   }
   vec3 dir = cameraRayDirection(path.camera, uvec2(pixelX, pixelY), vec2(u, v));
   throughput = vec3(1.0);
@@ -224,6 +251,7 @@ uint quadLightSamples() {
 
 // The nearest hit is known: its emission, then the lights (kPhaseLight), or the end of the path.
 void beginShading() {
+  stratifyVertex();
   hitPoint = rayOrigin + bestT * rayDir;
   surfaceAt(hitPrim, rayOrigin, rayDir, bestT, vec2(bestB1, bestB2), hitPoint, path.camera.origin.xyz, hitNormal,
             hitMaterial);
@@ -529,6 +557,7 @@ void main() {
     loadState(invocation);
     setPixel();
     keySample();
+    stratifyVertex();
   } else {
     firstPixelOfRun(runStart);
     pixelSum = vec3(0.0);

@@ -25,10 +25,11 @@ namespace {
 // The features pathtrace.comp is specialised to (all on when not specializing), and what was
 // left out, for --stats; the integrator settings (kPathSpecFromParams when not specializing);
 // and whether rays test every primitive instead of walking the BVH (either way).
-std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, std::uint32_t jitter, bool specialize, bool testAll,
-                                        std::string& leftOut) {
+std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPathParams& path, bool specialize,
+                                        bool testAll, std::string& leftOut) {
   std::vector<std::uint32_t> spec(gpu::kPathSpecCount, 1u);   // bools as 0/1 (32-bit spec constants)
   for (std::uint32_t i = gpu::kPathSpecIntegrator; i <= gpu::kPathSpecJitter; ++i) spec[i] = gpu::kPathSpecFromParams;
+  spec[gpu::kPathSpecSampler] = gpu::kPathSpecFromParams;
   spec[gpu::kPathSpecTestAll] = testAll;
   if (!specialize) return spec;
   bool point = false, directional = false, attenuation = false, ggx = false;
@@ -53,7 +54,8 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, std::uint32_t jit
   spec[gpu::kPathSpecSampling] = scene.path.sampling;
   spec[gpu::kPathSpecRussianRoulette] = scene.path.russianRoulette;
   spec[gpu::kPathSpecStratified] = scene.path.lightStrata > 0 ? 1u : 0u;
-  spec[gpu::kPathSpecJitter] = jitter;
+  spec[gpu::kPathSpecJitter] = path.jitter;
+  spec[gpu::kPathSpecSampler] = path.strataSide > 0 ? 1u : 0u;
   const char* names[gpu::kPathSpecHasGgx + 1] = {"triangles",   "spheres",            "smooth normals", "point lights",
                                             "directional lights", "attenuation", "quad lights",    "ggx"};
   for (std::uint32_t i = 0; i <= gpu::kPathSpecHasGgx; ++i)
@@ -143,11 +145,11 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   t.estimatedRays = static_cast<double>(width) * height * samples * perSample;
   std::string leftOut;
   const std::uint64_t specializedKey =
-      variantKey(context.properties(), spirv, spirvBytes, pathFeatures(scene, path.jitter, true, testAll, leftOut));
+      variantKey(context.properties(), spirv, spirvBytes, pathFeatures(scene, path, true, testAll, leftOut));
   t.general = options.variant == ShaderVariant::General ||
               (options.variant == ShaderVariant::Auto && !variantCompiled(specializedKey) &&
                !specializationPays(cpuDevice, t.estimatedRays, true));
-  const std::vector<std::uint32_t> spec = pathFeatures(scene, path.jitter, !t.general, testAll, t.leftOut);
+  const std::vector<std::uint32_t> spec = pathFeatures(scene, path, !t.general, testAll, t.leftOut);
   ShaderBindings bindings(gpu::kPathBindingCount);
   upload.bind(bindings, t.texelReads);
   band.bind(bindings);

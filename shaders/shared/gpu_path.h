@@ -41,7 +41,7 @@ GPU_CONST uint kPathSpecIntegrator = kSpecSharedCount + 2u;
 GPU_CONST uint kPathSpecNextEvent = kSpecSharedCount + 3u;
 GPU_CONST uint kPathSpecSampling = kSpecSharedCount + 4u;
 GPU_CONST uint kPathSpecRussianRoulette = kSpecSharedCount + 5u;
-GPU_CONST uint kPathSpecStratified = kSpecSharedCount + 6u;     // 1: lightStrata > 0
+GPU_CONST uint kPathSpecStratified = kSpecSharedCount + 6u;     // 1: lightStrata > 0 (`lightstratify on`)
 GPU_CONST uint kPathSpecJitter = kSpecSharedCount + 7u;
 GPU_CONST uint kPathSpecHasEmitters = kSpecSharedCount + 8u;    // some triangle or sphere emits (GpuEmitter): a feature, 0 or 1
 // 1: a ray is tested against every primitive, triangles then spheres (GpuPathParams
@@ -49,7 +49,9 @@ GPU_CONST uint kPathSpecHasEmitters = kSpecSharedCount + 8u;    // some triangle
 // a walk of the BVH; for scenes of at most kTestAllMaxPrims primitives, each of them in the BVH
 // and each a triangle or a sphere (a scene with a shape of another kind walks the BVH).
 GPU_CONST uint kPathSpecTestAll = kSpecSharedCount + 9u;
-GPU_CONST uint kPathSpecCount = kSpecSharedCount + 10u;
+// 1: stratified samples (GpuPathParams strataSide > 0), 0: independent ones.
+GPU_CONST uint kPathSpecSampler = kSpecSharedCount + 10u;
+GPU_CONST uint kPathSpecCount = kSpecSharedCount + 11u;
 GPU_CONST uint kPathSpecFromParams = 0xFFFFFFFFu;
 
 // GpuPathParams.maxDepth of `maxdepth -1`: no limit, only Russian roulette ends a path...

@@ -82,14 +82,19 @@ GPU_CONST uint kRngNotStratified = 0xFFFFFFFFu;
 // The key of a pixel's strata permutation: the seed's and the pixel's, not the sample's.
 GPU_FN uint rngPixelKey(uint seed, uint pixel) { return rngHash(pixel + rngHash(seed)); }
 
-// The pair of `dimension` among the stratified ones, or kRngNotStratified: 0 for the camera
-// jitter; at vertex b, 4 b + 1 for its direction and 4 b + 3 for its first light sample.
+// The stratified pairs: the camera jitter's; at vertex b, its direction's (4 b + 1) and its
+// first light sample's (4 b + 3).
+GPU_CONST uint kRngCameraPair = 0u;
+GPU_FN uint rngDirectionPair(uint bounce) { return 4u * bounce + 1u; }
+GPU_FN uint rngLightPair(uint bounce) { return 4u * bounce + 3u; }
+
+// The pair of `dimension` among the stratified ones, or kRngNotStratified.
 GPU_FN uint rngStratifiedPair(uint dimension) {
-  if (dimension < kRngBounceBase) return 0u;
+  if (dimension < kRngBounceBase) return kRngCameraPair;
   uint bounce = (dimension - kRngBounceBase) / kRngBounceStride;
   uint slot = (dimension - kRngBounceBase) % kRngBounceStride;
-  if (slot == kRngSlotDirectionU || slot == kRngSlotDirectionV) return 4u * bounce + 1u;
-  if (slot == kRngSlotLightBase || slot == kRngSlotLightBase + 1u) return 4u * bounce + 3u;
+  if (slot == kRngSlotDirectionU || slot == kRngSlotDirectionV) return rngDirectionPair(bounce);
+  if (slot == kRngSlotLightBase || slot == kRngSlotLightBase + 1u) return rngLightPair(bounce);
   return kRngNotStratified;
 }
 
@@ -126,17 +131,35 @@ GPU_FN uint rngPermute(uint i, uint n, uint key) {
   return i;
 }
 
-// The number of `dimension` for global sample `sampleIndex` of the pixel whose key is
-// `pixelKey`, given that dimension's independent number `r`: r itself outside the strata.
-GPU_FN float rngStratify(float r, uint pixelKey, uint sampleIndex, uint dimension, uint side) {
-  uint pair = rngStratifiedPair(dimension);
+// The stratum of `pair` for global sample `sampleIndex` of the pixel whose key is `pixelKey`,
+// or kRngNotStratified where that sample is not stratified (side 0, or sample side^2 on).
+GPU_FN uint rngPairStratum(uint pixelKey, uint sampleIndex, uint pair, uint side) {
   uint n = side * side;
-  if (side == 0u || pair == kRngNotStratified || sampleIndex >= n) return r;
+  if (side == 0u || sampleIndex >= n) return kRngNotStratified;
   uint key = rngHash(pair + pixelKey);
-  uint stratum = (rngPermute(sampleIndex, n, key) + rngHash(key) % n) % n;
-  uint cell = (dimension & 1u) == 0u ? stratum % side : stratum / side;
+  return (rngPermute(sampleIndex, n, key) + rngHash(key) % n) % n;
+}
+
+// A pair's stratum as its two cells: x for the pair's even dimension, y for the odd one.
+GPU_FN uint rngStratumCell(uint stratum, uint dimension, uint side) {
+  return (dimension & 1u) == 0u ? stratum % side : stratum / side;
+}
+
+// The independent number `r` moved into cell `cell` of `side`.
+GPU_FN float rngInCell(float r, uint cell, uint side) {
   float x = (float(cell) + r) / float(side);
   return x < kRngBelowOne ? x : kRngBelowOne;
+}
+
+// The number of `dimension` for global sample `sampleIndex` of the pixel whose key is
+// `pixelKey`, given that dimension's independent number `r`: r itself outside the strata.
+// (pathtrace.comp computes the strata once per sample and vertex, and then rngInCell.)
+GPU_FN float rngStratify(float r, uint pixelKey, uint sampleIndex, uint dimension, uint side) {
+  uint pair = rngStratifiedPair(dimension);
+  if (pair == kRngNotStratified) return r;
+  uint stratum = rngPairStratum(pixelKey, sampleIndex, pair, side);
+  if (stratum == kRngNotStratified) return r;
+  return rngInCell(r, rngStratumCell(stratum, dimension, side), side);
 }
 
 // The strata of a render of `spp` samples: side = floor(sqrt(spp)), at most

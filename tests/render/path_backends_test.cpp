@@ -11,6 +11,7 @@
 #include "gpu/vulkan_path_renderer.h"
 #include "image/image.h"
 #include "path_scenes.h"
+#include "render/render.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
@@ -96,7 +97,9 @@ TEST(PathBackendsEmitters, NextEventEstimationAndMisAgree) {
 }
 
 // Stratified samples (--sampler stratified): the same numbers on both backends (gpu_rng.h's
-// rngStratify, shared), so the same agreement; and not the independent samples' image.
+// rngStratify, shared), so the same agreement; and not the independent samples' image. With
+// 8x8 strata (the scene's 64 samples), 3x3 (9) and 3x3 with 3 samples beyond them (12): strata
+// counts that are not powers of two, where the permutation walks past the count.
 TEST(PathBackendsStratified, BothBackendsStratifyAlike) {
   ParsedScene parsed = parseSceneFileWithWarnings(sourcePath("scenes/gi/box.test"));
   expectBackendsAgree(parsed.scene, "path-backends-gi-box-stratified", true);
@@ -104,6 +107,13 @@ TEST(PathBackendsStratified, BothBackendsStratifyAlike) {
   emitters.path.nextEvent = NextEvent::Mis;
   emitters.path.sampling = Sampling::Brdf;
   expectBackendsAgree(emitters, "path-backends-emitters-stratified", true);
+  for (int spp : {9, 12}) {
+    SceneDesc box = parsed.scene;
+    box.path.spp = spp;
+    expectBackendsAgree(box, "path-backends-gi-box-stratified-" + std::to_string(spp), true);
+    emitters.path.spp = spp;
+    expectBackendsAgree(emitters, "path-backends-emitters-stratified-" + std::to_string(spp), true);
+  }
   PathOptions o;
   o.seed = 17;
   o.sampleCount = 4;
@@ -112,6 +122,32 @@ TEST(PathBackendsStratified, BothBackendsStratifyAlike) {
   RadianceImage independent = renderPathReference(parsed.scene, bvh, o, nullptr);
   o.stratified = true;
   EXPECT_NE(renderPathReference(parsed.scene, bvh, o, nullptr).rgb, independent.rgb);
+}
+
+// The same through a whole render as the command line runs it (`--sampler stratified --spp 9`,
+// the strata over the render's samples): both backends stratify, alike (neither image is its
+// independent samples').
+TEST(PathBackendsStratified, WholeRendersStratifyAlike) {
+  VKRT_REQUIRE_GPU(ctx);
+  auto render = [](Backend backend, bool stratified) {
+    RenderRequest request;
+    request.scenePath = sourcePath("scenes/gi/box.test");
+    request.backend = backend;
+    request.width = request.height = 64;
+    request.crop = PixelRect{16, 24, 48, 56};
+    request.spp = 9;
+    request.seed = 5;
+    request.stratified = stratified;
+    ProgressBar quiet(false);
+    RenderReport report;
+    return renderSceneInMemory(request, quiet, report, false);
+  };
+  const RadianceImage cpu = render(Backend::Cpu, true), vulkan = render(Backend::Vulkan, true);
+  ASSERT_EQ(vulkan.width, 32);
+  EXPECT_NE(vulkan.rgb, render(Backend::Vulkan, false).rgb) << "the Vulkan render did not stratify";
+  EXPECT_NE(cpu.rgb, render(Backend::Cpu, false).rgb) << "the CPU render did not stratify";
+  EXPECT_TRUE(imagesClose("path-backends-whole-stratified", encoded(vulkan, 2.2), encoded(cpu, 2.2), 2, 30));
+  EXPECT_NEAR(mean(vulkan), mean(cpu), 0.01 * mean(cpu) + 1e-6);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cse168, PathBackends,
