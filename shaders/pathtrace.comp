@@ -114,8 +114,9 @@ float randomIn(uint dimension, uint stratum) {
 }
 
 // The strata of the current vertex's stratified pairs, its direction's and its first light
-// sample's (stratifyVertex, where a vertex begins: one inlined copy of the permutation per call
-// site, where each number drawn would make one).
+// sample's, set by stratifyVertex where a vertex begins and on resuming. lavapipe inlines
+// every call and runs each copy whenever it is reached, taken or not: the permutation is
+// computed at these two places and the camera's, not at each of the numbers drawn.
 uint directionStratum = kRngNotStratified, lightStratum = kRngNotStratified;
 void stratifyVertex() {
   directionStratum = pairStratum(rngDirectionPair(bounce));
