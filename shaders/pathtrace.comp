@@ -10,6 +10,11 @@
 // saves its state (GpuPathTracerState) and the host dispatches again, so that no invocation
 // exceeds llvmpipe's loop budget whatever the path length (see kDefaultStepBudget).
 // Its math is float32 and written independently of the CPU reference (host/cpu/).
+// Built twice (CMakeLists.txt): whole, and with VKRT_QUAD_LIGHTS_ONLY, without the code of
+// point and directional lights, emissive surfaces as lights and analyticdirect's closed form,
+// for the specialised variants of scenes that use none of them (most of the course's): code
+// that specialization constants make dead still costs lavapipe its translation and inlining
+// when the pipeline is created (bench/README.md, "Path tracing on lavapipe").
 #version 450
 #extension GL_GOOGLE_include_directive : require
 
@@ -277,6 +282,7 @@ void beginShading() {
   // Other emission: found by hitting only, unless the light samples of the vertex before
   // counted it (NEE on) or weighted it against this ray (MIS).
   vec3 emitted = m.emission.rgb;
+#ifndef VKRT_QUAD_LIGHTS_ONLY
   if (kHasEmitters && bounce > 0u && samplesEmitters() && any(notEqual(emitted, vec3(0.0)))) {
     if (nextEvent() == kNextEventOn) {
       emitted = vec3(0.0);
@@ -284,6 +290,7 @@ void beginShading() {
       emitted *= powerHeuristic(lastPdf, emitterHitPdf(m));
     }
   }
+#endif
   radiance += throughput * emitted;
   bool analytic = integrator() == kIntegratorAnalyticDirect;
   // Whether this vertex samples lights and scatters: the depth rule of doc/path-tracing.md, "Depth"
@@ -433,14 +440,17 @@ void lightStep(inout uint step) {
   uint quad = quadLightSamples();
   if (kHasQuadLights && lightIndex < quad) {
     uint i = lightIndex++;
+#ifndef VKRT_QUAD_LIGHTS_ONLY
     if (integrator() == kIntegratorAnalyticDirect) {
       GpuQuadLight q = loadQuadLight(i);
       radiance += throughput * m.diffuse.rgb * kInvPi * q.radiance.rgb * dot(polygonIrradianceVector(q, hitPoint), hitNormal);
-    } else {
-      quadLightSample(i / path.lightSamples, i % path.lightSamples, m);
+      return;
     }
+#endif
+    quadLightSample(i / path.lightSamples, i % path.lightSamples, m);
     return;
   }
+#ifndef VKRT_QUAD_LIGHTS_ONLY
   if ((kHasPointLights || kHasDirectionalLights) && lightIndex < quad + path.lightCount) {
     pointLightSample(lightIndex++ - quad, m, integrator() == kIntegratorAnalyticDirect);
     return;
@@ -449,6 +459,7 @@ void lightStep(inout uint step) {
     emitterSample(lightIndex++ - quad - path.lightCount, m, step);
     return;
   }
+#endif
   if (integrator() == kIntegratorPathTracer)
     scatter(m);
   else

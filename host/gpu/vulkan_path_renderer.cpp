@@ -17,6 +17,8 @@
 #include "gpu/shader_variant.h"
 #include "pathtrace.comp.h"         // kPathtraceSpirv: the shader, compiled at build time
 #include "pathtrace_texel.comp.h"   // kPathtraceTexelSpirv: the same with VKRT_TEXEL_READS
+#include "pathtrace_quad.comp.h"         // kPathtraceQuadSpirv: VKRT_QUAD_LIGHTS_ONLY
+#include "pathtrace_quad_texel.comp.h"   // kPathtraceQuadTexelSpirv: both
 #include "timing.h"
 
 namespace vkrt {
@@ -129,8 +131,6 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   t.testedAll = testAll;
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   t.texelReads = chooseTexelReads(options.reads, upload.texelsFit(maxTexels), maxTexels);
-  const std::uint32_t* spirv = t.texelReads ? kPathtraceTexelSpirv : kPathtraceSpirv;
-  const std::size_t spirvBytes = t.texelReads ? sizeof(kPathtraceTexelSpirv) : sizeof(kPathtraceSpirv);
   // The rays, about (what ShaderVariant::Auto goes by): per sample a camera ray; direct: a
   // shadow ray per light sample of each quad light; pathtracer: per vertex (4 where only
   // Russian roulette ends the path) a scattered ray and, with next-event estimation, a shadow
@@ -144,12 +144,27 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
                  (1.0 + (scene.path.nextEvent != gpu::kNextEventOff ? lightRays : 0.0));
   t.estimatedRays = static_cast<double>(width) * height * samples * perSample;
   std::string leftOut;
-  const std::uint64_t specializedKey =
-      variantKey(context.properties(), spirv, spirvBytes, pathFeatures(scene, path, true, testAll, leftOut));
+  const std::vector<std::uint32_t> specialized = pathFeatures(scene, path, true, testAll, leftOut);
+  // A specialised variant of a scene whose lights are all quad lights, rendered by direct or
+  // pathtracer, takes the module without the code of the other lights and of analyticdirect.
+  const bool quadLightsOnly = !specialized[gpu::kSpecHasPointLights] && !specialized[gpu::kSpecHasDirectionalLights] &&
+                              !specialized[gpu::kPathSpecHasEmitters] &&
+                              specialized[gpu::kPathSpecIntegrator] != gpu::kIntegratorAnalyticDirect;
+  auto module = [&](bool quad, std::size_t& bytes) {
+    bytes = t.texelReads ? (quad ? sizeof(kPathtraceQuadTexelSpirv) : sizeof(kPathtraceTexelSpirv))
+                         : (quad ? sizeof(kPathtraceQuadSpirv) : sizeof(kPathtraceSpirv));
+    return t.texelReads ? (quad ? kPathtraceQuadTexelSpirv : kPathtraceTexelSpirv)
+                        : (quad ? kPathtraceQuadSpirv : kPathtraceSpirv);
+  };
+  std::size_t spirvBytes = 0;
+  const std::uint32_t* spirv = module(quadLightsOnly, spirvBytes);
+  const std::uint64_t specializedKey = variantKey(context.properties(), spirv, spirvBytes, specialized);
   t.general = options.variant == ShaderVariant::General ||
               (options.variant == ShaderVariant::Auto && !variantCompiled(specializedKey) &&
                !specializationPays(cpuDevice, t.estimatedRays, true));
-  const std::vector<std::uint32_t> spec = pathFeatures(scene, path, !t.general, testAll, t.leftOut);
+  if (t.general) spirv = module(false, spirvBytes);   // the general variant: every light's code
+  const std::vector<std::uint32_t> spec = t.general ? pathFeatures(scene, path, false, testAll, t.leftOut) : specialized;
+  if (!t.general) t.leftOut = leftOut;
   ShaderBindings bindings(gpu::kPathBindingCount);
   upload.bind(bindings, t.texelReads);
   band.bind(bindings);

@@ -340,6 +340,7 @@ TEST(GpuPath, SameSeedSameBitsOtherSeedOtherImage) {
   VulkanPathOptions o;
   o.sampleCount = 4;
   o.seed = 3;
+  o.variant = ShaderVariant::Specialized;   // quad lights only: the module without the other lights' code
   RadianceImage a = renderPath(s, o), b = renderPath(s, o);
   EXPECT_TRUE(sameBits(a, b));
   o.seed = 4;
@@ -350,9 +351,18 @@ TEST(GpuPath, SameSeedSameBitsOtherSeedOtherImage) {
   EXPECT_TRUE(sameBits(a, renderPath(s, o)));
   o.reads = SceneReads::Texel;
   EXPECT_TRUE(sameBits(a, renderPath(s, o)));
-  // Specialization compiles out only what the scene lacks.
+  // Specialization compiles out only what the scene lacks, and so does the module for scenes
+  // of quad lights alone (VKRT_QUAD_LIGHTS_ONLY): the general variant, every light's code in
+  // it, renders the same bits.
   o.variant = ShaderVariant::General;
   EXPECT_TRUE(sameBits(a, renderPath(s, o)));
+  // With a point light too: the whole module, specialised and general.
+  s.lights.push_back(Light{LightType::Point, dvec3(0.0, 1.5, 0.0), dvec3(0.5), dvec3(1.0, 0.0, 0.0)});
+  o.variant = ShaderVariant::Specialized;
+  const RadianceImage withPoint = renderPath(s, o);
+  EXPECT_FALSE(sameBits(a, withPoint));
+  o.variant = ShaderVariant::General;
+  EXPECT_TRUE(sameBits(withPoint, renderPath(s, o)));
 }
 
 // A crop draws the numbers and camera rays of the full image: its pixels are the full

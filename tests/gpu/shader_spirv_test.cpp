@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "pathtrace.comp.h"
+#include "pathtrace_quad.comp.h"
+#include "pathtrace_quad_texel.comp.h"
 #include "pathtrace_texel.comp.h"
 #include "raytrace.comp.h"
 #include "raytrace_texel.comp.h"
@@ -42,4 +44,6 @@ TEST(EmbeddedShaders, KeepThePreciseArithmeticOfTheWatertightTest) {
   EXPECT_GE(noContractionCount(kRaytraceTexelSpirv, sizeof kRaytraceTexelSpirv), kPreciseOperations);
   EXPECT_GE(noContractionCount(kPathtraceSpirv, sizeof kPathtraceSpirv), kPreciseOperations);
   EXPECT_GE(noContractionCount(kPathtraceTexelSpirv, sizeof kPathtraceTexelSpirv), kPreciseOperations);
+  EXPECT_GE(noContractionCount(kPathtraceQuadSpirv, sizeof kPathtraceQuadSpirv), kPreciseOperations);
+  EXPECT_GE(noContractionCount(kPathtraceQuadTexelSpirv, sizeof kPathtraceQuadTexelSpirv), kPreciseOperations);
 }
