@@ -66,6 +66,21 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPat
   return spec;
 }
 
+// The embedded path shader: texel or storage reads, whole or built for quad lights alone
+// (VKRT_QUAD_LIGHTS_ONLY: without the code of point and directional lights, emitters and
+// analyticdirect).
+struct PathModule {
+  const std::uint32_t* words;
+  std::size_t bytes;
+};
+PathModule pathModule(bool texelReads, bool quadLightsOnly) {
+  if (quadLightsOnly)
+    return texelReads ? PathModule{kPathtraceQuadTexelSpirv, sizeof kPathtraceQuadTexelSpirv}
+                      : PathModule{kPathtraceQuadSpirv, sizeof kPathtraceQuadSpirv};
+  return texelReads ? PathModule{kPathtraceTexelSpirv, sizeof kPathtraceTexelSpirv}
+                    : PathModule{kPathtraceSpirv, sizeof kPathtraceSpirv};
+}
+
 }  // namespace
 
 std::uint32_t pathPixelsPerInvocation(bool cpuDevice, std::uint32_t integrator, std::uint32_t samples,
@@ -150,26 +165,21 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
   const bool quadLightsOnly = !specialized[gpu::kSpecHasPointLights] && !specialized[gpu::kSpecHasDirectionalLights] &&
                               !specialized[gpu::kPathSpecHasEmitters] &&
                               specialized[gpu::kPathSpecIntegrator] != gpu::kIntegratorAnalyticDirect;
-  auto module = [&](bool quad, std::size_t& bytes) {
-    bytes = t.texelReads ? (quad ? sizeof(kPathtraceQuadTexelSpirv) : sizeof(kPathtraceTexelSpirv))
-                         : (quad ? sizeof(kPathtraceQuadSpirv) : sizeof(kPathtraceSpirv));
-    return t.texelReads ? (quad ? kPathtraceQuadTexelSpirv : kPathtraceTexelSpirv)
-                        : (quad ? kPathtraceQuadSpirv : kPathtraceSpirv);
-  };
-  std::size_t spirvBytes = 0;
-  const std::uint32_t* spirv = module(quadLightsOnly, spirvBytes);
-  const std::uint64_t specializedKey = variantKey(context.properties(), spirv, spirvBytes, specialized);
+  const PathModule specializedModule = pathModule(t.texelReads, quadLightsOnly);
+  const std::uint64_t specializedKey =
+      variantKey(context.properties(), specializedModule.words, specializedModule.bytes, specialized);
   t.general = options.variant == ShaderVariant::General ||
               (options.variant == ShaderVariant::Auto && !variantCompiled(specializedKey) &&
                !specializationPays(cpuDevice, t.estimatedRays, true));
-  if (t.general) spirv = module(false, spirvBytes);   // the general variant: every light's code
+  // The general variant: every light's code, every feature on.
+  const PathModule module = t.general ? pathModule(t.texelReads, false) : specializedModule;
   const std::vector<std::uint32_t> spec = t.general ? pathFeatures(scene, path, false, testAll, t.leftOut) : specialized;
   if (!t.general) t.leftOut = leftOut;
   ShaderBindings bindings(gpu::kPathBindingCount);
   upload.bind(bindings, t.texelReads);
   band.bind(bindings);
   bindings.set(gpu::kBindingPathParams, pathBuffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
-  ComputePipeline pipeline(context, spirv, spirvBytes, bindings.types, spec, sizeof(gpu::GpuPathPush));
+  ComputePipeline pipeline(context, module.words, module.bytes, bindings.types, spec, sizeof(gpu::GpuPathPush));
   bindings.bindTo(pipeline);
   t.pipelineSeconds = secondsSince(t0);
 

@@ -349,4 +349,14 @@ EstimatorComparison compareEstimators(const RadianceImage& reference, int seeds,
   return c;
 }
 
+void expectLessNoiseSameMean(const EstimatorComparison& c, const RadianceImage& reference, double ratio,
+                             const char* way0, const char* way1) {
+  const double mean = imageMean(reference);
+  std::printf("[ stats    ] MSE: %s %.4g, %s %.4g (ratio %.3f); mean %.4g, %.4g, reference %.4g (standard error %.2g)\n",
+              way0, c.mse[0], way1, c.mse[1], c.mse[1] / c.mse[0], c.mean[0], c.mean[1], mean, c.standardError);
+  EXPECT_LT(c.mse[1], ratio * c.mse[0]);
+  EXPECT_NEAR(c.mean[1], mean, 4 * c.standardError + 1e-3 * mean);
+  EXPECT_NEAR(c.mean[0], mean, 4 * c.standardError + 1e-3 * mean);
+}
+
 }  // namespace vkrt::test
