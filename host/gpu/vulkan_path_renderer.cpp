@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <memory>
 #include <string>
 
 #include "errors.h"
@@ -90,8 +91,17 @@ std::uint32_t pathPixelsPerInvocation(bool cpuDevice, std::uint32_t integrator, 
   return std::clamp((kPathSamplesPerLane + samples - 1) / std::max(samples, 1u), 1u, most);
 }
 
+VulkanPathRender::VulkanPathRender(const Context& context, const GpuScene& scene) : context_(context), scene_(scene) {}
+VulkanPathRender::~VulkanPathRender() = default;
+
 RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
                                RayCounts* rays, VulkanTimings* timings) {
+  return VulkanPathRender(context, scene).render(options, rays, timings);
+}
+
+RadianceImage VulkanPathRender::render(const VulkanPathOptions& options, RayCounts* rays, VulkanTimings* timings) {
+  const Context& context = context_;
+  const GpuScene& scene = scene_;
   VulkanTimings t;
   if (scene.path.integrator == gpu::kIntegratorRaytracer)
     throw InternalError("renderVulkanPath called for the raytracer integrator (renderVulkan renders it)");
@@ -119,7 +129,11 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
                       " (fewer quad lights or lightsamples)");
 
   auto t0 = std::chrono::steady_clock::now();
-  const SceneUpload upload(context, scene, SceneArrays::Path);
+  if (!upload_) {
+    upload_ = std::make_unique<SceneUpload>(context, scene, SceneArrays::Path);
+    ++uploads_;
+  }
+  const SceneUpload& upload = *upload_;
   BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuPathTracerState),
                    renderParams(scene, layout, scene.path.maxDepth), options.stepBudget, kPathFirstDispatchSteps,
                    true);

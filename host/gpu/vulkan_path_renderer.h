@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 
 #include "render/ray_counts.h"
@@ -60,6 +61,31 @@ inline constexpr std::size_t kLargeScenePrimitives = 10000;
 std::uint32_t pathPixelsPerInvocation(bool cpuDevice, std::uint32_t integrator, std::uint32_t samples,
                                       std::size_t primitives);
 
+class SceneUpload;
+
+// A path-traced render on one device, in sample batches (renderProgressive): the scene's
+// buffers are uploaded by the first batch and kept for the others. (Measured on lavapipe: a
+// batch that uploaded the scene again, after an earlier batch had run, traced 10-30% slower
+// per sample than the first; bench/README.md, "--time against --spp".) `scene` must outlive it.
+class VulkanPathRender {
+ public:
+  VulkanPathRender(const Context& context, const GpuScene& scene);
+  ~VulkanPathRender();
+  VulkanPathRender(const VulkanPathRender&) = delete;
+  VulkanPathRender& operator=(const VulkanPathRender&) = delete;
+  // One batch: the samples of `options` (as renderVulkanPath).
+  RadianceImage render(const VulkanPathOptions& options, RayCounts* rays, VulkanTimings* timings);
+  // The scene's uploads so far: 1 after any number of batches.
+  std::uint32_t uploads() const { return uploads_; }
+
+ private:
+  const Context& context_;
+  const GpuScene& scene_;
+  std::unique_ptr<SceneUpload> upload_;
+  std::uint32_t uploads_ = 0;
+};
+
+// A render of one batch (VulkanPathRender of its own).
 // RayCounts: primary = camera rays (pixels x samples), shadow = shadow rays, secondary =
 // scattered rays, nonFinite = samples whose radiance was NaN or infinite (left out of the mean).
 // Throws DeviceError (also for a scene beyond the backend's or the device's limits),

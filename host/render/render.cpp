@@ -152,6 +152,7 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
 #undef VKRT_SHAPE_FREE
 
   t0 = std::chrono::steady_clock::now();
+  VulkanPathRender pathRender(context, gpuScene);   // the path integrators' batches share its upload
   BatchRenderer batches = [&](const SampleBatch& batch, const std::function<void(std::uint64_t, std::uint64_t)>& px) {
     RayCounts rays;
     VulkanTimings timings;
@@ -172,7 +173,7 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
       o.variant = request.variant;
       o.stratified = request.stratified;
       setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
-      image = renderVulkanPath(context, gpuScene, o, &rays, &timings);
+      image = pathRender.render(o, &rays, &timings);
     }
     report.rays += rays;
     addBatchTimings(report.vulkan, timings, batch.firstSample == plan.progressive.firstSample);

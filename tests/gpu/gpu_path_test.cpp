@@ -561,6 +561,33 @@ TEST(GpuPath, SampleBatchesAverageToOneRender) {
     ASSERT_NEAR(all.rgb[i], 0.5f * (first.rgb[i] + second.rgb[i]), 1e-5f * std::max(1.0f, all.rgb[i])) << i;
 }
 
+// The batches of one VulkanPathRender upload the scene once, and each is the image of a render
+// of its own, bit for bit; batches of another sample count (another band layout) among them.
+TEST(GpuPath, BatchesOfOneRenderShareTheUploadAndChangeNoBit) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(12);
+  s.path.nextEvent = NextEvent::On;
+  const GpuScene scene = flatten(s);
+  VulkanPathRender render(*context, scene);
+  const int before = context->validationMessages();
+  std::uint32_t first = 0;
+  for (std::uint32_t count : {1u, 3u, 1u, 6u}) {
+    VulkanPathOptions o;
+    o.seed = 9;
+    o.firstSample = first;
+    o.sampleCount = count;
+    o.renderSpp = 11;
+    first += count;
+    VulkanTimings shared;
+    RadianceImage batch = render.render(o, nullptr, &shared);
+    RadianceImage alone = renderPath(s, o);
+    EXPECT_EQ(batch.samples, count);
+    EXPECT_TRUE(sameBits(batch, alone)) << "samples from " << o.firstSample;
+  }
+  EXPECT_EQ(render.uploads(), 1u);
+  EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";
+}
+
 // A render of spp 1 samples the pixel centres (gpu_types.h, the camera rule).
 TEST(GpuPath, SppOneSamplesPixelCentres) {
   VKRT_REQUIRE_GPU(context);
