@@ -2,6 +2,7 @@
 #include "gpu/buffer.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "gpu/device_error.h"
 
@@ -62,6 +63,15 @@ Buffer::Buffer(Buffer&& o) noexcept
   o.buffer_ = VK_NULL_HANDLE;
   o.memory_ = VK_NULL_HANDLE;
   o.mapped_ = nullptr;
+}
+
+Buffer& Buffer::operator=(Buffer&& o) noexcept {
+  std::swap(device_, o.device_);
+  std::swap(buffer_, o.buffer_);
+  std::swap(memory_, o.memory_);
+  std::swap(size_, o.size_);
+  std::swap(mapped_, o.mapped_);
+  return *this;   // o frees what this held
 }
 
 Buffer::~Buffer() {

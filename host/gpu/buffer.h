@@ -11,15 +11,6 @@
 
 namespace vkrt {
 
-// `bytes` rounded up to a count of 64 KiB blocks that is not a power of two and is at least 3
-// (Buffer::withContents).
-inline std::size_t texelPaddedBytes(std::size_t bytes) {
-  constexpr std::size_t kBlock = 65536;
-  std::size_t blocks = std::max<std::size_t>((bytes + kBlock - 1) / kBlock, 3);
-  while ((blocks & (blocks - 1)) == 0) ++blocks;
-  return blocks * kBlock;
-}
-
 class Buffer {
  public:
   // `bytes` of 0 still makes a small buffer: Vulkan binds no empty buffer.
@@ -28,21 +19,20 @@ class Buffer {
   Buffer(const Buffer&) = delete;
   Buffer& operator=(const Buffer&) = delete;
 
-  // A buffer holding `items`; with `texels` (an array the shaders may read through a texel
-  // view) zero-padded to texelPaddedBytes. Lavapipe compiles a shader again for each new
-  // combination of two properties of its texel buffers' sizes (Mesa 22.3,
-  // lp_sampler_static_texture_state): whether the buffer's size is a power of two, and
-  // whether bits 8-15 of the view's size are zero (read through a union as the last mip
-  // level). Scenes whose arrays differed in either compiled the same shader twice (0.2-0.5 s
-  // each); a count of 64 KiB blocks that is not a power of two is the same for every scene.
+  // A buffer holding `items` (the scene's arrays: SceneUpload, padded and pooled).
   template <class T>
-  static Buffer withContents(const Context& context, const std::vector<T>& items, bool texels = false) {
-    const std::size_t bytes = items.size() * sizeof(T);
-    Buffer b(context, texels ? texelPaddedBytes(bytes) : bytes);
-    if (!items.empty()) std::memcpy(b.mapped(), items.data(), bytes);
+  static Buffer withContents(const Context& context, const std::vector<T>& items) {
+    Buffer b(context, items.size() * sizeof(T));
+    b.fill(items.data(), items.size() * sizeof(T));
     return b;
   }
+  // `bytes` from `data` at the start, the rest of the buffer zero.
+  void fill(const void* data, std::size_t bytes) {
+    if (bytes > 0) std::memcpy(mapped_, data, bytes);
+    if (size_ > bytes) std::memset(static_cast<char*>(mapped_) + bytes, 0, size_ - bytes);
+  }
   Buffer(Buffer&& other) noexcept;
+  Buffer& operator=(Buffer&& other) noexcept;
 
   VkBuffer handle() const { return buffer_; }
   std::size_t size() const { return size_; }

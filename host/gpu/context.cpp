@@ -13,6 +13,7 @@
 #endif
 
 #include "errors.h"
+#include "gpu/buffer_pool.h"
 #include "gpu/device_error.h"
 #include "timing.h"
 
@@ -226,6 +227,7 @@ Context::Context(const ContextOptions& options) {
     VK_CHECK(vk::vkCreateDevice(physical_, &deviceInfo, nullptr, &device_));
     vk::vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
     pipelines_ = std::make_unique<PipelineCache>(device_);
+    scenePool_ = std::make_unique<BufferPool>();
     deviceSeconds_ = secondsSince(t0);
   } catch (...) {
     if (messenger_) destroyMessenger_(instance_, messenger_, nullptr);
@@ -238,6 +240,7 @@ Context::~Context() {
   if (device_) {
     vk::vkDeviceWaitIdle(device_);
     pipelines_.reset();
+    scenePool_.reset();
     vk::vkDestroyDevice(device_, nullptr);
   }
   if (messenger_) destroyMessenger_(instance_, messenger_, nullptr);

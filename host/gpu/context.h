@@ -31,6 +31,8 @@ struct DeviceInfo {
 // Lists the Vulkan devices (loads the loader, makes a throwaway instance). Throws DeviceError.
 std::vector<DeviceInfo> listDevices();
 
+class BufferPool;
+
 class Context {
  public:
   explicit Context(const ContextOptions& options);   // throws DeviceError
@@ -50,6 +52,8 @@ class Context {
   // The compiled pipelines kept for the renders on this context (their users on one thread
   // at a time, or through the cache's own lock).
   PipelineCache& pipelines() const { return *pipelines_; }
+  // The scene buffers of the last render, for the next (SceneUpload).
+  BufferPool& scenePool() const { return *scenePool_; }
 
  private:
   static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
@@ -69,6 +73,7 @@ class Context {
   std::atomic<int> validationMessages_{0};
   double instanceSeconds_ = 0, deviceSeconds_ = 0;
   std::unique_ptr<PipelineCache> pipelines_;   // made with the device, destroyed before it
+  std::unique_ptr<BufferPool> scenePool_;      // likewise
 };
 
 }  // namespace vkrt

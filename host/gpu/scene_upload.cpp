@@ -1,8 +1,12 @@
 // Uploads the scene's arrays and binds them, for either Vulkan renderer.
 #include "gpu/scene_upload.h"
 
+#include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "gpu/buffer_pool.h"
 #include "gpu/device_error.h"
 
 namespace vkrt {
@@ -13,6 +17,52 @@ namespace {
 
 // The bytes of a texel of the scene's arrays as the shaders read them (ShaderBindings::bindTo).
 constexpr std::size_t kTexel = 16, kPrimRefTexel = 4;
+
+// `bytes` rounded up to a count of 64 KiB blocks that is not a power of two and is at least 3.
+// Lavapipe compiles a shader again for each new combination of two properties of its texel
+// buffers' sizes (Mesa 22.3, lp_sampler_static_texture_state): whether the buffer's size is a
+// power of two, and whether bits 8-15 of the view's size are zero (read through a union as
+// the last mip level). Scenes whose arrays differed in either compiled the same shader twice
+// (0.2-0.5 s each); a count of 64 KiB blocks that is not a power of two is the same for every
+// scene.
+std::size_t texelPaddedBytes(std::size_t bytes) {
+  constexpr std::size_t kBlock = 65536;
+  std::size_t blocks = std::max<std::size_t>((bytes + kBlock - 1) / kBlock, 3);
+  while ((blocks & (blocks - 1)) == 0) ++blocks;
+  return blocks * kBlock;
+}
+
+// An array the shaders may read through a texel view: zero-padded to texelPaddedBytes, in a
+// buffer of the context's pool (BufferPool) where one of that size is kept.
+template <class T>
+Buffer texelArray(const Context& context, const std::vector<T>& items) {
+  const std::size_t bytes = items.size() * sizeof(T);
+  Buffer b = context.scenePool().take(context, texelPaddedBytes(bytes));
+  b.fill(items.data(), bytes);
+  return b;
+}
+
+// The padded sizes of the arrays an upload makes (as SceneUpload's members).
+std::vector<std::size_t> texelArraySizes(const GpuScene& scene, SceneArrays arrays) {
+  std::vector<std::size_t> sizes;
+  auto add = [&](const auto& items) { sizes.push_back(texelPaddedBytes(items.size() * sizeof(items[0]))); };
+  add(scene.triangleNormals);
+  add(scene.lights);
+  add(scene.materials);
+  add(scene.bvh.nodes);
+  add(scene.bvh.primRefs);
+#define VKRT_SHAPE_SIZE(Type, member, name, kind, GpuType, binding) add(scene.member);
+  VKRT_SHAPES(VKRT_SHAPE_SIZE)
+#undef VKRT_SHAPE_SIZE
+  if (arrays == SceneArrays::Path) add(scene.quadLights);
+  return sizes;
+}
+
+// The context, its pool left with the buffers of the sizes this upload takes.
+const Context& withPoolFor(const Context& context, const GpuScene& scene, SceneArrays arrays) {
+  context.scenePool().retainSizes(texelArraySizes(scene, arrays));
+  return context;
+}
 
 }  // namespace
 
@@ -30,18 +80,27 @@ void ShaderBindings::bindTo(ComputePipeline& pipeline) const {
 }
 
 SceneUpload::SceneUpload(const Context& context, const GpuScene& scene, SceneArrays arrays)
-    : normals_(Buffer::withContents(context, scene.triangleNormals, true)),
-      lights_(Buffer::withContents(context, scene.lights, true)),
-      materials_(Buffer::withContents(context, scene.materials, true)),
-      nodes_(Buffer::withContents(context, scene.bvh.nodes, true)),
-      primRefs_(Buffer::withContents(context, scene.bvh.primRefs, true)) {
+    : context_(withPoolFor(context, scene, arrays)),
+      normals_(texelArray(context, scene.triangleNormals)),
+      lights_(texelArray(context, scene.lights)),
+      materials_(texelArray(context, scene.materials)),
+      nodes_(texelArray(context, scene.bvh.nodes)),
+      primRefs_(texelArray(context, scene.bvh.primRefs)) {
 #define VKRT_SHAPE_UPLOAD(Type, member, name, kind, GpuType, binding) \
-  shapes_.push_back(Buffer::withContents(context, scene.member, true));
+  shapes_.push_back(texelArray(context, scene.member));
   VKRT_SHAPES(VKRT_SHAPE_UPLOAD)
 #undef VKRT_SHAPE_UPLOAD
   if (arrays != SceneArrays::Path) return;
-  quadLights_.emplace(Buffer::withContents(context, scene.quadLights, true));
+  quadLights_.emplace(texelArray(context, scene.quadLights));
   emitters_.emplace(Buffer::withContents(context, scene.emitters));
+}
+
+SceneUpload::~SceneUpload() {
+  std::vector<Buffer> arrays;
+  for (Buffer& b : shapes_) arrays.push_back(std::move(b));
+  for (Buffer* b : {&normals_, &lights_, &materials_, &nodes_, &primRefs_}) arrays.push_back(std::move(*b));
+  if (quadLights_) arrays.push_back(std::move(*quadLights_));
+  context_.scenePool().keep(std::move(arrays));
 }
 
 bool SceneUpload::texelsFit(std::size_t maxTexels) const {

@@ -36,6 +36,9 @@ enum class SceneArrays { Whitted, Path };
 class SceneUpload {
  public:
   SceneUpload(const Context& context, const GpuScene& scene, SceneArrays arrays);
+  ~SceneUpload();   // gives the arrays' buffers to the context's pool, for the next upload
+  SceneUpload(const SceneUpload&) = delete;
+  SceneUpload& operator=(const SceneUpload&) = delete;
   // Whether every array read through a texel view fits `maxTexels` texels.
   bool texelsFit(std::size_t maxTexels) const;
   // Sets the scene's bindings: uniform texel buffers with `texelReads`, else storage buffers
@@ -43,6 +46,7 @@ class SceneUpload {
   void bind(ShaderBindings& bindings, bool texelReads) const;
 
  private:
+  const Context& context_;
   std::vector<Buffer> shapes_;   // each kind's array (scene/shapes/shape_list.h), by kind
   Buffer normals_, lights_, materials_, nodes_, primRefs_;
   std::optional<Buffer> quadLights_, emitters_;   // the path shader's only

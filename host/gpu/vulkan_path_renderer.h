@@ -66,7 +66,8 @@ class SceneUpload;
 // A path-traced render on one device, in sample batches (renderProgressive): the scene's
 // buffers are uploaded by the first batch and kept for the others. (Measured on lavapipe: a
 // batch that uploaded the scene again, after an earlier batch had run, traced 10-30% slower
-// per sample than the first; bench/README.md, "--time against --spp".) `scene` must outlive it.
+// per sample than the first; bench/README.md, "`--time` against `--spp`, and the scene's
+// buffers".) `scene` must outlive it.
 class VulkanPathRender {
  public:
   VulkanPathRender(const Context& context, const GpuScene& scene);

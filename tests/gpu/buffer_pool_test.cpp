@@ -1,0 +1,88 @@
+// The scene buffers a context keeps from one render for the next (host/gpu/buffer_pool.h):
+// which buffer a take returns, and, end to end, that renders given another scene's buffers
+// are the renders they would be on fresh ones.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <vector>
+
+#include "gpu/buffer_pool.h"
+#include "gpu/vulkan_path_renderer.h"
+#include "path_scenes.h"
+#include "scene/flatten.h"
+#include "test_support.h"
+
+namespace vkrt {
+namespace {
+
+TEST(BufferPool, TakesAKeptBufferOfTheSameSizeOnly) {
+  VKRT_REQUIRE_GPU(context);
+  BufferPool pool;
+  std::vector<Buffer> buffers;
+  buffers.emplace_back(*context, 65536 * 3);
+  buffers.emplace_back(*context, 65536 * 5);
+  const VkBuffer three = buffers[0].handle(), five = buffers[1].handle();
+  pool.keep(std::move(buffers));
+  EXPECT_EQ(pool.kept(), 2u);
+  Buffer other = pool.take(*context, 65536 * 6);   // no kept one of this size: a new one
+  EXPECT_NE(other.handle(), three);
+  EXPECT_NE(other.handle(), five);
+  EXPECT_EQ(other.size(), 65536u * 6);
+  Buffer again = pool.take(*context, 65536 * 5);
+  EXPECT_EQ(again.handle(), five);
+  EXPECT_EQ(pool.kept(), 1u);
+  // Keeping replaces what was kept: the pool holds one scene's arrays at most.
+  std::vector<Buffer> next;
+  next.push_back(std::move(again));
+  pool.keep(std::move(next));
+  EXPECT_EQ(pool.kept(), 1u);
+  EXPECT_NE(pool.take(*context, 65536 * 3).handle(), three);
+}
+
+// Before an upload, the pool frees what the upload will not take.
+TEST(BufferPool, RetainsOnlyTheSizesAnUploadTakes) {
+  VKRT_REQUIRE_GPU(context);
+  BufferPool pool;
+  std::vector<Buffer> buffers;
+  buffers.emplace_back(*context, 65536 * 3);
+  buffers.emplace_back(*context, 65536 * 5);
+  buffers.emplace_back(*context, 65536 * 5);
+  const VkBuffer three = buffers[0].handle();
+  pool.keep(std::move(buffers));
+  pool.retainSizes({65536 * 3, 65536 * 6});
+  EXPECT_EQ(pool.kept(), 1u);
+  EXPECT_EQ(pool.take(*context, 65536 * 3).handle(), three);
+  EXPECT_EQ(pool.kept(), 0u);
+}
+
+TEST(BufferPool, FillZeroesWhatFollowsTheData) {
+  VKRT_REQUIRE_GPU(context);
+  Buffer b(*context, 4096);
+  std::memset(b.mapped(), 0xAB, b.size());   // what an earlier scene left
+  const std::uint32_t data[] = {1, 2, 3};
+  b.fill(data, sizeof data);
+  const auto* bytes = static_cast<const unsigned char*>(b.mapped());
+  EXPECT_EQ(std::memcmp(bytes, data, sizeof data), 0);
+  for (std::size_t i = sizeof data; i < b.size(); ++i) ASSERT_EQ(bytes[i], 0u) << i;
+}
+
+// A render on the buffers of another scene (the same padded sizes, other contents) is the
+// render of its own scene, bit for bit: B, then A, then B again on one context.
+TEST(BufferPool, ARenderOnAnotherScenesBuffersChangesNoBit) {
+  VKRT_REQUIRE_GPU(context);
+  const int before = context->validationMessages();
+  const GpuScene a = flatten(test::emissiveSurfacesBox(10, 3)), b = flatten(test::cornellLikeBox(10, 3));
+  VulkanPathOptions o;
+  o.seed = 3;
+  o.sampleCount = 2;
+  RadianceImage first = renderVulkanPath(*context, b, o, nullptr, nullptr);
+  EXPECT_GT(context->scenePool().kept(), 0u);   // the render's arrays, kept for the next
+  RadianceImage other = renderVulkanPath(*context, a, o, nullptr, nullptr);
+  RadianceImage again = renderVulkanPath(*context, b, o, nullptr, nullptr);
+  EXPECT_FALSE(test::sameBits(first, other));
+  EXPECT_TRUE(test::sameBits(first, again));
+  EXPECT_EQ(context->validationMessages(), before) << "the Vulkan validation layer reported problems (see stderr)";
+}
+
+}  // namespace
+}  // namespace vkrt
