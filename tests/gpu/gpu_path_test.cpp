@@ -351,11 +351,18 @@ TEST(GpuPath, SameSeedSameBitsOtherSeedOtherImage) {
   EXPECT_TRUE(sameBits(a, renderPath(s, o)));
   o.reads = SceneReads::Texel;
   EXPECT_TRUE(sameBits(a, renderPath(s, o)));
-  // Specialization compiles out only what the scene lacks, and so does the module for scenes
-  // of quad lights alone (VKRT_QUAD_LIGHTS_ONLY): the general variant, every light's code in
-  // it, renders the same bits.
+  // Specialization compiles out only what the scene lacks: the general variant (every feature
+  // on, but the module of quad lights alone: VKRT_QUAD_LIGHTS_ONLY) renders the same bits.
   o.variant = ShaderVariant::General;
   EXPECT_TRUE(sameBits(a, renderPath(s, o)));
+  // A black point light adds nothing, but takes the whole module, with every light's code:
+  // the same bits, specialised and general.
+  SceneDesc black = s;
+  black.lights.push_back(Light{LightType::Point, dvec3(0.0, 1.5, 0.0), dvec3(0.0), dvec3(1.0, 0.0, 0.0)});
+  for (ShaderVariant v : {ShaderVariant::Specialized, ShaderVariant::General}) {
+    o.variant = v;
+    EXPECT_TRUE(sameBits(a, renderPath(black, o))) << (v == ShaderVariant::General ? "general" : "specialised");
+  }
   // With a point light too: the whole module, specialised and general.
   s.lights.push_back(Light{LightType::Point, dvec3(0.0, 1.5, 0.0), dvec3(0.5), dvec3(1.0, 0.0, 0.0)});
   o.variant = ShaderVariant::Specialized;
