@@ -19,21 +19,28 @@ Buffer BufferPool::take(const Context& context, std::size_t bytes) {
 }
 
 void BufferPool::keep(std::vector<Buffer> buffers) {
+  std::size_t total = 0;
+  for (const Buffer& b : buffers) total += b.size();
   std::vector<Buffer> dropped;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     dropped.swap(kept_);
-    kept_ = std::move(buffers);
+    if (total <= maxBytes_) kept_ = std::move(buffers);
   }
-}   // `dropped` freed outside the lock
+}   // `dropped` (and `buffers` when too large) freed outside the lock
 
 void BufferPool::retainSizes(const std::vector<std::size_t>& sizes) {
   std::vector<Buffer> dropped;
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::size_t> wanted = sizes;
     std::vector<Buffer> retained;
-    for (Buffer& b : kept_)
-      (std::find(sizes.begin(), sizes.end(), b.size()) != sizes.end() ? retained : dropped).push_back(std::move(b));
+    for (Buffer& b : kept_) {
+      const auto it = std::find(wanted.begin(), wanted.end(), b.size());
+      const bool taken = it != wanted.end();
+      if (taken) wanted.erase(it);
+      (taken ? retained : dropped).push_back(std::move(b));
+    }
     kept_ = std::move(retained);
   }
 }

@@ -96,11 +96,14 @@ SceneUpload::SceneUpload(const Context& context, const GpuScene& scene, SceneArr
 }
 
 SceneUpload::~SceneUpload() {
-  std::vector<Buffer> arrays;
-  for (Buffer& b : shapes_) arrays.push_back(std::move(b));
-  for (Buffer* b : {&normals_, &lights_, &materials_, &nodes_, &primRefs_}) arrays.push_back(std::move(*b));
-  if (quadLights_) arrays.push_back(std::move(*quadLights_));
-  context_.scenePool().keep(std::move(arrays));
+  try {
+    std::vector<Buffer> arrays;
+    for (Buffer& b : shapes_) arrays.push_back(std::move(b));
+    for (Buffer* b : {&normals_, &lights_, &materials_, &nodes_, &primRefs_}) arrays.push_back(std::move(*b));
+    if (quadLights_) arrays.push_back(std::move(*quadLights_));
+    context_.scenePool().keep(std::move(arrays));
+  } catch (...) {   // no memory for the list: the buffers are freed instead of kept
+  }
 }
 
 bool SceneUpload::texelsFit(std::size_t maxTexels) const {

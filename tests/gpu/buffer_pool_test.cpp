@@ -36,7 +36,23 @@ TEST(BufferPool, TakesAKeptBufferOfTheSameSizeOnly) {
   next.push_back(std::move(again));
   pool.keep(std::move(next));
   EXPECT_EQ(pool.kept(), 1u);
-  EXPECT_NE(pool.take(*context, 65536 * 3).handle(), three);
+  EXPECT_EQ(pool.take(*context, 65536 * 5).handle(), five);
+  EXPECT_EQ(pool.kept(), 0u);
+}
+
+// Arrays that add up to more than the pool's most are freed, not kept.
+TEST(BufferPool, KeepsNothingAboveItsMost) {
+  VKRT_REQUIRE_GPU(context);
+  BufferPool pool(65536 * 8);
+  std::vector<Buffer> small, large;
+  small.emplace_back(*context, 65536 * 3);
+  small.emplace_back(*context, 65536 * 5);
+  pool.keep(std::move(small));
+  EXPECT_EQ(pool.kept(), 2u);
+  large.emplace_back(*context, 65536 * 5);
+  large.emplace_back(*context, 65536 * 5);
+  pool.keep(std::move(large));
+  EXPECT_EQ(pool.kept(), 0u);
 }
 
 // Before an upload, the pool frees what the upload will not take.
@@ -49,9 +65,10 @@ TEST(BufferPool, RetainsOnlyTheSizesAnUploadTakes) {
   buffers.emplace_back(*context, 65536 * 5);
   const VkBuffer three = buffers[0].handle();
   pool.keep(std::move(buffers));
-  pool.retainSizes({65536 * 3, 65536 * 6});
-  EXPECT_EQ(pool.kept(), 1u);
+  pool.retainSizes({65536 * 3, 65536 * 5, 65536 * 6});   // one of the two of 5 blocks
+  EXPECT_EQ(pool.kept(), 2u);
   EXPECT_EQ(pool.take(*context, 65536 * 3).handle(), three);
+  pool.retainSizes({65536 * 6});
   EXPECT_EQ(pool.kept(), 0u);
 }
 
