@@ -12,7 +12,8 @@
 // Its math is float32 and written independently of the CPU reference (host/cpu/).
 // Built twice (CMakeLists.txt): whole, and with VKRT_QUAD_LIGHTS_ONLY, without the code of
 // point and directional lights, emissive surfaces as lights and analyticdirect's closed form,
-// for the specialised variants of scenes that use none of them (most of the course's): code
+// for the variants, specialised and general, of scenes that use none of them (most of the
+// course's): code
 // that specialization constants make dead still costs lavapipe its translation and inlining
 // when the pipeline is created (bench/README.md, "Path tracing on lavapipe").
 #version 450

@@ -19,7 +19,8 @@ class Buffer {
   Buffer(const Buffer&) = delete;
   Buffer& operator=(const Buffer&) = delete;
 
-  // A buffer holding `items` (the scene's arrays: SceneUpload, padded and pooled).
+  // A buffer holding `items`, of their size (the scene's texel arrays are padded and pooled
+  // instead: SceneUpload).
   template <class T>
   static Buffer withContents(const Context& context, const std::vector<T>& items) {
     Buffer b(context, items.size() * sizeof(T));

@@ -32,8 +32,8 @@ std::size_t texelPaddedBytes(std::size_t bytes) {
   return blocks * kBlock;
 }
 
-// An array the shaders may read through a texel view: zero-padded to texelPaddedBytes, in a
-// buffer of the context's pool (BufferPool) where one of that size is kept.
+// An array the shaders may read through a texel view: padded to texelPaddedBytes, in a buffer
+// of the context's pool (BufferPool) where one of that size is kept.
 template <class T>
 Buffer texelArray(const Context& context, const std::vector<T>& items) {
   const std::size_t bytes = items.size() * sizeof(T);
@@ -42,7 +42,8 @@ Buffer texelArray(const Context& context, const std::vector<T>& items) {
   return b;
 }
 
-// The padded sizes of the arrays an upload makes (as SceneUpload's members).
+// The padded sizes of the arrays an upload makes: the texelArray calls of SceneUpload's
+// constructor, one for one (an array left out here is freed from the pool, not reused).
 std::vector<std::size_t> texelArraySizes(const GpuScene& scene, SceneArrays arrays) {
   std::vector<std::size_t> sizes;
   auto add = [&](const auto& items) { sizes.push_back(texelPaddedBytes(items.size() * sizeof(items[0]))); };

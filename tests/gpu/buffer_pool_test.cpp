@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <initializer_list>
 #include <vector>
 
 #include "gpu/buffer_pool.h"
@@ -15,20 +16,27 @@
 namespace vkrt {
 namespace {
 
+constexpr std::size_t kBlock = 65536;
+
+// New buffers of these counts of 64 KiB blocks.
+std::vector<Buffer> buffersOfBlocks(const Context& context, std::initializer_list<std::size_t> blocks) {
+  std::vector<Buffer> buffers;
+  for (std::size_t n : blocks) buffers.emplace_back(context, n * kBlock);
+  return buffers;
+}
+
 TEST(BufferPool, TakesAKeptBufferOfTheSameSizeOnly) {
   VKRT_REQUIRE_GPU(context);
   BufferPool pool;
-  std::vector<Buffer> buffers;
-  buffers.emplace_back(*context, 65536 * 3);
-  buffers.emplace_back(*context, 65536 * 5);
+  std::vector<Buffer> buffers = buffersOfBlocks(*context, {3, 5});
   const VkBuffer three = buffers[0].handle(), five = buffers[1].handle();
   pool.keep(std::move(buffers));
   EXPECT_EQ(pool.kept(), 2u);
-  Buffer other = pool.take(*context, 65536 * 6);   // no kept one of this size: a new one
+  Buffer other = pool.take(*context, kBlock * 6);   // no kept one of this size: a new one
   EXPECT_NE(other.handle(), three);
   EXPECT_NE(other.handle(), five);
-  EXPECT_EQ(other.size(), 65536u * 6);
-  Buffer again = pool.take(*context, 65536 * 5);
+  EXPECT_EQ(other.size(), kBlock * 6);
+  Buffer again = pool.take(*context, kBlock * 5);
   EXPECT_EQ(again.handle(), five);
   EXPECT_EQ(pool.kept(), 1u);
   // Keeping replaces what was kept: the pool holds one scene's arrays at most.
@@ -36,22 +44,17 @@ TEST(BufferPool, TakesAKeptBufferOfTheSameSizeOnly) {
   next.push_back(std::move(again));
   pool.keep(std::move(next));
   EXPECT_EQ(pool.kept(), 1u);
-  EXPECT_EQ(pool.take(*context, 65536 * 5).handle(), five);
+  EXPECT_EQ(pool.take(*context, kBlock * 5).handle(), five);
   EXPECT_EQ(pool.kept(), 0u);
 }
 
 // Arrays that add up to more than the pool's most are freed, not kept.
 TEST(BufferPool, KeepsNothingAboveItsMost) {
   VKRT_REQUIRE_GPU(context);
-  BufferPool pool(65536 * 8);
-  std::vector<Buffer> small, large;
-  small.emplace_back(*context, 65536 * 3);
-  small.emplace_back(*context, 65536 * 5);
-  pool.keep(std::move(small));
+  BufferPool pool(kBlock * 8);
+  pool.keep(buffersOfBlocks(*context, {3, 5}));
   EXPECT_EQ(pool.kept(), 2u);
-  large.emplace_back(*context, 65536 * 5);
-  large.emplace_back(*context, 65536 * 5);
-  pool.keep(std::move(large));
+  pool.keep(buffersOfBlocks(*context, {5, 5}));
   EXPECT_EQ(pool.kept(), 0u);
 }
 
@@ -59,16 +62,13 @@ TEST(BufferPool, KeepsNothingAboveItsMost) {
 TEST(BufferPool, RetainsOnlyTheSizesAnUploadTakes) {
   VKRT_REQUIRE_GPU(context);
   BufferPool pool;
-  std::vector<Buffer> buffers;
-  buffers.emplace_back(*context, 65536 * 3);
-  buffers.emplace_back(*context, 65536 * 5);
-  buffers.emplace_back(*context, 65536 * 5);
+  std::vector<Buffer> buffers = buffersOfBlocks(*context, {3, 5, 5});
   const VkBuffer three = buffers[0].handle();
   pool.keep(std::move(buffers));
-  pool.retainSizes({65536 * 3, 65536 * 5, 65536 * 6});   // one of the two of 5 blocks
+  pool.retainSizes({kBlock * 3, kBlock * 5, kBlock * 6});   // one of the two of 5 blocks
   EXPECT_EQ(pool.kept(), 2u);
-  EXPECT_EQ(pool.take(*context, 65536 * 3).handle(), three);
-  pool.retainSizes({65536 * 6});
+  EXPECT_EQ(pool.take(*context, kBlock * 3).handle(), three);
+  pool.retainSizes({kBlock * 6});
   EXPECT_EQ(pool.kept(), 0u);
 }
 

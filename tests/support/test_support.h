@@ -129,9 +129,9 @@ struct EstimatorComparison {
 EstimatorComparison compareEstimators(const RadianceImage& reference, int seeds,
                                       const std::function<RadianceImage(int way, std::uint32_t seed)>& render);
 
-// Prints the comparison (`ways`: the two ways' names) and expects way 1's mean squared error
-// below `ratio` of way 0's, and both means within 4 standard errors of way 0's mean (and 0.1%)
-// of the reference's: less noise, no bias.
+// Prints the comparison (`way0`, `way1`: the two ways' names) and expects way 1's mean squared
+// error below `ratio` of way 0's, and both ways' means within 4 standard errors (and 0.1%) of
+// the reference's: less noise, no bias.
 void expectLessNoiseSameMean(const EstimatorComparison& c, const RadianceImage& reference, double ratio,
                              const char* way0, const char* way1);
 
