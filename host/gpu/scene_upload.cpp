@@ -42,26 +42,31 @@ Buffer texelArray(const Context& context, const std::vector<T>& items) {
   return b;
 }
 
-// The padded sizes of the arrays an upload makes: the texelArray calls of SceneUpload's
-// constructor, one for one (an array left out here is freed from the pool, not reused).
-std::vector<std::size_t> texelArraySizes(const GpuScene& scene, SceneArrays arrays) {
-  std::vector<std::size_t> sizes;
-  auto add = [&](const auto& items) { sizes.push_back(texelPaddedBytes(items.size() * sizeof(items[0]))); };
-  add(scene.triangleNormals);
-  add(scene.lights);
-  add(scene.materials);
-  add(scene.bvh.nodes);
-  add(scene.bvh.primRefs);
-#define VKRT_SHAPE_SIZE(Type, member, name, kind, GpuType, binding) add(scene.member);
-  VKRT_SHAPES(VKRT_SHAPE_SIZE)
-#undef VKRT_SHAPE_SIZE
-  if (arrays == SceneArrays::Path) add(scene.quadLights);
-  return sizes;
+// The bytes of a texel of the array at `binding` (ShaderBindings::bindTo).
+std::size_t texelBytesAt(std::uint32_t binding) { return binding == gpu::kBindingPrimRefs ? kPrimRefTexel : kTexel; }
+
+// The arrays an upload makes, each with its binding: f(binding, items) for each, the one list
+// of them (the emitters, always a storage buffer, are not among them).
+template <class F>
+void forEachTexelArray(const GpuScene& scene, SceneArrays arrays, F&& f) {
+#define VKRT_SHAPE_ARRAY(Type, member, name, kind, GpuType, binding) f(binding, scene.member);
+  VKRT_SHAPES(VKRT_SHAPE_ARRAY)
+#undef VKRT_SHAPE_ARRAY
+  f(gpu::kBindingTriangleNormals, scene.triangleNormals);
+  f(gpu::kBindingLights, scene.lights);
+  f(gpu::kBindingMaterials, scene.materials);
+  f(gpu::kBindingBvhNodes, scene.bvh.nodes);
+  f(gpu::kBindingPrimRefs, scene.bvh.primRefs);
+  if (arrays == SceneArrays::Path) f(gpu::kBindingQuadLights, scene.quadLights);
 }
 
 // The context, its pool left with the buffers of the sizes this upload takes.
 const Context& withPoolFor(const Context& context, const GpuScene& scene, SceneArrays arrays) {
-  context.scenePool().retainSizes(texelArraySizes(scene, arrays));
+  std::vector<std::size_t> sizes;
+  forEachTexelArray(scene, arrays, [&](std::uint32_t, const auto& items) {
+    sizes.push_back(texelPaddedBytes(items.size() * sizeof(items[0])));
+  });
+  context.scenePool().retainSizes(sizes);
   return context;
 }
 
@@ -73,63 +78,37 @@ void ShaderBindings::bindTo(ComputePipeline& pipeline) const {
       pipeline.bindUniform(b, *buffers[b]);
     else if (types[b] == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
       pipeline.bind(b, *buffers[b]);
-    else if (b == gpu::kBindingPrimRefs)
-      pipeline.bindTexels(b, *buffers[b], VK_FORMAT_R32_UINT, kPrimRefTexel);
     else
-      pipeline.bindTexels(b, *buffers[b], VK_FORMAT_R32G32B32A32_UINT, kTexel);
+      pipeline.bindTexels(b, *buffers[b], texelBytesAt(b) == kPrimRefTexel ? VK_FORMAT_R32_UINT : VK_FORMAT_R32G32B32A32_UINT,
+                          texelBytesAt(b));
   }
 }
 
 SceneUpload::SceneUpload(const Context& context, const GpuScene& scene, SceneArrays arrays)
-    : context_(withPoolFor(context, scene, arrays)),
-      normals_(texelArray(context, scene.triangleNormals)),
-      lights_(texelArray(context, scene.lights)),
-      materials_(texelArray(context, scene.materials)),
-      nodes_(texelArray(context, scene.bvh.nodes)),
-      primRefs_(texelArray(context, scene.bvh.primRefs)) {
-#define VKRT_SHAPE_UPLOAD(Type, member, name, kind, GpuType, binding) \
-  shapes_.push_back(texelArray(context, scene.member));
-  VKRT_SHAPES(VKRT_SHAPE_UPLOAD)
-#undef VKRT_SHAPE_UPLOAD
-  if (arrays != SceneArrays::Path) return;
-  quadLights_.emplace(texelArray(context, scene.quadLights));
-  emitters_.emplace(Buffer::withContents(context, scene.emitters));
+    : context_(withPoolFor(context, scene, arrays)) {
+  forEachTexelArray(scene, arrays, [&](std::uint32_t binding, const auto& items) {
+    arrays_.push_back({binding, texelArray(context, items)});
+  });
+  if (arrays == SceneArrays::Path) emitters_.emplace(Buffer::withContents(context, scene.emitters));
 }
 
 SceneUpload::~SceneUpload() {
   try {
-    std::vector<Buffer> arrays;
-    for (Buffer& b : shapes_) arrays.push_back(std::move(b));
-    for (Buffer* b : {&normals_, &lights_, &materials_, &nodes_, &primRefs_}) arrays.push_back(std::move(*b));
-    if (quadLights_) arrays.push_back(std::move(*quadLights_));
-    context_.scenePool().keep(std::move(arrays));
+    std::vector<Buffer> buffers;
+    for (Array& a : arrays_) buffers.push_back(std::move(a.buffer));
+    context_.scenePool().keep(std::move(buffers));
   } catch (...) {   // no memory for the list: the buffers are freed instead of kept
   }
 }
 
 bool SceneUpload::texelsFit(std::size_t maxTexels) const {
-  bool fit = primRefs_.size() / 4 <= maxTexels;   // one uint a texel
-  for (const Buffer* b : {&normals_, &lights_, &materials_, &nodes_}) fit = fit && b->size() / 16 <= maxTexels;
-  for (const Buffer& b : shapes_) fit = fit && b.size() / 16 <= maxTexels;
-  if (quadLights_) fit = fit && quadLights_->size() / 16 <= maxTexels;
-  return fit;
+  return std::all_of(arrays_.begin(), arrays_.end(),
+                     [&](const Array& a) { return a.buffer.size() / texelBytesAt(a.binding) <= maxTexels; });
 }
 
 void SceneUpload::bind(ShaderBindings& bindings, bool texelReads) const {
   const VkDescriptorType type = texelReads ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  // Each kind's array at its binding, in the order of the kinds.
-  constexpr std::uint32_t kShapeBindings[] = {
-#define VKRT_SHAPE_BINDING(Type, member, name, kind, GpuType, binding) binding,
-      VKRT_SHAPES(VKRT_SHAPE_BINDING)
-#undef VKRT_SHAPE_BINDING
-  };
-  for (std::size_t kind = 0; kind < shapes_.size(); ++kind) bindings.set(kShapeBindings[kind], shapes_[kind], type);
-  bindings.set(gpu::kBindingTriangleNormals, normals_, type);
-  bindings.set(gpu::kBindingLights, lights_, type);
-  bindings.set(gpu::kBindingMaterials, materials_, type);
-  bindings.set(gpu::kBindingBvhNodes, nodes_, type);
-  bindings.set(gpu::kBindingPrimRefs, primRefs_, type);
-  if (quadLights_) bindings.set(gpu::kBindingQuadLights, *quadLights_, type);
+  for (const Array& a : arrays_) bindings.set(a.binding, a.buffer, type);
   if (emitters_) bindings.set(gpu::kBindingEmitters, *emitters_, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
 }
 

@@ -46,10 +46,13 @@ class SceneUpload {
   void bind(ShaderBindings& bindings, bool texelReads) const;
 
  private:
+  struct Array {
+    std::uint32_t binding;
+    Buffer buffer;
+  };
   const Context& context_;
-  std::vector<Buffer> shapes_;   // each kind's array (scene/shapes/shape_list.h), by kind
-  Buffer normals_, lights_, materials_, nodes_, primRefs_;
-  std::optional<Buffer> quadLights_, emitters_;   // the path shader's only
+  std::vector<Array> arrays_;          // the arrays read through texel views with the texel reads
+  std::optional<Buffer> emitters_;     // the path shader's only; a storage buffer either way
 };
 
 // Whether the shader reads the scene through texel buffers: as `reads` says, Auto where
