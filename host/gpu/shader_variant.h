@@ -19,11 +19,12 @@ namespace vkrt {
 
 // A render's estimated rays from which the specialised variant pays for its compile on a
 // CPU device (lavapipe, two cores: a compile of 0.3-0.5 s). The Whitted shader's general
-// variant traces 10-25% slower, at about 10-30 M of these estimated rays a second; the path
-// shader's 30-50% slower (every integrator in), at 2-5 M. A GPU compiles in milliseconds
-// and always specialises.
+// variant traces 10-25% slower, at about 10-30 M of these estimated rays a second. The path
+// shader's general variant takes 9-50 ns more per estimated ray (median about 20 ns) over the
+// 16 CSE 168 scenes as previews (bench/README.md, "Latest figures: first render"), so its
+// compile pays from about 20 M. A GPU compiles in milliseconds and always specialises.
 inline constexpr double kSpecializeWhittedAboveRays = 30e6;
-inline constexpr double kSpecializePathAboveRays = 2e6;
+inline constexpr double kSpecializePathAboveRays = 20e6;
 
 bool specializationPays(bool cpuDevice, double estimatedRays, bool pathShader);
 

@@ -16,6 +16,11 @@ TEST(ShaderVariant, SpecializingPaysOnlyForLongRendersOnACpu) {
   EXPECT_FALSE(specializationPays(true, kSpecializeWhittedAboveRays, false));
   EXPECT_TRUE(specializationPays(true, 2 * kSpecializeWhittedAboveRays, false));
   EXPECT_FALSE(specializationPays(true, 240.0 * 240 * 2 * 5, true));  // a preview of a cornell box
+  // Previews of the CSE 168 scenes (2 samples at half size), whose compile of 0.3-0.5 s would
+  // save 40-180 ms of tracing: hw2/direct3x3 (a camera ray and 18 light samples a sample),
+  // hw2/sphere as estimated.
+  EXPECT_FALSE(specializationPays(true, 320.0 * 240 * 2 * 19, true));
+  EXPECT_FALSE(specializationPays(true, 15.5e6, true));
   EXPECT_TRUE(specializationPays(true, 480.0 * 480 * 64 * 9, true));  // cornellNEE at 64 spp
   EXPECT_TRUE(specializationPays(false, 1.0, false));                 // a GPU compiles in milliseconds
   EXPECT_TRUE(specializationPays(false, 1.0, true));
