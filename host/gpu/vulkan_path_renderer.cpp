@@ -26,13 +26,18 @@ namespace vkrt {
 namespace {
 
 // The features pathtrace.comp is specialised to (all on when not specializing), and what was
-// left out, for --stats; the integrator settings (kPathSpecFromParams when not specializing);
+// left out, for --stats; the integrator settings (kPathSpecFromParams when not specializing,
+// but the sampler);
 // and whether rays test every primitive instead of walking the BVH (either way).
 std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPathParams& path, bool specialize,
                                         bool testAll, std::string& leftOut) {
   std::vector<std::uint32_t> spec(gpu::kPathSpecCount, 1u);   // bools as 0/1 (32-bit spec constants)
   for (std::uint32_t i = gpu::kPathSpecIntegrator; i <= gpu::kPathSpecJitter; ++i) spec[i] = gpu::kPathSpecFromParams;
-  spec[gpu::kPathSpecSampler] = gpu::kPathSpecFromParams;
+  // The sampler is specialised in the general variant too: read from the parameters, the strata's
+  // code ran for every number drawn in renders of independent samples as well (lavapipe runs
+  // both sides of an `if`), a tenth of a direct-lighting preview's instructions. A machine
+  // whose renders use both samplers compiles a general variant for each.
+  spec[gpu::kPathSpecSampler] = path.strataSide > 0 ? 1u : 0u;
   spec[gpu::kPathSpecTestAll] = testAll;
   if (!specialize) return spec;
   bool point = false, directional = false, attenuation = false, ggx = false;
@@ -58,7 +63,6 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPat
   spec[gpu::kPathSpecRussianRoulette] = scene.path.russianRoulette;
   spec[gpu::kPathSpecStratified] = scene.path.lightStrata > 0 ? 1u : 0u;
   spec[gpu::kPathSpecJitter] = path.jitter;
-  spec[gpu::kPathSpecSampler] = path.strataSide > 0 ? 1u : 0u;
   const char* names[gpu::kPathSpecHasGgx + 1] = {"triangles",   "spheres",            "smooth normals", "point lights",
                                             "directional lights", "attenuation", "quad lights",    "ggx"};
   for (std::uint32_t i = 0; i <= gpu::kPathSpecHasGgx; ++i)

@@ -372,6 +372,27 @@ TEST(GpuPath, SameSeedSameBitsOtherSeedOtherImage) {
   EXPECT_TRUE(sameBits(withPoint, renderPath(s, o)));
 }
 
+// The sampler is specialised in the general variant too (independent and stratified samples
+// each have their own): stratified samples render the same bits general and specialised, and
+// not those of independent samples.
+TEST(GpuPath, StratifiedSamplesSameBitsGeneralAndSpecialised) {
+  VKRT_REQUIRE_GPU(context);
+  SceneDesc s = boxScene(16);
+  VulkanPathOptions o;
+  o.sampleCount = 4;
+  o.renderSpp = 4;
+  o.seed = 5;
+  o.variant = ShaderVariant::Specialized;
+  const RadianceImage independent = renderPath(s, o);
+  o.stratified = true;
+  const RadianceImage stratified = renderPath(s, o);
+  EXPECT_FALSE(sameBits(independent, stratified));
+  o.variant = ShaderVariant::General;
+  EXPECT_TRUE(sameBits(stratified, renderPath(s, o)));
+  o.stratified = false;
+  EXPECT_TRUE(sameBits(independent, renderPath(s, o)));
+}
+
 // A crop draws the numbers and camera rays of the full image: its pixels are the full
 // render's, bit for bit.
 TEST(GpuPath, CropIsTheFullRendersRegionBitForBit) {
