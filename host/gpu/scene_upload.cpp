@@ -78,9 +78,10 @@ void ShaderBindings::bindTo(ComputePipeline& pipeline) const {
       pipeline.bindUniform(b, *buffers[b]);
     else if (types[b] == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
       pipeline.bind(b, *buffers[b]);
+    else if (texelBytesAt(b) == kPrimRefTexel)
+      pipeline.bindTexels(b, *buffers[b], VK_FORMAT_R32_UINT, kPrimRefTexel);
     else
-      pipeline.bindTexels(b, *buffers[b], texelBytesAt(b) == kPrimRefTexel ? VK_FORMAT_R32_UINT : VK_FORMAT_R32G32B32A32_UINT,
-                          texelBytesAt(b));
+      pipeline.bindTexels(b, *buffers[b], VK_FORMAT_R32G32B32A32_UINT, kTexel);
   }
 }
 

@@ -51,8 +51,8 @@ class SceneUpload {
     Buffer buffer;
   };
   const Context& context_;
-  std::vector<Array> arrays_;          // the arrays read through texel views with the texel reads
-  std::optional<Buffer> emitters_;     // the path shader's only; a storage buffer either way
+  std::vector<Array> arrays_;        // the arrays read through texel views with the texel reads
+  std::optional<Buffer> emitters_;   // the path shader's only; a storage buffer either way
 };
 
 // Whether the shader reads the scene through texel buffers: as `reads` says, Auto where

@@ -27,8 +27,8 @@ namespace {
 
 // The features pathtrace.comp is specialised to (all on when not specializing), and what was
 // left out, for --stats; the integrator settings (kPathSpecFromParams when not specializing,
-// but the sampler);
-// and whether rays test every primitive instead of walking the BVH (either way).
+// but for the sampler); and whether rays test every primitive instead of walking the BVH
+// (either way).
 std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPathParams& path, bool specialize,
                                         bool testAll, std::string& leftOut) {
   std::vector<std::uint32_t> spec(gpu::kPathSpecCount, 1u);   // bools as 0/1 (32-bit spec constants)
