@@ -138,8 +138,11 @@ void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
     std::fprintf(stderr, ", %s", vkrt::counted(r.threads, "thread", "threads").c_str());
   if (!r.estimator.empty()) std::fprintf(stderr, "\n  estimator: %s", r.estimator.c_str());
   std::fprintf(stderr, "\n  parse   %9.1f ms\n", r.parseSeconds * ms);
-  std::fprintf(stderr, "  build   %9.1f ms  (BVH, %s)\n", r.buildSeconds * ms,
+  std::fprintf(stderr, "  build   %9.1f ms  (BVH, %s", r.buildSeconds * ms,
                vkrt::counted(r.bvhNodes, "node", "nodes").c_str());
+  if (req.backend == vkrt::Backend::Vulkan)
+    std::fprintf(stderr, "; beside it the first batch's pipeline, %.1f ms", r.pipelineAheadSeconds * ms);
+  std::fprintf(stderr, ")\n");
   std::fprintf(stderr, "  render  %9.1f ms\n", r.renderSeconds * ms);
   if (req.backend == vkrt::Backend::Vulkan) {
     const vkrt::VulkanTimings& v = r.vulkan;
@@ -171,11 +174,11 @@ std::string reportJson(const vkrt::RenderReport& r) {
   const vkrt::VulkanTimings& v = r.vulkan;
   std::snprintf(buf, sizeof buf,
                 "{\"backend\":%s,\"seconds\":%.6f,\"parse_s\":%.6f,\"build_s\":%.6f,\"render_s\":%.6f,"
-                "\"instance_s\":%.6f,\"device_s\":%.6f,\"upload_s\":%.6f,\"pipeline_s\":%.6f,"
+                "\"instance_s\":%.6f,\"device_s\":%.6f,\"upload_s\":%.6f,\"pipeline_ahead_s\":%.6f,\"pipeline_s\":%.6f,"
                 "\"first_dispatch_s\":%.6f,\"dispatch_s\":%.6f,\"readback_s\":%.6f,\"rays\":%llu,"
                 "\"shadow_rays\":%llu,\"secondary_rays\":%llu}",
                 vkrt::jsonQuoted(r.backend).c_str(), r.parseSeconds + r.buildSeconds + r.renderSeconds, r.parseSeconds, r.buildSeconds,
-                r.renderSeconds, r.instanceSeconds, r.deviceSeconds, v.uploadSeconds, v.pipelineSeconds,
+                r.renderSeconds, r.instanceSeconds, r.deviceSeconds, v.uploadSeconds, r.pipelineAheadSeconds, v.pipelineSeconds,
                 v.firstDispatchSeconds, v.dispatchSeconds, v.readbackSeconds,
                 static_cast<unsigned long long>(r.rays.total()), static_cast<unsigned long long>(r.rays.shadow),
                 static_cast<unsigned long long>(r.rays.secondary));

@@ -34,10 +34,10 @@ BandBuffers::BandBuffers(const Context& context, const BandLayout& layout, std::
 }
 
 void BandBuffers::bind(ShaderBindings& bindings) const {
-  bindings.set(gpu::kBindingPixels, pixels, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-  bindings.set(gpu::kBindingPathStates, states, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-  bindings.set(gpu::kBindingCounters, counters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-  bindings.set(gpu::kBindingParams, params, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
+  bindings.set(gpu::kBindingPixels, pixels);
+  bindings.set(gpu::kBindingPathStates, states);
+  bindings.set(gpu::kBindingCounters, counters);
+  bindings.set(gpu::kBindingParams, params);
 }
 
 void BandBuffers::readRows(std::uint32_t rows, float scale, RadianceImage& image, int y0) const {

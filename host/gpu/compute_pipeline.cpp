@@ -9,69 +9,85 @@
 
 namespace vkrt {
 
+namespace {
+
+// The set layout, pipeline layout and pipeline of `key`: all three made, or none (throws).
+CompiledPipeline compile(VkDevice device, const PipelineKey& key) {
+  const auto bindingCount = static_cast<std::uint32_t>(key.bindingTypes.size());
+  CompiledPipeline made;
+  auto destroy = [&]() {
+    if (made.pipeline) vk::vkDestroyPipeline(device, made.pipeline, nullptr);
+    if (made.layout) vk::vkDestroyPipelineLayout(device, made.layout, nullptr);
+    if (made.setLayout) vk::vkDestroyDescriptorSetLayout(device, made.setLayout, nullptr);
+  };
+  try {
+    std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
+    for (std::uint32_t i = 0; i < bindingCount; ++i)
+      bindings[i] = {i, key.bindingTypes[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    setInfo.bindingCount = bindingCount;
+    setInfo.pBindings = bindings.data();
+    VK_CHECK(vk::vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &made.setLayout));
+
+    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, key.pushConstantBytes};
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &made.setLayout;
+    layoutInfo.pushConstantRangeCount = key.pushConstantBytes ? 1 : 0;
+    layoutInfo.pPushConstantRanges = &range;
+    VK_CHECK(vk::vkCreatePipelineLayout(device, &layoutInfo, nullptr, &made.layout));
+
+    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    moduleInfo.codeSize = key.spirvBytes;
+    moduleInfo.pCode = key.spirv;
+    VkShaderModule module = VK_NULL_HANDLE;
+    VK_CHECK(vk::vkCreateShaderModule(device, &moduleInfo, nullptr, &module));
+    const std::vector<std::uint32_t>& specConstants = key.specConstants;
+    std::vector<VkSpecializationMapEntry> entries(specConstants.size());
+    for (std::uint32_t i = 0; i < entries.size(); ++i)
+      entries[i] = {i, i * static_cast<std::uint32_t>(sizeof(std::uint32_t)), sizeof(std::uint32_t)};
+    VkSpecializationInfo spec{static_cast<std::uint32_t>(entries.size()), entries.data(),
+                              specConstants.size() * sizeof(std::uint32_t), specConstants.data()};
+    VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipelineInfo.stage.module = module;
+    pipelineInfo.stage.pName = "main";
+    pipelineInfo.stage.pSpecializationInfo = specConstants.empty() ? nullptr : &spec;
+    pipelineInfo.layout = made.layout;
+    VkResult r = vk::vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &made.pipeline);
+    vk::vkDestroyShaderModule(device, module, nullptr);
+    VK_CHECK(r);
+  } catch (...) {
+    destroy();
+    throw;
+  }
+  return made;
+}
+
+// The context's pipeline of `key`, made now if it has none.
+const CompiledPipeline& compiled(const Context& context, const PipelineKey& key) {
+  return context.pipelines().get(key, [&] { return compile(context.device(), key); });
+}
+
+}  // namespace
+
+void ComputePipeline::prepare(const Context& context, const std::uint32_t* spirv, std::size_t spirvBytes,
+                              const std::vector<VkDescriptorType>& bindingTypes,
+                              const std::vector<std::uint32_t>& specConstants, std::uint32_t pushConstantBytes) {
+  compiled(context, PipelineKey{spirv, spirvBytes, bindingTypes, specConstants, pushConstantBytes});
+}
+
 ComputePipeline::ComputePipeline(const Context& context, const std::uint32_t* spirv, std::size_t spirvBytes,
                                  const std::vector<VkDescriptorType>& bindingTypes,
                                  const std::vector<std::uint32_t>& specConstants, std::uint32_t pushConstantBytes)
     : context_(context), device_(context.device()), pushConstantBytes_(pushConstantBytes) {
-  const auto bindingCount = static_cast<std::uint32_t>(bindingTypes.size());
-  // The shader and its layouts: compiled once per context (gpu/pipeline_cache.h).
-  auto make = [&]() {
-    CompiledPipeline made;
-    VkDevice device = device_;
-    auto destroy = [&]() {
-      if (made.pipeline) vk::vkDestroyPipeline(device, made.pipeline, nullptr);
-      if (made.layout) vk::vkDestroyPipelineLayout(device, made.layout, nullptr);
-      if (made.setLayout) vk::vkDestroyDescriptorSetLayout(device, made.setLayout, nullptr);
-    };
-    try {
-      std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
-      for (std::uint32_t i = 0; i < bindingCount; ++i)
-        bindings[i] = {i, bindingTypes[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-      VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-      setInfo.bindingCount = bindingCount;
-      setInfo.pBindings = bindings.data();
-      VK_CHECK(vk::vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &made.setLayout));
-
-      VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
-      VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-      layoutInfo.setLayoutCount = 1;
-      layoutInfo.pSetLayouts = &made.setLayout;
-      layoutInfo.pushConstantRangeCount = pushConstantBytes ? 1 : 0;
-      layoutInfo.pPushConstantRanges = &range;
-      VK_CHECK(vk::vkCreatePipelineLayout(device, &layoutInfo, nullptr, &made.layout));
-
-      VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-      moduleInfo.codeSize = spirvBytes;
-      moduleInfo.pCode = spirv;
-      VkShaderModule module = VK_NULL_HANDLE;
-      VK_CHECK(vk::vkCreateShaderModule(device, &moduleInfo, nullptr, &module));
-      std::vector<VkSpecializationMapEntry> entries(specConstants.size());
-      for (std::uint32_t i = 0; i < entries.size(); ++i)
-        entries[i] = {i, i * static_cast<std::uint32_t>(sizeof(std::uint32_t)), sizeof(std::uint32_t)};
-      VkSpecializationInfo spec{static_cast<std::uint32_t>(entries.size()), entries.data(),
-                                specConstants.size() * sizeof(std::uint32_t), specConstants.data()};
-      VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-      pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-      pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-      pipelineInfo.stage.module = module;
-      pipelineInfo.stage.pName = "main";
-      pipelineInfo.stage.pSpecializationInfo = specConstants.empty() ? nullptr : &spec;
-      pipelineInfo.layout = made.layout;
-      VkResult r = vk::vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &made.pipeline);
-      vk::vkDestroyShaderModule(device, module, nullptr);
-      VK_CHECK(r);
-    } catch (...) {
-      destroy();
-      throw;
-    }
-    return made;
-  };
   try {
-    const CompiledPipeline& compiled = context.pipelines().get(
-        PipelineKey{spirv, spirvBytes, bindingTypes, specConstants, pushConstantBytes}, make);
-    setLayout_ = compiled.setLayout;
-    layout_ = compiled.layout;
-    pipeline_ = compiled.pipeline;
+    const CompiledPipeline& made =
+        compiled(context, PipelineKey{spirv, spirvBytes, bindingTypes, specConstants, pushConstantBytes});
+    setLayout_ = made.setLayout;
+    layout_ = made.layout;
+    pipeline_ = made.pipeline;
 
     std::vector<VkDescriptorPoolSize> poolSizes;
     for (VkDescriptorType type : bindingTypes) {

@@ -22,6 +22,13 @@ class ComputePipeline {
   ComputePipeline(const ComputePipeline&) = delete;
   ComputePipeline& operator=(const ComputePipeline&) = delete;
 
+  // Makes the context's pipeline of these arguments ahead of the render that will construct
+  // one with them (which then takes it from the PipelineCache), e.g. on another thread while
+  // the scene's BVH builds. Throws as the constructor does.
+  static void prepare(const Context& context, const std::uint32_t* spirv, std::size_t spirvBytes,
+                      const std::vector<VkDescriptorType>& bindingTypes,
+                      const std::vector<std::uint32_t>& specConstants, std::uint32_t pushConstantBytes);
+
   // A storage buffer at `binding`.
   void bind(std::uint32_t binding, const Buffer& buffer);
   // A uniform buffer at `binding`.

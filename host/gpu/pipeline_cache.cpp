@@ -18,4 +18,9 @@ const CompiledPipeline& PipelineCache::get(const PipelineKey& key, const std::fu
   return pipelines_.emplace(key, make()).first->second;
 }
 
+std::size_t PipelineCache::made() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return pipelines_.size();
+}
+
 }  // namespace vkrt

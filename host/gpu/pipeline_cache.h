@@ -47,11 +47,15 @@ class PipelineCache {
 
   // The pipeline of `key`: the one kept, or made now by `make` (which creates all three
   // handles, or destroys what it made and throws) and kept.
+  // A second caller of the same key (or another) waits while one is made: a pipeline made
+  // ahead on another thread (ComputePipeline::prepare) is then taken when it is done.
   const CompiledPipeline& get(const PipelineKey& key, const std::function<CompiledPipeline()>& make);
+  // How many pipelines `make` has made.
+  std::size_t made() const;
 
  private:
   VkDevice device_;
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::map<PipelineKey, CompiledPipeline> pipelines_;
 };
 

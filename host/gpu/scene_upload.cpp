@@ -72,6 +72,18 @@ const Context& withPoolFor(const Context& context, const GpuScene& scene, SceneA
 
 }  // namespace
 
+ShaderBindings::ShaderBindings(SceneArrays arrays, bool texelReads)
+    : types(arrays == SceneArrays::Path ? gpu::kPathBindingCount : gpu::kBindingCount,
+            VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+      buffers(types.size(), nullptr) {
+  if (texelReads)
+    forEachTexelArray(GpuScene{}, arrays, [&](std::uint32_t binding, const auto&) {
+      types[binding] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    });
+  types[gpu::kBindingParams] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  if (arrays == SceneArrays::Path) types[gpu::kBindingPathParams] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+}
+
 void ShaderBindings::bindTo(ComputePipeline& pipeline) const {
   for (std::uint32_t b = 0; b < types.size(); ++b) {
     if (types[b] == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
@@ -102,15 +114,26 @@ SceneUpload::~SceneUpload() {
   }
 }
 
+bool texelsFitBeforeBvh(const GpuScene& scene, SceneArrays arrays, std::size_t maxTexels) {
+  const std::size_t primitives = primitiveCount(scene);
+  bool fit = true;
+  forEachTexelArray(scene, arrays, [&](std::uint32_t binding, const auto& items) {
+    const std::size_t count = binding == gpu::kBindingBvhNodes  ? std::max<std::size_t>(1, 2 * primitives)
+                              : binding == gpu::kBindingPrimRefs ? primitives
+                                                                 : items.size();
+    fit = fit && texelPaddedBytes(count * sizeof(items[0])) / texelBytesAt(binding) <= maxTexels;
+  });
+  return fit;
+}
+
 bool SceneUpload::texelsFit(std::size_t maxTexels) const {
   return std::all_of(arrays_.begin(), arrays_.end(),
                      [&](const Array& a) { return a.buffer.size() / texelBytesAt(a.binding) <= maxTexels; });
 }
 
-void SceneUpload::bind(ShaderBindings& bindings, bool texelReads) const {
-  const VkDescriptorType type = texelReads ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  for (const Array& a : arrays_) bindings.set(a.binding, a.buffer, type);
-  if (emitters_) bindings.set(gpu::kBindingEmitters, *emitters_, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+void SceneUpload::bind(ShaderBindings& bindings) const {
+  for (const Array& a : arrays_) bindings.set(a.binding, a.buffer);
+  if (emitters_) bindings.set(gpu::kBindingEmitters, *emitters_);
 }
 
 bool chooseTexelReads(SceneReads reads, bool fit, std::size_t maxTexels) {

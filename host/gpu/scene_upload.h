@@ -14,24 +14,25 @@
 
 namespace vkrt {
 
-// A shader's bindings 0..N-1: a buffer and a descriptor type each.
+// Which arrays a shader reads: the Whitted shader's (triangles .. primitive references), or
+// the path shader's (also quad lights and emitters).
+enum class SceneArrays { Whitted, Path };
+
+// A shader's bindings 0..N-1: a descriptor type and a buffer each.
 struct ShaderBindings {
-  explicit ShaderBindings(std::uint32_t count)
-      : types(count, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER), buffers(count, nullptr) {}
-  void set(std::uint32_t binding, const Buffer& buffer, VkDescriptorType type) {
-    buffers[binding] = &buffer;
-    types[binding] = type;
-  }
+  // The bindings of the Whitted shader (SceneArrays::Whitted) or the path shader, their types
+  // set, no buffer yet: the scene's arrays uniform texel buffers (texelReads) or storage
+  // buffers, the render's and the path's parameters uniform buffers, the rest (pixels, states,
+  // counters, emitters) storage buffers. The one table of the types, which a pipeline made
+  // ahead (ComputePipeline::prepare) and the render's own take alike.
+  ShaderBindings(SceneArrays arrays, bool texelReads);
+  void set(std::uint32_t binding, const Buffer& buffer) { buffers[binding] = &buffer; }
   // Binds each buffer at its binding, as its type says: a uniform texel buffer as a view of
   // uints (the primitive references) or of uvec4 texels (the rest).
   void bindTo(ComputePipeline& pipeline) const;
   std::vector<VkDescriptorType> types;
   std::vector<const Buffer*> buffers;
 };
-
-// Which arrays a shader reads: the Whitted shader's (triangles .. primitive references), or
-// the path shader's (also quad lights and emitters).
-enum class SceneArrays { Whitted, Path };
 
 class SceneUpload {
  public:
@@ -41,9 +42,8 @@ class SceneUpload {
   SceneUpload& operator=(const SceneUpload&) = delete;
   // Whether every array read through a texel view fits `maxTexels` texels.
   bool texelsFit(std::size_t maxTexels) const;
-  // Sets the scene's bindings: uniform texel buffers with `texelReads`, else storage buffers
-  // (the emitters are a storage buffer either way).
-  void bind(ShaderBindings& bindings, bool texelReads) const;
+  // Sets the scene's buffers at their bindings.
+  void bind(ShaderBindings& bindings) const;
 
  private:
   struct Array {
@@ -54,6 +54,11 @@ class SceneUpload {
   std::vector<Array> arrays_;        // the arrays read through texel views with the texel reads
   std::optional<Buffer> emitters_;   // the path shader's only; a storage buffer either way
 };
+
+// SceneUpload::texelsFit of `scene` before its BVH is built (scene.bvh empty), with the BVH
+// at its largest: 2n nodes and n references for n primitives (a guess for a pipeline made
+// ahead, which the render's own check confirms).
+bool texelsFitBeforeBvh(const GpuScene& scene, SceneArrays arrays, std::size_t maxTexels);
 
 // Whether the shader reads the scene through texel buffers: as `reads` says, Auto where
 // `fit` (SceneUpload::texelsFit). Throws DeviceError for Texel on a scene that does not fit

@@ -86,6 +86,101 @@ PathModule pathModule(bool texelReads, bool quadLightsOnly) {
                     : PathModule{kPathtraceSpirv, sizeof kPathtraceSpirv};
 }
 
+// A vertex's random numbers must stay within its stride of dimensions (gpu_types.h): two per
+// quad-light sample, and with emitters two more and a pick per light sample. Throws DeviceError.
+void checkLightSlots(const GpuScene& scene) {
+  const std::uint64_t lightSlots = std::uint64_t{scene.path.quadLightCount} * scene.path.lightSamples * 2 +
+                                   (scene.emitters.empty() ? 0u : std::uint64_t{scene.path.lightSamples} * 3);
+  if (gpu::kRngSlotLightBase + lightSlots > gpu::kRngBounceStride)
+    throw DeviceError("the light samples per vertex need " + std::to_string(lightSlots) +
+                      " random numbers; the generator's dimensions allow at most " +
+                      std::to_string(gpu::kRngBounceStride - gpu::kRngSlotLightBase) +
+                      " (fewer quad lights or lightsamples)");
+}
+
+// The shader a path render runs, decided before its buffers are made: its parameters, whether
+// rays test every primitive, the module and variant with its specialization constants, and
+// what --stats says of them.
+struct PathShader {
+  gpu::GpuPathParams path{};   // the scene's, with the batch's seed, samples and sampler
+  bool testAll = false, texelReads = false, general = false;
+  PathModule module{};
+  std::vector<std::uint32_t> spec;
+  std::uint64_t specializedKey = 0;   // the specialised variant's, general or not
+  double estimatedRays = 0;
+  std::string leftOut;
+};
+
+// `texelsFit`: SceneUpload::texelsFit; `eachPrimitiveOnce`: the BVH holds every primitive
+// exactly once. Before the BVH is built (a pipeline made ahead): texelsFitBeforeBvh, and true.
+PathShader pathShader(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
+                      const BandLayout& layout, std::uint32_t samples, bool texelsFit, bool eachPrimitiveOnce) {
+  PathShader p;
+  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const std::uint32_t renderSpp = options.renderSpp ? options.renderSpp : scene.spp;
+  gpu::GpuPathParams& path = p.path;
+  path = scene.path;
+  path.seed = options.seed;
+  path.firstSample = options.firstSample;
+  path.sampleCount = samples;
+  path.jitter = renderSpp == 1 ? 0u : 1u;
+  path.strataSide = options.stratified ? gpu::rngStrataSide(renderSpp) : 0u;
+  path.triangleCount = static_cast<std::uint32_t>(scene.triangles.size());
+  path.sphereCount = static_cast<std::uint32_t>(scene.spheres.size());
+
+  // Every primitive of a small scene tested by every ray, when the BVH holds each exactly once
+  // and each is of a kind that the shader's loop tests (triangles and spheres): the BVH
+  // otherwise, for a scene with a shape of another kind.
+  const std::size_t primitives = primitiveCount(scene);
+  p.testAll = options.testAll && primitives == path.triangleCount + path.sphereCount &&
+              primitives <= gpu::kTestAllMaxPrims && eachPrimitiveOnce;
+  const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
+  p.texelReads = chooseTexelReads(options.reads, texelsFit, maxTexels);
+  // The rays, about (what ShaderVariant::Auto goes by): per sample a camera ray; direct: a
+  // shadow ray per light sample of each quad light; pathtracer: per vertex (4 where only
+  // Russian roulette ends the path) a scattered ray and, with next-event estimation, a shadow
+  // ray per light sample of each light.
+  const double lightRays = static_cast<double>(scene.path.lightSamples) * (scene.path.quadLightCount + 1.0);
+  double perSample = 1.0;
+  if (scene.path.integrator == gpu::kIntegratorDirect)
+    perSample += lightRays;
+  else if (scene.path.integrator == gpu::kIntegratorPathTracer)
+    perSample += (scene.path.maxDepth == gpu::kUnlimitedDepth ? 4.0 : std::min(scene.path.maxDepth, 8u)) *
+                 (1.0 + (scene.path.nextEvent != gpu::kNextEventOff ? lightRays : 0.0));
+  p.estimatedRays = static_cast<double>(layout.width) * layout.height * samples * perSample;
+  std::string leftOut;
+  const std::vector<std::uint32_t> specialized = pathFeatures(scene, path, true, p.testAll, leftOut);
+  // A scene whose lights are all quad lights, rendered by direct or pathtracer, takes the module
+  // without the code of the other lights and of analyticdirect, specialised or general (whose
+  // pipeline lavapipe then creates in 65-90 ms instead of 110-135 for cornellNEE).
+  const bool quadLightsOnly = !specialized[gpu::kSpecHasPointLights] && !specialized[gpu::kSpecHasDirectionalLights] &&
+                              !specialized[gpu::kPathSpecHasEmitters] &&
+                              specialized[gpu::kPathSpecIntegrator] != gpu::kIntegratorAnalyticDirect;
+  p.module = pathModule(p.texelReads, quadLightsOnly);
+  p.specializedKey = variantKey(context.properties(), p.module.words, p.module.bytes, specialized);
+  p.general = options.variant == ShaderVariant::General ||
+              (options.variant == ShaderVariant::Auto && !variantCompiled(p.specializedKey) &&
+               !specializationPays(cpuDevice, p.estimatedRays, true));
+  // The general variant: every feature on, in the same module.
+  p.spec = p.general ? pathFeatures(scene, path, false, p.testAll, p.leftOut) : specialized;
+  if (!p.general) p.leftOut = leftOut;
+  return p;
+}
+
+// The band layout of a path render of `samples` samples: one GpuPathTracerState per
+// invocation, shared by its perInvocation pixels; the workgroups of a band each take a run of
+// perInvocation adjacent 8x8 tiles.
+BandLayout pathLayout(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
+                      std::uint32_t samples) {
+  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const std::uint32_t perInvocation =
+      options.pixelsPerInvocation
+          ? options.pixelsPerInvocation
+          : pathPixelsPerInvocation(cpuDevice, scene.path.integrator, samples, primitiveCount(scene));
+  return bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuPathTracerState), options.maxStateBytes,
+                    perInvocation);
+}
+
 }  // namespace
 
 std::uint32_t pathPixelsPerInvocation(bool cpuDevice, std::uint32_t integrator, std::uint32_t samples,
@@ -93,6 +188,16 @@ std::uint32_t pathPixelsPerInvocation(bool cpuDevice, std::uint32_t integrator, 
   if (!cpuDevice || integrator != gpu::kIntegratorPathTracer) return 1;
   const std::uint32_t most = primitives > kLargeScenePrimitives ? 4u : gpu::kDefaultPixelsPerInvocation;
   return std::clamp((kPathSamplesPerLane + samples - 1) / std::max(samples, 1u), 1u, most);
+}
+
+void prepareVulkanPathPipeline(const Context& context, const GpuScene& scene, const VulkanPathOptions& options) {
+  const std::uint32_t samples = options.sampleCount ? options.sampleCount : scene.spp;
+  checkLightSlots(scene);
+  const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
+  const PathShader p = pathShader(context, scene, options, pathLayout(context, scene, options, samples), samples,
+                                  texelsFitBeforeBvh(scene, SceneArrays::Path, maxTexels), true);
+  ComputePipeline::prepare(context, p.module.words, p.module.bytes, ShaderBindings(SceneArrays::Path, p.texelReads).types,
+                           p.spec, sizeof(gpu::GpuPathPush));
 }
 
 VulkanPathRender::VulkanPathRender(const Context& context, const GpuScene& scene) : context_(context), scene_(scene) {}
@@ -110,27 +215,10 @@ RadianceImage VulkanPathRender::render(const VulkanPathOptions& options, RayCoun
   if (scene.path.integrator == gpu::kIntegratorRaytracer)
     throw InternalError("renderVulkanPath called for the raytracer integrator (renderVulkan renders it)");
   const std::uint32_t samples = options.sampleCount ? options.sampleCount : scene.spp;
-  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  const std::uint32_t perInvocation =
-      options.pixelsPerInvocation
-          ? options.pixelsPerInvocation
-          : pathPixelsPerInvocation(cpuDevice, scene.path.integrator, samples, primitiveCount(scene));
-  // One GpuPathTracerState per invocation, shared by its perInvocation pixels; the workgroups
-  // of a band each take a run of perInvocation adjacent 8x8 tiles.
-  const BandLayout layout = bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuPathTracerState),
-                                       options.maxStateBytes, perInvocation);
+  const BandLayout layout = pathLayout(context, scene, options, samples);
   const std::uint32_t width = layout.width, height = layout.height;
-  const std::uint32_t renderSpp = options.renderSpp ? options.renderSpp : scene.spp;
   checkShaderLimits(scene);
-  // A vertex's random numbers must stay within its stride of dimensions (gpu_types.h): two
-  // per quad-light sample, and with emitters two more and a pick per light sample.
-  const std::uint64_t lightSlots = std::uint64_t{scene.path.quadLightCount} * scene.path.lightSamples * 2 +
-                                   (scene.emitters.empty() ? 0u : std::uint64_t{scene.path.lightSamples} * 3);
-  if (gpu::kRngSlotLightBase + lightSlots > gpu::kRngBounceStride)
-    throw DeviceError("the light samples per vertex need " + std::to_string(lightSlots) +
-                      " random numbers; the generator's dimensions allow at most " +
-                      std::to_string(gpu::kRngBounceStride - gpu::kRngSlotLightBase) +
-                      " (fewer quad lights or lightsamples)");
+  checkLightSlots(scene);
 
   auto t0 = std::chrono::steady_clock::now();
   if (!upload_) {
@@ -144,59 +232,22 @@ RadianceImage VulkanPathRender::render(const VulkanPathOptions& options, RayCoun
   t.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  gpu::GpuPathParams path = scene.path;
-  path.seed = options.seed;
-  path.firstSample = options.firstSample;
-  path.sampleCount = samples;
-  path.jitter = renderSpp == 1 ? 0u : 1u;
-  path.strataSide = options.stratified ? gpu::rngStrataSide(renderSpp) : 0u;
-  path.triangleCount = static_cast<std::uint32_t>(scene.triangles.size());
-  path.sphereCount = static_cast<std::uint32_t>(scene.spheres.size());
-  Buffer pathBuffer(context, sizeof path);
-  std::memcpy(pathBuffer.mapped(), &path, sizeof path);
-
-  // Every primitive of a small scene tested by every ray, when the BVH holds each exactly once
-  // and each is of a kind that the shader's loop tests (triangles and spheres): the BVH
-  // otherwise, for a scene with a shape of another kind.
-  const std::size_t primitives = primitiveCount(scene);
-  const bool testAll = options.testAll && primitives == path.triangleCount + path.sphereCount &&
-                       primitives <= gpu::kTestAllMaxPrims && scene.bvh.primRefs.size() == primitives;
-  t.testedAll = testAll;
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
-  t.texelReads = chooseTexelReads(options.reads, upload.texelsFit(maxTexels), maxTexels);
-  // The rays, about (what ShaderVariant::Auto goes by): per sample a camera ray; direct: a
-  // shadow ray per light sample of each quad light; pathtracer: per vertex (4 where only
-  // Russian roulette ends the path) a scattered ray and, with next-event estimation, a shadow
-  // ray per light sample of each light.
-  const double lightRays = static_cast<double>(scene.path.lightSamples) * (scene.path.quadLightCount + 1.0);
-  double perSample = 1.0;
-  if (scene.path.integrator == gpu::kIntegratorDirect)
-    perSample += lightRays;
-  else if (scene.path.integrator == gpu::kIntegratorPathTracer)
-    perSample += (scene.path.maxDepth == gpu::kUnlimitedDepth ? 4.0 : std::min(scene.path.maxDepth, 8u)) *
-                 (1.0 + (scene.path.nextEvent != gpu::kNextEventOff ? lightRays : 0.0));
-  t.estimatedRays = static_cast<double>(width) * height * samples * perSample;
-  std::string leftOut;
-  const std::vector<std::uint32_t> specialized = pathFeatures(scene, path, true, testAll, leftOut);
-  // A scene whose lights are all quad lights, rendered by direct or pathtracer, takes the module
-  // without the code of the other lights and of analyticdirect, specialised or general (whose
-  // pipeline lavapipe then creates in 65-90 ms instead of 110-135 for cornellNEE).
-  const bool quadLightsOnly = !specialized[gpu::kSpecHasPointLights] && !specialized[gpu::kSpecHasDirectionalLights] &&
-                              !specialized[gpu::kPathSpecHasEmitters] &&
-                              specialized[gpu::kPathSpecIntegrator] != gpu::kIntegratorAnalyticDirect;
-  const PathModule module = pathModule(t.texelReads, quadLightsOnly);
-  const std::uint64_t specializedKey = variantKey(context.properties(), module.words, module.bytes, specialized);
-  t.general = options.variant == ShaderVariant::General ||
-              (options.variant == ShaderVariant::Auto && !variantCompiled(specializedKey) &&
-               !specializationPays(cpuDevice, t.estimatedRays, true));
-  // The general variant: every feature on, in the same module.
-  const std::vector<std::uint32_t> spec = t.general ? pathFeatures(scene, path, false, testAll, t.leftOut) : specialized;
-  if (!t.general) t.leftOut = leftOut;
-  ShaderBindings bindings(gpu::kPathBindingCount);
-  upload.bind(bindings, t.texelReads);
+  const PathShader shader = pathShader(context, scene, options, layout, samples, upload.texelsFit(maxTexels),
+                                       scene.bvh.primRefs.size() == primitiveCount(scene));
+  t.testedAll = shader.testAll;
+  t.texelReads = shader.texelReads;
+  t.estimatedRays = shader.estimatedRays;
+  t.general = shader.general;
+  t.leftOut = shader.leftOut;
+  Buffer pathBuffer(context, sizeof shader.path);
+  std::memcpy(pathBuffer.mapped(), &shader.path, sizeof shader.path);
+  ShaderBindings bindings(SceneArrays::Path, t.texelReads);
+  upload.bind(bindings);
   band.bind(bindings);
-  bindings.set(gpu::kBindingPathParams, pathBuffer, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
-  ComputePipeline pipeline(context, module.words, module.bytes, bindings.types, spec, sizeof(gpu::GpuPathPush));
+  bindings.set(gpu::kBindingPathParams, pathBuffer);
+  ComputePipeline pipeline(context, shader.module.words, shader.module.bytes, bindings.types, shader.spec,
+                           sizeof(gpu::GpuPathPush));
   bindings.bindTo(pipeline);
   t.pipelineSeconds = secondsSince(t0);
 
@@ -209,7 +260,7 @@ RadianceImage VulkanPathRender::render(const VulkanPathOptions& options, RayCoun
                   {}};
   RayCounts counted;
   if (!band.run(pipeline, &push, push.bandY0, push.resume, layout, samples, hooks, t, counted)) return image;
-  if (!t.general) recordVariantCompiled(specializedKey);
+  if (!t.general) recordVariantCompiled(shader.specializedKey);
   if (rays) *rays = counted;
   if (timings) *timings = t;
   return image;

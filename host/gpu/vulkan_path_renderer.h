@@ -94,4 +94,11 @@ class VulkanPathRender {
 RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
                                RayCounts* rays, VulkanTimings* timings);
 
+// Makes, in the context's PipelineCache, the pipeline that a batch of `options` will take,
+// from `scene` before its BVH is built (flatten's arraysMade), as prepareVulkanPipeline does
+// for the Whitted shader. Where the built BVH decides otherwise (a primitive left out of it
+// in a scene that would test every primitive, a scene too large for texel reads), the batch
+// makes its own. Throws as renderVulkanPath.
+void prepareVulkanPathPipeline(const Context& context, const GpuScene& scene, const VulkanPathOptions& options);
+
 }  // namespace vkrt

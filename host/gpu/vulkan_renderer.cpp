@@ -86,33 +86,47 @@ gpu::GpuCutoff neverCut() {
   return c;
 }
 
-}  // namespace
-
-RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options,
-                           RayCounts* rays, VulkanTimings* timings) {
-  VulkanTimings t;
+// The band layout of a Whitted render: one GpuWhittedState per invocation, shared by its
+// pixels; the workgroups of a band each take a run of perInvocation adjacent 8x8 tiles.
+BandLayout whittedLayout(const Context& context, const GpuScene& scene, const VulkanOptions& options) {
   // Sharing out pixels keeps a CPU's SIMD lanes busy; a GPU has lanes to spare for a pixel each.
   const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const std::uint32_t perInvocation = options.pixelsPerInvocation ? options.pixelsPerInvocation
                                       : cpuDevice                 ? gpu::kDefaultPixelsPerInvocation
                                                                   : 1u;
-  // One GpuWhittedState per invocation, shared by its perInvocation pixels; the workgroups of a
-  // band each take a run of perInvocation adjacent 8x8 tiles.
-  const BandLayout layout = bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuWhittedState),
-                                       options.maxStateBytes, perInvocation);
-  const std::uint32_t width = layout.width, height = layout.height;
-  checkShaderLimits(scene);
+  return bandLayout(renderRegion(scene, options.crop), sizeof(gpu::GpuWhittedState), options.maxStateBytes,
+                    perInvocation);
+}
 
-  auto t0 = std::chrono::steady_clock::now();
+// The shader a Whitted render runs, decided before its buffers are made: the module (texel or
+// storage reads), the variant and its specialization constants, and what --stats says of them.
+struct WhittedShader {
+  bool cutoff = false;     // the exactness cut-off cuts (compiled in, or told so at run time)
+  bool specular = true;    // mirror rays are traced (the features' specular)
+  bool texelReads = false, general = false;
+  const std::uint32_t* spirv = nullptr;
+  std::size_t spirvBytes = 0;
+  std::vector<std::uint32_t> spec;
+  std::uint64_t specializedKey = 0;   // the specialised variant's, general or not
+  double estimatedRays = 0;
+  std::string leftOut;
+};
+
+// `texelsFit`: SceneUpload::texelsFit, or texelsFitBeforeBvh for a pipeline made ahead.
+WhittedShader whittedShader(const Context& context, const GpuScene& scene, const VulkanOptions& options,
+                            const BandLayout& layout, bool texelsFit) {
+  WhittedShader w;
+  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const Features used = sceneFeatures(scene, true);
   // The exactness cut-off: forced, or where it pays. The general variant has it compiled in
   // and is told at run time whether to cut (push constants), so that it cuts exactly where
   // the specialised one does.
-  const bool cutoff = options.cutoff == Cutoff::On ||
-                      (options.cutoff == Cutoff::Auto && used.specular && cutoffPays(scene.cutoff, scene.maxDepth));
+  w.cutoff = options.cutoff == Cutoff::On ||
+             (options.cutoff == Cutoff::Auto && used.specular && cutoffPays(scene.cutoff, scene.maxDepth));
   // The rays this render will trace, about: a camera ray a pixel, a shadow ray a light, and
   // again for each mirror bounce (what ShaderVariant::Auto goes by).
-  t.estimatedRays = static_cast<double>(width) * height * (1.0 + static_cast<double>(scene.lights.size())) *
+  w.estimatedRays = static_cast<double>(layout.width) * layout.height *
+                    (1.0 + static_cast<double>(scene.lights.size())) *
                     (1.0 + (used.specular ? std::min(scene.maxDepth, 4u) : 0u));
   auto specConstants = [&](const Features& f, bool general) {
     std::vector<std::uint32_t> spec(gpu::kSpecCount);   // bools as 0/1 (SPIR-V bool spec constants are 32 bits)
@@ -123,34 +137,63 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
     spec[gpu::kSpecHasDirectionalLights] = f.directionalLights;
     spec[gpu::kSpecHasAttenuation] = f.attenuation;
     spec[gpu::kSpecHasSpecular] = f.specular;
-    spec[gpu::kSpecCutoff] = general || cutoff;
+    spec[gpu::kSpecCutoff] = general || w.cutoff;
     return spec;
   };
-  const SceneUpload upload(context, scene, SceneArrays::Whitted);
   // Texel reads where every scene buffer fits the device's texel-count limit.
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
-  t.texelReads = chooseTexelReads(options.reads, upload.texelsFit(maxTexels), maxTexels);
-  const std::uint32_t* spirv = t.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv;
-  const std::size_t spirvBytes = t.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv);
-  const std::uint64_t specializedKey = variantKey(context.properties(), spirv, spirvBytes, specConstants(used, false));
-  t.general = options.variant == ShaderVariant::General ||
-              (options.variant == ShaderVariant::Auto && !variantCompiled(specializedKey) &&
-               !specializationPays(cpuDevice, t.estimatedRays, false));
-  const Features features = t.general ? sceneFeatures(scene, false) : used;
-  t.leftOut = features.leftOut;
-  if (!cutoff && !t.general) t.leftOut += std::string(t.leftOut.empty() ? "" : ", ") + "exactness cut-off";
+  w.texelReads = chooseTexelReads(options.reads, texelsFit, maxTexels);
+  w.spirv = w.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv;
+  w.spirvBytes = w.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv);
+  w.specializedKey = variantKey(context.properties(), w.spirv, w.spirvBytes, specConstants(used, false));
+  w.general = options.variant == ShaderVariant::General ||
+              (options.variant == ShaderVariant::Auto && !variantCompiled(w.specializedKey) &&
+               !specializationPays(cpuDevice, w.estimatedRays, false));
+  const Features features = w.general ? sceneFeatures(scene, false) : used;
+  w.leftOut = features.leftOut;
+  if (!w.cutoff && !w.general) w.leftOut += std::string(w.leftOut.empty() ? "" : ", ") + "exactness cut-off";
+  w.specular = features.specular;
+  w.spec = specConstants(features, w.general);
+  return w;
+}
+
+}  // namespace
+
+void prepareVulkanPipeline(const Context& context, const GpuScene& scene, const VulkanOptions& options) {
+  const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
+  const WhittedShader w = whittedShader(context, scene, options, whittedLayout(context, scene, options),
+                                        texelsFitBeforeBvh(scene, SceneArrays::Whitted, maxTexels));
+  ComputePipeline::prepare(context, w.spirv, w.spirvBytes, ShaderBindings(SceneArrays::Whitted, w.texelReads).types,
+                           w.spec, sizeof(gpu::GpuPushConstants));
+}
+
+RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options,
+                           RayCounts* rays, VulkanTimings* timings) {
+  VulkanTimings t;
+  const BandLayout layout = whittedLayout(context, scene, options);
+  const std::uint32_t width = layout.width, height = layout.height;
+  checkShaderLimits(scene);
+
+  auto t0 = std::chrono::steady_clock::now();
+  const SceneUpload upload(context, scene, SceneArrays::Whitted);
+  const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
+  const WhittedShader shader = whittedShader(context, scene, options, layout, upload.texelsFit(maxTexels));
+  t.texelReads = shader.texelReads;
+  t.general = shader.general;
+  t.estimatedRays = shader.estimatedRays;
+  t.leftOut = shader.leftOut;
   // Without a specular surface no mirror ray is ever traced.
-  const gpu::GpuRenderParams params = renderParams(scene, layout, features.specular ? scene.maxDepth : 0);
+  const gpu::GpuRenderParams params = renderParams(scene, layout, shader.specular ? scene.maxDepth : 0);
   BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuWhittedState), params, options.stepBudget,
                    kWhittedFirstDispatchSteps);
   t.uploadSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const std::vector<std::uint32_t> spec = specConstants(features, t.general);
-  ShaderBindings bindings(gpu::kBindingCount);
-  upload.bind(bindings, t.texelReads);
+  ShaderBindings bindings(SceneArrays::Whitted, t.texelReads);
+  upload.bind(bindings);
   band.bind(bindings);
-  ComputePipeline pipeline(context, spirv, spirvBytes, bindings.types, spec, sizeof(gpu::GpuPushConstants));
+  ComputePipeline pipeline(context, shader.spirv, shader.spirvBytes, bindings.types, shader.spec,
+                           sizeof(gpu::GpuPushConstants));
   bindings.bindTo(pipeline);
   t.pipelineSeconds = secondsSince(t0);
 
@@ -163,7 +206,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   gpu::GpuPushConstants push{};
   push.camera = scene.camera;
   // A cut-off compiled in but not wanted is told never to cut (GpuCutoff: no bound).
-  push.cutoff = cutoff ? scene.cutoff : neverCut();
+  push.cutoff = shader.cutoff ? scene.cutoff : neverCut();
   BandHooks hooks{options.stop, options.progress,
                   [&](std::uint32_t y0, std::uint32_t rows) {
                     if (!options.rows) return band.readRows(rows, 1.0f, image, static_cast<int>(y0));
@@ -175,7 +218,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   if (options.rows) hooks.after = [&](std::uint32_t y0, std::uint32_t) { options.rows(static_cast<int>(y0), rowsImage); };
   RayCounts counted;
   if (!band.run(pipeline, &push, push.bandY0, push.resume, layout, 1, hooks, t, counted)) return image;
-  if (!t.general) recordVariantCompiled(specializedKey);
+  if (!t.general) recordVariantCompiled(shader.specializedKey);
   if (rays) *rays = counted;
   if (timings) *timings = t;
   return image;

@@ -55,4 +55,11 @@ struct VulkanOptions {
 RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options,
                            RayCounts* rays, VulkanTimings* timings);
 
+// Makes, in the context's PipelineCache, the pipeline that renderVulkan(context, scene,
+// options) will take, from `scene` before its BVH is built (flatten's arraysMade): lavapipe
+// creates a pipeline in 20-90 ms on one core, which then overlaps the BVH build. Where the
+// built BVH decides otherwise (a scene too large for texel reads), the render makes its own.
+// Throws as renderVulkan.
+void prepareVulkanPipeline(const Context& context, const GpuScene& scene, const VulkanOptions& options);
+
 }  // namespace vkrt

@@ -11,6 +11,20 @@
 #include "image/samples.h"
 
 namespace vkrt {
+namespace {
+
+// The samples of the next batch, `done` being rendered and `next` the size it grows to: within
+// what spp leaves and maxBatchSamples.
+std::uint32_t batchSamples(const ProgressiveOptions& options, std::uint64_t done, std::uint32_t next) {
+  const std::uint64_t left = options.spp == 0 ? UINT64_MAX : options.spp - done;
+  return static_cast<std::uint32_t>(std::min<std::uint64_t>({next, left, options.maxBatchSamples}));
+}
+
+}  // namespace
+
+SampleBatch firstBatch(const ProgressiveOptions& options) {
+  return {options.firstSample, batchSamples(options, 0, std::max(options.firstBatchSamples, 1u))};
+}
 
 RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOptions& options,
                                 ProgressiveReport* report) {
@@ -28,8 +42,7 @@ RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOp
   ProgressiveReport r;
   std::uint32_t next = std::max(options.firstBatchSamples, 1u);
   for (;;) {
-    std::uint64_t left = options.spp == 0 ? UINT64_MAX : options.spp - r.samples;
-    std::uint32_t count = static_cast<std::uint32_t>(std::min<std::uint64_t>({next, left, options.maxBatchSamples}));
+    const std::uint32_t count = batchSamples(options, r.samples, next);
     const std::uint64_t done = r.samples;
     auto pixelProgress = [&](std::uint64_t pixelsDone, std::uint64_t pixelsTotal) {
       if (!options.progress || pixelsTotal == 0) return;

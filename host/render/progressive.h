@@ -58,6 +58,9 @@ struct ProgressiveReport {
 // includes the backend's warm-up), then doubling (at most, toward targetBatchSeconds, without
 // a time limit), within what spp and the time left allow. The result is the weighted mean
 // (samples = the total).
+// The batch renderProgressive starts with.
+SampleBatch firstBatch(const ProgressiveOptions& options);
+
 RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOptions& options,
                                 ProgressiveReport* report = nullptr);
 

@@ -143,9 +143,48 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
   report.backend = std::string("vulkan (") + context.properties().deviceName + ")";
   double setup = secondsSince(t0);
 
+  // Each batch's renderer options.
+  auto whittedOptions = [&](const SampleBatch& batch, std::function<void(std::uint64_t, std::uint64_t)> pixels) {
+    VulkanOptions o;
+    o.stepBudget = request.stepBudget;
+    o.reads = request.reads;
+    o.variant = request.variant;
+    o.cutoff = request.cutoff;
+    if (rows) o.rows = *rows;
+    setBatch(o, request, plan, batch, std::move(pixels));
+    return o;
+  };
+  auto pathOptions = [&](const SampleBatch& batch, std::function<void(std::uint64_t, std::uint64_t)> pixels) {
+    VulkanPathOptions o;
+    o.stepBudget = request.stepBudget;
+    o.reads = request.reads;
+    o.variant = request.variant;
+    o.stratified = request.stratified;
+    setBatch(o, request, plan, batch, std::move(pixels));
+    return o;
+  };
+  const bool whitted = scene.path.integrator == Integrator::Raytracer;
+  const std::size_t pipelinesBefore = context.pipelines().made();
+
   t0 = std::chrono::steady_clock::now();
-  GpuScene gpuScene = flatten(scene);
+  // The first batch's pipeline is made while the BVH builds (lavapipe takes 20-90 ms on one
+  // core), from the scene's arrays; the batch takes it then. A failure there is the batch's
+  // to meet again, in its place.
+  double ahead = 0;
+  GpuScene gpuScene = flatten(scene, [&](const GpuScene& arrays) {
+    const auto start = std::chrono::steady_clock::now();
+    const SampleBatch first = firstBatch(plan.progressive);
+    try {
+      if (whitted)
+        prepareVulkanPipeline(context, arrays, whittedOptions(first, {}));
+      else
+        prepareVulkanPathPipeline(context, arrays, pathOptions(first, {}));
+    } catch (const std::exception&) {
+    }
+    ahead = secondsSince(start);
+  });
   report.buildSeconds = secondsSince(t0);
+  report.pipelineAheadSeconds = ahead;
   report.bvhNodes = gpuScene.bvh.nodes.size();
 #define VKRT_SHAPE_FREE(Type, member, name, kind, GpuType, binding) std::vector<Type>().swap(scene.member);
   VKRT_SHAPES(VKRT_SHAPE_FREE)
@@ -157,30 +196,17 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
     RayCounts rays;
     VulkanTimings timings;
     RadianceImage image;
-    if (scene.path.integrator == Integrator::Raytracer) {
-      VulkanOptions o;
-      o.stepBudget = request.stepBudget;
-      o.reads = request.reads;
-      o.variant = request.variant;
-      o.cutoff = request.cutoff;
-      if (rows) o.rows = *rows;
-      setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
-      image = renderVulkan(context, gpuScene, o, &rays, &timings);
-    } else {
-      VulkanPathOptions o;
-      o.stepBudget = request.stepBudget;
-      o.reads = request.reads;
-      o.variant = request.variant;
-      o.stratified = request.stratified;
-      setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
-      image = pathRender.render(o, &rays, &timings);
-    }
+    if (whitted)
+      image = renderVulkan(context, gpuScene, whittedOptions(batch, batchProgress(plan, progress, px)), &rays, &timings);
+    else
+      image = pathRender.render(pathOptions(batch, batchProgress(plan, progress, px)), &rays, &timings);
     report.rays += rays;
     addBatchTimings(report.vulkan, timings, batch.firstSample == plan.progressive.firstSample);
     return image;
   };
   RadianceImage image = renderBatches(batches, plan, report);
   report.renderSeconds = setup + secondsSince(t0);
+  report.pipelinesMade = context.pipelines().made() - pipelinesBefore;
   return image;
 }
 

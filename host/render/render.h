@@ -110,6 +110,11 @@ struct RenderReport {
   double parseSeconds = 0, buildSeconds = 0, renderSeconds = 0, writeSeconds = 0;
   // Vulkan only: context creation, then the renderer's own breakdown (parts of renderSeconds).
   double instanceSeconds = 0, deviceSeconds = 0;
+  // Vulkan only: the first batch's pipeline made while the BVH built (part of buildSeconds),
+  // and the pipelines the render made in all (1 when the batches took that one, 0 when the
+  // context held it already).
+  double pipelineAheadSeconds = 0;
+  std::size_t pipelinesMade = 0;
   VulkanTimings vulkan;
   RayCounts rays;
   // The samples per pixel rendered, in how many batches; whether a time limit ended the render

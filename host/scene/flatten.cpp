@@ -167,24 +167,13 @@ void convertKind(const std::vector<Triangle>& triangles, const std::vector<doubl
   }
 }
 
-}  // namespace
-
-GpuScene flatten(const SceneDesc& scene) {
-  GpuScene g;
-  g.width = static_cast<std::uint32_t>(scene.width);
-  g.height = static_cast<std::uint32_t>(scene.height);
-  g.maxDepth = static_cast<std::uint32_t>(scene.maxDepth);
-  const dvec3 origin = floatFrameOrigin(scene);
-  const double scale = floatFrameScale(scene, origin);
-  g.origin = origin;
-  g.scale = scale;
-  g.camera = cameraConstants(scene, origin, scale);
-  g.cutoff = cutoffConstants(scene);
-  // The ray offsets and the BVH do not depend on each other: the offsets on another thread.
-  std::future<PrimitiveOffsets> offsetsLater =
-      std::async(std::launch::async, [&scene] { return primitiveOffsets(scene); });
-  g.bvh = buildBvh(scene, origin, 0, scale);
-  const PrimitiveOffsets offsets = offsetsLater.get();
+// Every array of `g` but the BVH, in the frame of g.origin and g.scale: the shapes, their
+// ray offsets and smooth normals, the lights, materials and quad lights, the emitters and the
+// path integrators' parameters.
+void makeArrays(const SceneDesc& scene, GpuScene& g) {
+  const dvec3 origin = g.origin;
+  const double scale = g.scale;
+  const PrimitiveOffsets offsets = primitiveOffsets(scene);
 #define VKRT_SHAPE_CONVERT(Type, member, name, kind, GpuType, binding) \
   convertKind(scene.member, offsets.member, origin, scale, g.member, g.triangleNormals);
   VKRT_SHAPES(VKRT_SHAPE_CONVERT)
@@ -217,6 +206,29 @@ GpuScene flatten(const SceneDesc& scene) {
   g.path.emitterWeightScale =
       g.emitters.empty() ? 0.0f : static_cast<float>(1.0 / table.totalWeight / scale / scale);
   g.spp = static_cast<std::uint32_t>(std::max(scene.path.spp, 1));
+}
+
+}  // namespace
+
+GpuScene flatten(const SceneDesc& scene, const std::function<void(const GpuScene&)>& arraysMade) {
+  GpuScene g;
+  g.width = static_cast<std::uint32_t>(scene.width);
+  g.height = static_cast<std::uint32_t>(scene.height);
+  g.maxDepth = static_cast<std::uint32_t>(scene.maxDepth);
+  const dvec3 origin = floatFrameOrigin(scene);
+  const double scale = floatFrameScale(scene, origin);
+  g.origin = origin;
+  g.scale = scale;
+  g.camera = cameraConstants(scene, origin, scale);
+  g.cutoff = cutoffConstants(scene);
+  // Every array but the BVH on another thread, while this one builds the BVH; then
+  // `arraysMade` there, while the BVH may still build. The two write different members of g.
+  std::future<void> arrays = std::async(std::launch::async, [&] {
+    makeArrays(scene, g);
+    if (arraysMade) arraysMade(g);
+  });
+  g.bvh = buildBvh(scene, origin, 0, scale);
+  arrays.get();
   return g;
 }
 

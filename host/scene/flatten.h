@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "gpu_types.h"
@@ -37,8 +38,11 @@ struct GpuScene {
   Bvh bvh;
 };
 
-// Converts to float32 layouts and builds the BVH.
-GpuScene flatten(const SceneDesc& scene);
+// Converts to float32 layouts and builds the BVH. `arraysMade`, when given, is called on
+// another thread once every member but `bvh` is made, while the BVH may still be building:
+// it may read every member but `bvh`, and flatten returns when it has returned (the Vulkan
+// backend makes its pipeline there).
+GpuScene flatten(const SceneDesc& scene, const std::function<void(const GpuScene&)>& arraysMade = {});
 
 // How many primitives the scene holds, of every kind.
 inline std::size_t primitiveCount(const GpuScene& scene) {

@@ -246,6 +246,41 @@ TEST(Progressive, BatchesCoverEverySampleOnceAndAverageByCount) {
   EXPECT_FALSE(report.timeUp);
 }
 
+// firstBatch is the batch renderProgressive starts with (the Vulkan backend makes that
+// batch's pipeline ahead, while the BVH builds), within spp and maxBatchSamples.
+TEST(Progressive, FirstBatchIsTheOneRenderedFirst) {
+  struct Case {
+    std::uint64_t spp, firstSample;
+    std::uint32_t firstBatchSamples, maxBatchSamples;
+    double timeLimit;
+  };
+  for (const Case& c : {Case{100, 0, 1, 1u << 16, 0.0}, Case{5, 7, 8, 1u << 16, 0.0}, Case{64, 0, 64, 16, 0.0},
+                        Case{0, 3, 1, 1u << 16, 0.5}, Case{9, 0, 0, 1u << 16, 0.0}}) {
+    FakeIntegrator fake;
+    fake.secondsPerSample = 0.01;
+    ProgressiveOptions o;
+    o.spp = c.spp;
+    o.firstSample = c.firstSample;
+    o.firstBatchSamples = c.firstBatchSamples;
+    o.maxBatchSamples = c.maxBatchSamples;
+    o.timeLimitSeconds = c.timeLimit;
+    o.now = [&fake] { return fake.clock; };
+    renderProgressive([&fake](const SampleBatch& b, const auto&) { return fake(b); }, o);
+    ASSERT_FALSE(fake.batches.empty());
+    const SampleBatch first = firstBatch(o);
+    EXPECT_EQ(first.firstSample, fake.batches[0].firstSample) << c.spp;
+    EXPECT_EQ(first.count, fake.batches[0].count) << c.spp;
+  }
+  ProgressiveOptions o;
+  o.spp = 5;
+  o.firstBatchSamples = 8;
+  EXPECT_EQ(firstBatch(o).count, 5u);   // within spp
+  o.spp = 64;
+  o.firstBatchSamples = 64;
+  o.maxBatchSamples = 16;
+  EXPECT_EQ(firstBatch(o).count, 16u);   // within the most a batch takes
+}
+
 // 1/8 s per sample and 1 s: batches of 1, then 6 (nine tenths of the 7 that fit), then 1
 // (what is left), then no room.
 TEST(Progressive, TimeLimitStopsWhenNoSampleFitsAnyMore) {

@@ -30,3 +30,37 @@ TEST(RenderReport, ATimedPathRenderReportsEveryBatch) {
   EXPECT_GT(report.vulkan.firstDispatchSeconds, 0.0);
   EXPECT_GT(report.vulkan.dispatchSeconds, 0.0);   // the later batches' dispatches
 }
+
+// The first batch's pipeline is made while the BVH builds, from the scene's arrays
+// (prepareVulkanPipeline, prepareVulkanPathPipeline), and the batch takes that one: the
+// render makes one pipeline in all, as it did when the batch made its own. Where the BVH
+// decides otherwise (a primitive left out of it, in a scene small enough to test every
+// primitive), the batch makes the one it needs, and the image is as it would be.
+TEST(RenderReport, TheFirstBatchTakesThePipelineMadeWhileTheBvhBuilt) {
+  if (!gpuContextOrSkip()) return;
+  const std::string dir = freshDir("render-report/pipeline-ahead");
+  const std::string geometry =
+      "vertex -3 -3 0\nvertex 3 -3 0\nvertex 3 3 0\nvertex -3 3 0\ntri 0 1 2\ntri 0 2 3\n"
+      "sphere 0 0 0.5 0.5\n";
+  writeFile(dir + "/whitted.test", "size 24 16\ncamera 0 -3 1 0 0 0.5 0 0 1 45\npoint 0 -2 3 1 1 1\n"
+                                   "diffuse 0.7 0.5 0.3\nspecular 0.2 0.2 0.2\n" + geometry);
+  const std::string path = "size 24 16\ncamera 0 -3 1 0 0 0.5 0 0 1 45\nintegrator pathtracer\nspp 3\n"
+                           "nexteventestimation on\nquadLight -0.5 -0.5 2 1 0 0 0 1 0 4 4 4\ndiffuse 0.7 0.5 0.3\n";
+  writeFile(dir + "/path.test", path + geometry);
+  // The same with a triangle of zero area, which the BVH leaves out: rays then walk the BVH
+  // instead of testing every primitive, which the pipeline made ahead guessed.
+  writeFile(dir + "/degenerate.test", path + geometry + "tri 0 1 1\n");
+  for (const char* name : {"whitted", "path", "degenerate"}) {
+    SCOPED_TRACE(name);
+    RenderRequest request;
+    request.scenePath = dir + "/" + name + ".test";
+    ProgressBar progress(false);
+    RenderReport report;
+    RadianceImage image = renderSceneInMemory(request, progress, report, false);
+    EXPECT_EQ(image.width, 24);
+    EXPECT_GT(report.pipelineAheadSeconds, 0.0);
+    const bool guessed = std::string(name) != "degenerate";
+    EXPECT_EQ(report.pipelinesMade, guessed ? 1u : 2u);
+    EXPECT_EQ(report.vulkan.testedAll, std::string(name) == "path");
+  }
+}
