@@ -117,6 +117,8 @@ SceneUpload::~SceneUpload() {
 bool texelsFitBeforeBvh(const GpuScene& scene, SceneArrays arrays, std::size_t maxTexels) {
   const std::size_t primitives = primitiveCount(scene);
   bool fit = true;
+  // (The BVH's arrays are only sized here, by the primitives: another thread may be building
+  // them.)
   forEachTexelArray(scene, arrays, [&](std::uint32_t binding, const auto& items) {
     const std::size_t count = binding == gpu::kBindingBvhNodes  ? std::max<std::size_t>(1, 2 * primitives)
                               : binding == gpu::kBindingPrimRefs ? primitives

@@ -190,12 +190,13 @@ std::uint32_t pathPixelsPerInvocation(bool cpuDevice, std::uint32_t integrator, 
   return std::clamp((kPathSamplesPerLane + samples - 1) / std::max(samples, 1u), 1u, most);
 }
 
-void prepareVulkanPathPipeline(const Context& context, const GpuScene& scene, const VulkanPathOptions& options) {
+void prepareVulkanPathPipeline(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
+                               bool eachPrimitiveOnce) {
   const std::uint32_t samples = options.sampleCount ? options.sampleCount : scene.spp;
   checkLightSlots(scene);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const PathShader p = pathShader(context, scene, options, pathLayout(context, scene, options, samples), samples,
-                                  texelsFitBeforeBvh(scene, SceneArrays::Path, maxTexels), true);
+                                  texelsFitBeforeBvh(scene, SceneArrays::Path, maxTexels), eachPrimitiveOnce);
   ComputePipeline::prepare(context, p.module.words, p.module.bytes, ShaderBindings(SceneArrays::Path, p.texelReads).types,
                            p.spec, sizeof(gpu::GpuPathPush));
 }

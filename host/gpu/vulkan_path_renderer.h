@@ -96,9 +96,11 @@ RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, co
 
 // Makes, in the context's PipelineCache, the pipeline that a batch of `options` will take,
 // from `scene` before its BVH is built (flatten's arraysMade), as prepareVulkanPipeline does
-// for the Whitted shader. Where the built BVH decides otherwise (a primitive left out of it
-// in a scene that would test every primitive, a scene too large for texel reads), the batch
-// makes its own. Throws as renderVulkanPath.
-void prepareVulkanPathPipeline(const Context& context, const GpuScene& scene, const VulkanPathOptions& options);
+// for the Whitted shader. `eachPrimitiveOnce`: the BVH will hold every primitive (none is
+// one that can never be hit; it decides whether a small scene's rays test every primitive).
+// Where the built BVH decides otherwise (a scene too large for texel reads), the batch makes
+// its own. Throws as renderVulkanPath.
+void prepareVulkanPathPipeline(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
+                               bool eachPrimitiveOnce);
 
 }  // namespace vkrt

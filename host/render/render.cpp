@@ -34,6 +34,7 @@
 #include "scene/flatten.h"
 #include "scene/diagnostic.h"
 #include "scene/parse.h"
+#include "scene/shapes/shape.h"
 #include "timing.h"
 
 namespace vkrt {
@@ -168,8 +169,8 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
 
   t0 = std::chrono::steady_clock::now();
   // The first batch's pipeline is made while the BVH builds (lavapipe takes 20-90 ms on one
-  // core), from the scene's arrays; the batch takes it then. A failure there is the batch's
-  // to meet again, in its place.
+  // core), from the scene's arrays (and the scene, which both threads only read); the batch
+  // takes it then. A failure there is the batch's to meet again, in its place.
   double ahead = 0;
   GpuScene gpuScene = flatten(scene, [&](const GpuScene& arrays) {
     const auto start = std::chrono::steady_clock::now();
@@ -177,8 +178,9 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
     try {
       if (whitted)
         prepareVulkanPipeline(context, arrays, whittedOptions(first, {}));
-      else
-        prepareVulkanPathPipeline(context, arrays, pathOptions(first, {}));
+      else   // (whether every primitive is in the BVH matters only to a scene small enough to test all)
+        prepareVulkanPathPipeline(context, arrays, pathOptions(first, {}),
+                                  primitiveCount(arrays) > gpu::kTestAllMaxPrims || !shapes::anyNeverHit(scene));
     } catch (const std::exception&) {
     }
     ahead = secondsSince(start);

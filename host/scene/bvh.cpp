@@ -413,8 +413,7 @@ class Builder {
 
 }  // namespace
 
-Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads, double scale) {
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+void checkPrimitiveCounts(const SceneDesc& scene) {
   // A primitive reference holds an index below 2^29 (gpu_types.h, primRef): 32 GiB of
   // triangles, beyond any machine's memory before this is reached.
   bool tooMany = false;
@@ -427,6 +426,11 @@ Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads, double sc
                 std::to_string(shapes::count(scene, kind)) + " " + std::string(shapes::kPluralNames[kind]);
     throw OutOfMemory(counts + ": a scene holds at most " + std::to_string(gpu::kPrimIndexMask) + " of each");
   }
+}
+
+Bvh buildBvh(const SceneDesc& scene, const dvec3& origin, int threads, double scale) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  checkPrimitiveCounts(scene);
   // Every primitive of kind 0, then of kind 1, ...: prims[i] for i in [first[k], first[k + 1]).
   std::size_t first[shapes::kKinds + 1] = {};
   for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind) first[kind + 1] = first[kind] + shapes::count(scene, kind);

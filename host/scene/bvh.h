@@ -32,4 +32,8 @@ struct Bvh {
 // threads (0: one per core); the tree is the same for every count.
 Bvh buildBvh(const SceneDesc& scene, const dvec3& origin = dvec3(0.0), int threads = 0, double scale = 1.0);
 
+// Throws OutOfMemory for a scene of more primitives of one kind than a primitive reference can
+// index (2^29; gpu_types.h, primRef). buildBvh checks it first; flatten before anything else.
+void checkPrimitiveCounts(const SceneDesc& scene);
+
 }  // namespace vkrt

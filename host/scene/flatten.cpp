@@ -221,8 +221,11 @@ GpuScene flatten(const SceneDesc& scene, const std::function<void(const GpuScene
   g.scale = scale;
   g.camera = cameraConstants(scene, origin, scale);
   g.cutoff = cutoffConstants(scene);
+  checkPrimitiveCounts(scene);   // (before any array: too many of a kind is an error at once)
   // Every array but the BVH on another thread, while this one builds the BVH; then
   // `arraysMade` there, while the BVH may still build. The two write different members of g.
+  // (The peak of memory then holds the BVH's build records, 32 bytes a primitive, beside the
+  // converted arrays.)
   std::future<void> arrays = std::async(std::launch::async, [&] {
     makeArrays(scene, g);
     if (arraysMade) arraysMade(g);

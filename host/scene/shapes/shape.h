@@ -70,6 +70,13 @@ inline void bounds(const SceneDesc& scene, std::uint32_t ref, dvec3& lo, dvec3& 
 inline bool neverHit(const SceneDesc& scene, std::uint32_t ref) {
   return visit(scene, ref, [](const auto& s) { return neverHit(s); });
 }
+// Whether some primitive can never be hit (the BVH leaves those out).
+inline bool anyNeverHit(const SceneDesc& scene) {
+  for (std::uint32_t kind = 0; kind < kKinds; ++kind)
+    for (std::size_t i = 0; i < count(scene, kind); ++i)
+      if (neverHit(scene, gpu::primRef(kind, static_cast<std::uint32_t>(i)))) return true;
+  return false;
+}
 inline double area(const SceneDesc& scene, std::uint32_t ref) {
   return visit(scene, ref, [](const auto& s) { return area(s); });
 }
