@@ -112,7 +112,9 @@ struct PathShader {
 };
 
 // `texelsFit`: SceneUpload::texelsFit; `eachPrimitiveOnce`: the BVH holds every primitive
-// exactly once. Before the BVH is built (a pipeline made ahead): texelsFitBeforeBvh, and true.
+// exactly once. Before the BVH is built (a pipeline made ahead): texelsFitBeforeBvh, and
+// whether the scene has no primitive that can never be hit (prepareVulkanPathPipeline's
+// caller asks shapes::anyNeverHit).
 PathShader pathShader(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
                       const BandLayout& layout, std::uint32_t samples, bool texelsFit, bool eachPrimitiveOnce) {
   PathShader p;

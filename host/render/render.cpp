@@ -79,6 +79,19 @@ void setBatch(Options& o, const RenderRequest& request, const SamplePlan& plan, 
   o.stop = [] { return pendingInterrupt() != 0; };
 }
 
+// The settings both Vulkan renderers' options share (VulkanOptions, VulkanPathOptions), for one
+// batch: the request's step budget, reads and variant, and setBatch's.
+template <class Options>
+Options vulkanOptions(const RenderRequest& request, const SamplePlan& plan, const SampleBatch& batch,
+                      std::function<void(std::uint64_t, std::uint64_t)> progress) {
+  Options o;
+  o.stepBudget = request.stepBudget;
+  o.reads = request.reads;
+  o.variant = request.variant;
+  setBatch(o, request, plan, batch, std::move(progress));
+  return o;
+}
+
 // Renders the plan's samples in batches (render/progressive) and reports them. (Only the
 // Whitted model streams its rows: it is one batch; a progressive mean is held whole.)
 RadianceImage renderBatches(const BatchRenderer& batches, const SamplePlan& plan, RenderReport& report) {
@@ -146,22 +159,14 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
 
   // Each batch's renderer options.
   auto whittedOptions = [&](const SampleBatch& batch, std::function<void(std::uint64_t, std::uint64_t)> pixels) {
-    VulkanOptions o;
-    o.stepBudget = request.stepBudget;
-    o.reads = request.reads;
-    o.variant = request.variant;
+    VulkanOptions o = vulkanOptions<VulkanOptions>(request, plan, batch, std::move(pixels));
     o.cutoff = request.cutoff;
     if (rows) o.rows = *rows;
-    setBatch(o, request, plan, batch, std::move(pixels));
     return o;
   };
   auto pathOptions = [&](const SampleBatch& batch, std::function<void(std::uint64_t, std::uint64_t)> pixels) {
-    VulkanPathOptions o;
-    o.stepBudget = request.stepBudget;
-    o.reads = request.reads;
-    o.variant = request.variant;
+    VulkanPathOptions o = vulkanOptions<VulkanPathOptions>(request, plan, batch, std::move(pixels));
     o.stratified = request.stratified;
-    setBatch(o, request, plan, batch, std::move(pixels));
     return o;
   };
   const bool whitted = scene.path.integrator == Integrator::Raytracer;
