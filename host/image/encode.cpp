@@ -9,7 +9,7 @@ std::uint8_t encodeChannel(float c, double gamma) {
   if (!(c > 0.0f)) return 0;   // NaN, negative and zero
   float v = gamma == 1.0 ? c : static_cast<float>(std::pow(static_cast<double>(c), 1.0 / gamma));
   if (!(v < 1.0f)) return 255;
-  return static_cast<std::uint8_t>(std::floor(v * 255.0f));
+  return static_cast<std::uint8_t>(v * 255.0f);   // truncation is floor here: 0 < v < 1
 }
 
 void encodeRow(const float* in, std::size_t count, double gamma, std::uint8_t* out) {
