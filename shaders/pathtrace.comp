@@ -42,8 +42,16 @@ layout(constant_id = kPathSpecSampler) const uint kSpecSampler = kPathSpecFromPa
 layout(std430, binding = kBindingPixels) buffer Accumulation { vec4 accumulation[]; };
 layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathTracerState states[]; };
 
-layout(std140, binding = kBindingParams) uniform Params { GpuRenderParams params; };
-layout(std140, binding = kBindingPathParams) uniform PathParams { GpuPathParams path; };
+// The parameters of the render (and of the path) are read from storage buffers into private
+// copies once, at the start of main, never from uniform blocks: lavapipe (Mesa 22.3) inlines
+// up to four values of a uniform block that decide a branch or a loop and compiles the shader
+// again for each new set of them, which made the path shader's general variant a compile per
+// camera; and the copies cost fewer instructions than reads where used (bench/README.md,
+// "Parameters in storage buffers").
+layout(std430, binding = kBindingParams) readonly buffer Params { GpuRenderParams paramsStored; };
+layout(std430, binding = kBindingPathParams) readonly buffer PathParams { GpuPathParams pathStored; };
+GpuRenderParams params;
+GpuPathParams path;
 layout(push_constant) uniform Push { GpuPathPush pc; };
 
 #include "counters.glsl"
@@ -557,6 +565,8 @@ void loadState(uint slot) {
 }
 
 void main() {
+  params = paramsStored;
+  path = pathStored;
   // The lanes share out the band's tiles in runs (tile_run.glsl).
   uint runStart = startRun();
   uint invocation = gl_WorkGroupID.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;

@@ -159,11 +159,6 @@ void ComputePipeline::bind(std::uint32_t binding, const Buffer& buffer) {
   write(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &info, nullptr);
 }
 
-void ComputePipeline::bindUniform(std::uint32_t binding, const Buffer& buffer) {
-  VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
-  write(binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &info, nullptr);
-}
-
 void ComputePipeline::bindTexels(std::uint32_t binding, const Buffer& buffer, VkFormat format,
                                  std::size_t texelBytes) {
   VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};

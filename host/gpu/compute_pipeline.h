@@ -31,8 +31,6 @@ class ComputePipeline {
 
   // A storage buffer at `binding`.
   void bind(std::uint32_t binding, const Buffer& buffer);
-  // A uniform buffer at `binding`.
-  void bindUniform(std::uint32_t binding, const Buffer& buffer);
   // A uniform texel buffer at `binding`: a view of `buffer` as texels of `format`
   // (`texelBytes` each). The pipeline owns the view.
   void bindTexels(std::uint32_t binding, const Buffer& buffer, VkFormat format, std::size_t texelBytes);

@@ -80,15 +80,11 @@ ShaderBindings::ShaderBindings(SceneArrays arrays, bool texelReads)
     forEachTexelArray(GpuScene{}, arrays, [&](std::uint32_t binding, const auto&) {
       types[binding] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     });
-  types[gpu::kBindingParams] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  if (arrays == SceneArrays::Path) types[gpu::kBindingPathParams] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
 }
 
 void ShaderBindings::bindTo(ComputePipeline& pipeline) const {
   for (std::uint32_t b = 0; b < types.size(); ++b) {
-    if (types[b] == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
-      pipeline.bindUniform(b, *buffers[b]);
-    else if (types[b] == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
+    if (types[b] == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
       pipeline.bind(b, *buffers[b]);
     else if (texelBytesAt(b) == kPrimRefTexel)
       pipeline.bindTexels(b, *buffers[b], VK_FORMAT_R32_UINT, kPrimRefTexel);

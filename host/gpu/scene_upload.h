@@ -22,8 +22,8 @@ enum class SceneArrays { Whitted, Path };
 struct ShaderBindings {
   // The bindings of the Whitted shader (SceneArrays::Whitted) or the path shader, their types
   // set, no buffer yet: the scene's arrays uniform texel buffers (texelReads) or storage
-  // buffers, the render's and the path's parameters uniform buffers, the rest (pixels, states,
-  // counters, emitters) storage buffers. The one table of the types, which a pipeline made
+  // buffers, the rest (the render's and the path's parameters, pixels, states, counters,
+  // emitters) storage buffers. The one table of the types, which a pipeline made
   // ahead (ComputePipeline::prepare) and the render's own take alike.
   ShaderBindings(SceneArrays arrays, bool texelReads);
   void set(std::uint32_t binding, const Buffer& buffer) { buffers[binding] = &buffer; }

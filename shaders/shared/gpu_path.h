@@ -63,8 +63,8 @@ GPU_CONST uint kMaxBounces = 0xFFFFFFFFu / kRngBounceStride - 1u;
 // the light's own triangles (at t = |x' - x|, up to rounding) never block it.
 GPU_CONST float kQuadShadowSpan = 0.9990234375f;   // 1 - 2^-10
 
-// One render's path settings, camera and sample range (a uniform buffer; std140 and std430
-// agree: vec4, 4-byte scalar and vec4-only struct members).
+// One render's path settings, camera and sample range (a storage buffer, pathtrace.comp; std140
+// and std430 agree: vec4, 4-byte scalar and vec4-only struct members).
 struct GpuPathParams {
   GpuCamera camera;
   uint integrator;          // kIntegratorAnalyticDirect, kIntegratorDirect or kIntegratorPathTracer

@@ -78,17 +78,10 @@ TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
          b13 = Buffer::withContents(*context, counters), b14 = Buffer::withContents(*context, pathPush);
   Buffer out(*context, expected.size() * 4, true);
   std::vector<VkDescriptorType> types(15, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-  types[6] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  types[9] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   ComputePipeline probe(*context, kLayoutProbeSpirv, sizeof(kLayoutProbeSpirv), types, {},
                         sizeof(gpu::GpuPushConstants));
   const Buffer* all[] = {&b0, &b1, &b2, &b3, &b4, &b5, &b6, &out, &b8, &b9, &b10, &b11, &b12, &b13, &b14};
-  for (std::uint32_t i = 0; i < 15; ++i) {
-    if (i == 6 || i == 9)
-      probe.bindUniform(i, *all[i]);
-    else
-      probe.bind(i, *all[i]);
-  }
+  for (std::uint32_t i = 0; i < 15; ++i) probe.bind(i, *all[i]);
   probe.run(push.data(), 1);
   std::vector<std::uint32_t> got(expected.size());
   std::memcpy(got.data(), out.mapped(), got.size() * 4);
