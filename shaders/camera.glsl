@@ -1,5 +1,5 @@
 // camera.glsl: the camera ray of both compute shaders (raytrace.comp, pathtrace.comp).
-// Include after the uniform `params` (GpuRenderParams).
+// Include after params.glsl (`params`, GpuRenderParams).
 
 // The unit direction of the camera ray through the point `offset` of pixel `pixel` ((0.5,
 // 0.5) is its centre) of the full image, row 0 at the top (doc/scene-format.md, "Camera"): a

@@ -42,15 +42,10 @@ layout(constant_id = kPathSpecSampler) const uint kSpecSampler = kPathSpecFromPa
 layout(std430, binding = kBindingPixels) buffer Accumulation { vec4 accumulation[]; };
 layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathTracerState states[]; };
 
-// The parameters of the render (and of the path) are read from storage buffers into private
-// copies once, at the start of main, never from uniform blocks: lavapipe (Mesa 22.3) inlines
-// up to four values of a uniform block that decide a branch or a loop and compiles the shader
-// again for each new set of them, which made the path shader's general variant a compile per
-// camera; and the copies cost fewer instructions than reads where used (bench/README.md,
-// "Parameters in storage buffers").
-layout(std430, binding = kBindingParams) readonly buffer Params { GpuRenderParams paramsStored; };
+#include "params.glsl"
+// The path's settings and camera, the same way (params.glsl): a storage buffer, copied into
+// the private `path` by main's first lines.
 layout(std430, binding = kBindingPathParams) readonly buffer PathParams { GpuPathParams pathStored; };
-GpuRenderParams params;
 GpuPathParams path;
 layout(push_constant) uniform Push { GpuPathPush pc; };
 
@@ -565,7 +560,7 @@ void loadState(uint slot) {
 }
 
 void main() {
-  params = paramsStored;
+  loadParams();
   path = pathStored;
   // The lanes share out the band's tiles in runs (tile_run.glsl).
   uint runStart = startRun();

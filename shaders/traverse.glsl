@@ -3,7 +3,7 @@
 // descent as a bounded number of steps, and the save and load of all that (GpuTraceState)
 // when an invocation runs out of steps. What a shader does with a hit, a miss or a shadow
 // ray's answer stays in the shader.
-// Include after intersect.glsl, the uniform `params` (GpuRenderParams) and the buffer
+// Include after intersect.glsl, params.glsl (`params`, GpuRenderParams) and the buffer
 // `states[]`, whose elements hold a GpuTraceState named `trace`.
 
 // ---- the state of the ray being traced (registers; saved to states[].trace on suspension) ----

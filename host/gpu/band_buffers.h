@@ -27,7 +27,7 @@ struct BandHooks {
 };
 
 struct BandBuffers {
-  // `stateBytes` for the suspended state; `params` copied into a uniform buffer with the step
+  // `stateBytes` for the suspended state; `params` copied into a storage buffer with the step
   // budget `stepBudget`, or with 0 one paced by time (StepPace) from the first dispatch's
   // `firstDispatchSteps` (kWhittedFirstDispatchSteps or kPathFirstDispatchSteps). With
   // `timedBands` (pathtrace.comp, one tile a workgroup) and a paced budget, bands are sized by

@@ -1,4 +1,4 @@
-// A buffer (storage, uniform or texel) in host-visible memory, mapped for its whole life: uploads are a memcpy
+// A buffer (storage or texel) in host-visible memory, mapped for its whole life: uploads are a memcpy
 // into the mapping (no staging copy), readback a read from it.
 #pragma once
 

@@ -2,10 +2,12 @@
 #include "gpu/compute_pipeline.h"
 
 #include "gpu/context.h"
+#include "gpu/device_error.h"
 #include "gpu/pipeline_cache.h"
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 
 namespace vkrt {
 
@@ -67,10 +69,33 @@ CompiledPipeline compile(VkDevice device, const PipelineKey& key) {
 
 // The context's pipeline of `key`, made now if it has none.
 const CompiledPipeline& compiled(const Context& context, const PipelineKey& key) {
+  checkBindingLimits(context.properties().limits, context.properties().deviceName, key.bindingTypes);
   return context.pipelines().get(key, [&] { return compile(context.device(), key); });
 }
 
 }  // namespace
+
+void checkBindingLimits(const VkPhysicalDeviceLimits& limits, const char* deviceName,
+                        const std::vector<VkDescriptorType>& types) {
+  const auto count = [&](VkDescriptorType type) {
+    return static_cast<std::uint32_t>(std::count(types.begin(), types.end(), type));
+  };
+  const struct {
+    std::uint32_t used, allowed;
+    const char* what;
+  } checks[] = {
+      {count(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER), limits.maxPerStageDescriptorStorageBuffers, "storage buffers"},
+      {count(VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER), limits.maxPerStageDescriptorSampledImages,
+       "uniform texel buffers (sampled images)"},
+      {static_cast<std::uint32_t>(types.size()), limits.maxPerStageResources, "resources"},
+  };
+  for (const auto& c : checks)
+    if (c.used > c.allowed)
+      throw DeviceError("the Vulkan device '" + std::string(deviceName) + "' allows a compute shader " +
+                        std::to_string(c.allowed) + " " + c.what + ", and vkrt's shader needs " +
+                        std::to_string(c.used) + " (--reads texel needs fewer storage buffers; --backend cpu "
+                        "needs no device)");
+}
 
 void ComputePipeline::prepare(const Context& context, const std::uint32_t* spirv, std::size_t spirvBytes,
                               const std::vector<VkDescriptorType>& bindingTypes,

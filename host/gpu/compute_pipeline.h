@@ -1,5 +1,5 @@
-// A compute pipeline over buffers at bindings 0..N-1 of set 0 (storage buffers, uniform texel
-// buffers or uniform buffers), with uint specialization constants (ids 0..) and a push-constant
+// A compute pipeline over buffers at bindings 0..N-1 of set 0 (storage buffers or uniform
+// texel buffers), with uint specialization constants (ids 0..) and a push-constant
 // block, plus the command buffer and fence to run it synchronously. The compiled pipeline
 // comes from the context's PipelineCache (made there the first time); the descriptor set,
 // the command buffer and the fence are this object's own.
@@ -12,6 +12,14 @@
 #include "gpu/buffer.h"
 
 namespace vkrt {
+
+// Throws DeviceError when a compute shader on a device of `limits` (named `deviceName`) cannot
+// have the bindings `types`: more storage buffers, uniform texel buffers (sampled images, to
+// Vulkan) or resources in all than the device allows a shader stage. Every device lavapipe
+// or a desktop GPU offers allows them; Vulkan's minimums (4 storage buffers, 16 sampled
+// images, 128 resources) do not.
+void checkBindingLimits(const VkPhysicalDeviceLimits& limits, const char* deviceName,
+                        const std::vector<VkDescriptorType>& types);
 
 class ComputePipeline {
  public:

@@ -52,8 +52,8 @@ constexpr std::size_t kBpp = 3;   // bytes per pixel: 8-bit RGB
 // pixel to the left, b the byte above and c the byte above-left (0 outside the image).
 // Returns the sum of the outputs read as signed bytes' magnitudes, the usual heuristic's
 // cost. The first pixel, which has nothing to its left, gets a loop of its own, so that the
-// rest runs without a branch and the compiler vectorises it (6x faster than one loop over
-// every type and byte: 2 against 12 ms for a 640x480 image).
+// rest runs without a branch and the compiler vectorises it (bench/README.md, "Fixed cost of
+// the Vulkan backend"). `out` must not overlap `row` or `above`.
 template <class Predict>
 long filterWith(const std::uint8_t* __restrict row, const std::uint8_t* __restrict above, std::size_t bytes,
                 std::uint8_t* __restrict out, Predict predict) {

@@ -26,7 +26,7 @@ GPU_CONST uint kSamplingBrdf = 2u;
 // bands, tiles, the BVH root) with it. At kBindingPixels it adds each pixel's samples into a
 // vec4 (rgb = sum of the samples' radiance, w = 1 once the pixel's samples are all done).
 GPU_CONST uint kBindingQuadLights = kBindingCount + 0u;   // GpuQuadLight[] (a texel buffer with the texel reads)
-GPU_CONST uint kBindingPathParams = kBindingCount + 1u;   // GpuPathParams (a uniform buffer)
+GPU_CONST uint kBindingPathParams = kBindingCount + 1u;   // GpuPathParams (a storage buffer, copied like params.glsl)
 GPU_CONST uint kBindingEmitters = kBindingCount + 2u;     // GpuEmitter[] (a storage buffer in both read modes)
 GPU_CONST uint kPathBindingCount = kBindingCount + 3u;
 
@@ -35,7 +35,7 @@ GPU_CONST uint kPathSpecHasQuadLights = kSpecSharedCount + 0u;
 GPU_CONST uint kPathSpecHasGgx = kSpecSharedCount + 1u;          // some material has `brdf ggx`
 // The render's integrator settings (the GpuPathParams members of the same names), so that the
 // driver compiles out the code of the others: lavapipe runs every branch that any lane of a
-// SIMD vector takes, and a uniform's value is unknown to it. kPathSpecFromParams (the default,
+// SIMD vector takes, and a value read from a buffer is unknown to it. kPathSpecFromParams (the default,
 // and the value when not specializing) reads the setting from GpuPathParams instead.
 GPU_CONST uint kPathSpecIntegrator = kSpecSharedCount + 2u;
 GPU_CONST uint kPathSpecNextEvent = kSpecSharedCount + 3u;
@@ -63,8 +63,8 @@ GPU_CONST uint kMaxBounces = 0xFFFFFFFFu / kRngBounceStride - 1u;
 // the light's own triangles (at t = |x' - x|, up to rounding) never block it.
 GPU_CONST float kQuadShadowSpan = 0.9990234375f;   // 1 - 2^-10
 
-// One render's path settings, camera and sample range (a storage buffer, pathtrace.comp; std140
-// and std430 agree: vec4, 4-byte scalar and vec4-only struct members).
+// One render's path settings, camera and sample range (a storage buffer, std430; pathtrace.comp
+// copies it at its start, like params.glsl).
 struct GpuPathParams {
   GpuCamera camera;
   uint integrator;          // kIntegratorAnalyticDirect, kIntegratorDirect or kIntegratorPathTracer

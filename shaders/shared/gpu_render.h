@@ -20,7 +20,7 @@ GPU_CONST uint kBindingPrimRefs = kBindingShapesEnd + 3u;
 GPU_CONST uint kBindingPixels = kBindingShapesEnd + 4u;       // output: one vec4 per pixel of the band, rgb = linear radiance, w = 1 when done (0: suspended)
 GPU_CONST uint kBindingPathStates = kBindingShapesEnd + 5u;   // suspended state: a GpuWhittedState per invocation (raytrace.comp) or per pixel of the band (pathtrace.comp)
 GPU_CONST uint kBindingCounters = kBindingShapesEnd + 6u;     // GpuCounters
-GPU_CONST uint kBindingParams = kBindingShapesEnd + 7u;       // GpuRenderParams (a uniform buffer)
+GPU_CONST uint kBindingParams = kBindingShapesEnd + 7u;       // GpuRenderParams (a storage buffer: params.glsl)
 GPU_CONST uint kBindingCount = kBindingShapesEnd + 8u;
 
 // Specialization constant ids both shaders give the same meaning. Only what changes the code is specialised: what the scene
@@ -72,7 +72,7 @@ struct GpuRenderParams {
   uint originY;
   uint fullWidth;
   uint fullHeight;
-  uint pad0, pad1;          // size 64 (std140 and std430 agree: only uint members)
+  uint pad0, pad1;          // size 64 (std430)
 };
 GPU_ASSERT_SIZE(GpuRenderParams, 64)
 GPU_ASSERT_OFFSET(GpuRenderParams, stepBudget, 16)

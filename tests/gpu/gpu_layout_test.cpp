@@ -1,10 +1,16 @@
 // The shader sees exactly the bytes the host wrote: every struct of gpu_types.h goes through
-// layout_probe.comp, which copies it out field by field.
+// layout_probe.comp, which copies it out field by field. And the shaders' bindings against a
+// device's limits.
+#include <algorithm>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "gpu/compute_pipeline.h"
+#include "gpu/device_error.h"
+#include "gpu/scene_upload.h"
 #include "layout_probe.comp.h"
 #include "test_support.h"
 
@@ -87,4 +93,37 @@ TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
   std::memcpy(got.data(), out.mapped(), got.size() * 4);
   for (std::size_t i = 0; i < expected.size(); ++i) ASSERT_EQ(got[i], expected[i]) << "word " << i;
   EXPECT_EQ(context->validationMessages(), 0);
+}
+
+// A device that allows a compute shader fewer bindings of a kind than a shader has is a
+// device error naming the device and both numbers, before any pipeline is made; Vulkan's
+// minimums fit the texel-read Whitted shader but not the storage-read path shader (its scene
+// arrays are storage buffers).
+TEST(GpuLayout, BindingsBeyondTheDeviceLimitsAreADeviceError) {
+  VkPhysicalDeviceLimits minimum{};
+  minimum.maxPerStageDescriptorStorageBuffers = 4;
+  minimum.maxPerStageDescriptorSampledImages = 16;
+  minimum.maxPerStageResources = 128;
+  const std::vector<VkDescriptorType> whittedTexel = ShaderBindings(SceneArrays::Whitted, true).types;
+  const std::vector<VkDescriptorType> pathStorage = ShaderBindings(SceneArrays::Path, false).types;
+  EXPECT_NO_THROW(checkBindingLimits(minimum, "small", whittedTexel));
+  try {
+    checkBindingLimits(minimum, "small", pathStorage);
+    ADD_FAILURE() << "the storage-read path shader fit in 4 storage buffers";
+  } catch (const DeviceError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("'small' allows a compute shader 4 storage buffers"), std::string::npos) << message;
+    const auto storage = std::count(pathStorage.begin(), pathStorage.end(), VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    EXPECT_NE(message.find("needs " + std::to_string(storage)), std::string::npos) << message;
+  }
+  VkPhysicalDeviceLimits fewTexels = minimum;
+  fewTexels.maxPerStageDescriptorStorageBuffers = 64;
+  fewTexels.maxPerStageDescriptorSampledImages = 2;
+  EXPECT_THROW(checkBindingLimits(fewTexels, "t", whittedTexel), DeviceError);
+  VkPhysicalDeviceLimits fewResources = fewTexels;
+  fewResources.maxPerStageDescriptorSampledImages = 64;
+  fewResources.maxPerStageResources = 3;
+  EXPECT_THROW(checkBindingLimits(fewResources, "r", whittedTexel), DeviceError);
+  fewResources.maxPerStageResources = 64;
+  EXPECT_NO_THROW(checkBindingLimits(fewResources, "r", pathStorage));
 }

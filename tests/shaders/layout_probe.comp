@@ -53,7 +53,7 @@ void main() {
   put(m.ambient); put(m.diffuse); put(m.specular); put(m.emission);
   GpuBvhNode b = nodes[1];
   put(b.minX); put(b.minY); put(b.minZ); put(b.leftOrFirst); put(b.maxX); put(b.maxY); put(b.maxZ); put(b.primCount);
-  // The one uniform buffer: its only element.
+  // The render's parameters: the only element of their buffer.
   GpuRenderParams p = params;
   put(p.width); put(p.height); put(p.maxDepth); put(p.lightCount); put(p.stepBudget); put(p.bandHeight);
   put(p.tilesX); put(p.tileOrderStride); put(p.primCount); put(p.rootEntry);
