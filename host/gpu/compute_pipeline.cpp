@@ -67,10 +67,13 @@ CompiledPipeline compile(VkDevice device, const PipelineKey& key) {
   return made;
 }
 
-// The context's pipeline of `key`, made now if it has none.
+// The context's pipeline of `key`, made now (its bindings checked against the device's limits)
+// if it has none.
 const CompiledPipeline& compiled(const Context& context, const PipelineKey& key) {
-  checkBindingLimits(context.properties().limits, context.properties().deviceName, key.bindingTypes);
-  return context.pipelines().get(key, [&] { return compile(context.device(), key); });
+  return context.pipelines().get(key, [&] {
+    checkBindingLimits(context.properties().limits, context.properties().deviceName, key.bindingTypes);
+    return compile(context.device(), key);
+  });
 }
 
 }  // namespace
@@ -82,19 +85,21 @@ void checkBindingLimits(const VkPhysicalDeviceLimits& limits, const char* device
   };
   const struct {
     std::uint32_t used, allowed;
-    const char* what;
+    const char *what, *fewer;   // fewer: the --reads that binds fewer of them, if one does
   } checks[] = {
-      {count(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER), limits.maxPerStageDescriptorStorageBuffers, "storage buffers"},
+      {count(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER), limits.maxPerStageDescriptorStorageBuffers, "storage buffers",
+       "--reads texel"},
       {count(VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER), limits.maxPerStageDescriptorSampledImages,
-       "uniform texel buffers (sampled images)"},
-      {static_cast<std::uint32_t>(types.size()), limits.maxPerStageResources, "resources"},
+       "uniform texel buffers (sampled images)", "--reads storage"},
+      {static_cast<std::uint32_t>(types.size()), limits.maxPerStageResources, "resources", nullptr},
   };
   for (const auto& c : checks)
     if (c.used > c.allowed)
       throw DeviceError("the Vulkan device '" + std::string(deviceName) + "' allows a compute shader " +
                         std::to_string(c.allowed) + " " + c.what + ", and vkrt's shader needs " +
-                        std::to_string(c.used) + " (--reads texel needs fewer storage buffers; --backend cpu "
-                        "needs no device)");
+                        std::to_string(c.used) + " (" +
+                        (c.fewer ? c.fewer + std::string(" needs fewer; ") : std::string()) +
+                        "--backend cpu needs no device)");
 }
 
 void ComputePipeline::prepare(const Context& context, const std::uint32_t* spirv, std::size_t spirvBytes,

@@ -49,6 +49,14 @@ int predictPng(int type, int a, int b, int c) {
   return 0;
 }
 
+// The specification's prediction of byte i of `row` by filter `type`, from the byte a pixel
+// to the left (a), the one above (b) and the one above-left (c); 0 outside the image (`above`
+// null for the first row).
+int predictAt(int type, const std::uint8_t* row, const std::uint8_t* above, std::size_t i) {
+  const int a = i >= 3 ? row[i - 3] : 0, b = above ? above[i] : 0, c = above && i >= 3 ? above[i - 3] : 0;
+  return predictPng(type, a, b, c);
+}
+
 // The IDAT stream of a PNG file, inflated: for each row, its filter type and filtered bytes.
 std::vector<std::uint8_t> inflatedImageData(const std::string& path, std::size_t expected) {
   std::ifstream in(path, std::ios::binary);
@@ -88,11 +96,10 @@ TEST(Png, EachRowTakesTheCheapestFilter) {
     std::uint8_t* row = img.pixel(0, y);
     const std::uint8_t* above = y > 0 ? img.pixel(0, y - 1) : nullptr;
     const int kind = y % 6;   // 0: noise, 1-4: exact for that predictor, 5: zeros with a few ones
-    for (int i = 0; i < w * 3; ++i) {
-      int a = i >= 3 ? row[i - 3] : 0, b = above ? above[i] : 0, c = above && i >= 3 ? above[i - 3] : 0;
+    for (std::size_t i = 0; i < std::size_t{w} * 3; ++i) {
       if (kind == 0 || (i < 3 && kind != 5)) row[i] = static_cast<std::uint8_t>(byte());
       else if (kind == 5) row[i] = static_cast<std::uint8_t>(byte() % 9 == 0 ? 1 : 0);
-      else row[i] = static_cast<std::uint8_t>(predictPng(kind, a, b, c) + (byte() % 7 == 0 ? 1 : 0));
+      else row[i] = static_cast<std::uint8_t>(predictAt(kind, row, above, i) + (byte() % 7 == 0 ? 1 : 0));
     }
   }
   std::string dir = freshDir("png/filters");
@@ -108,8 +115,7 @@ TEST(Png, EachRowTakesTheCheapestFilter) {
     std::array<long, 5> cost{};
     for (int type = 0; type < 5; ++type)
       for (std::size_t i = 0; i < rowBytes; ++i) {
-        int a = i >= 3 ? row[i - 3] : 0, b = above ? above[i] : 0, c = above && i >= 3 ? above[i - 3] : 0;
-        int v = (row[i] - predictPng(type, a, b, c)) & 255;
+        int v = (row[i] - predictAt(type, row, above, i)) & 255;
         cost[type] += v < 128 ? v : 256 - v;
       }
     int cheapest = 0;
@@ -117,10 +123,8 @@ TEST(Png, EachRowTakesTheCheapestFilter) {
       if (cost[type] < cost[cheapest]) cheapest = type;
     const std::uint8_t* stored = data.data() + y * (rowBytes + 1);
     ASSERT_EQ(stored[0], cheapest) << "row " << y;
-    for (std::size_t i = 0; i < rowBytes; ++i) {
-      int a = i >= 3 ? row[i - 3] : 0, b = above ? above[i] : 0, c = above && i >= 3 ? above[i - 3] : 0;
-      ASSERT_EQ(stored[i + 1], (row[i] - predictPng(cheapest, a, b, c)) & 255) << "row " << y << ", byte " << i;
-    }
+    for (std::size_t i = 0; i < rowBytes; ++i)
+      ASSERT_EQ(stored[i + 1], (row[i] - predictAt(cheapest, row, above, i)) & 255) << "row " << y << ", byte " << i;
     chosen.insert(cheapest);
   }
   EXPECT_EQ(chosen, (std::set<int>{0, 1, 2, 3, 4}));
