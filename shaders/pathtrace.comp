@@ -59,7 +59,7 @@ layout(push_constant) uniform Push { GpuPathPush pc; };
 #include "tile_run.glsl"   // tile, runEnd, bandRows
 
 #ifdef VKRT_TEXEL_READS
-layout(binding = kBindingQuadLights) uniform usamplerBuffer quadLightWords;   // RGBA32UI
+SCENE_TEXELS(kBindingQuadLights) quadLightWords;   // kQuadLightTexels each
 GpuQuadLight loadQuadLight(uint i) {
   const uint n = kQuadLightTexels;
   GpuQuadLight q;

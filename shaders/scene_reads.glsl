@@ -4,13 +4,18 @@
 // Scene reads: storage buffers, or (VKRT_TEXEL_READS) the same bytes through uint texel-buffer
 // views, which lavapipe reads 2.7-3x faster inside loops (bench/ measures both). Only uint
 // views: a float view may flush denormal-looking indices or canonicalise NaN-looking words.
+// The views are storage texel buffers read with imageLoad, which lavapipe inlines; a uniform
+// texel buffer's texelFetch is a call of about 70 instructions (bench/README.md, "Texel reads
+// inlined"). Macros, since an image cannot be a function argument here.
 #ifdef VKRT_TEXEL_READS
-layout(binding = kBindingLights) uniform usamplerBuffer lightWords;           // RGBA32UI, 3 texels each
-layout(binding = kBindingMaterials) uniform usamplerBuffer materialWords;        // RGBA32UI, 4 texels each
-layout(binding = kBindingBvhNodes) uniform usamplerBuffer nodeWords;            // RGBA32UI, 2 texels each
-layout(binding = kBindingPrimRefs) uniform usamplerBuffer primRefWords;         // R32UI
-
-vec4 texelF(usamplerBuffer b, uint i) { return uintBitsToFloat(texelFetch(b, int(i))); }
+// A scene array as RGBA32UI texels (the primitive references as R32UI).
+#define SCENE_TEXELS(b) layout(binding = b, rgba32ui) uniform readonly restrict uimageBuffer
+#define texelU(b, i) imageLoad(b, int(i))
+#define texelF(b, i) uintBitsToFloat(texelU(b, i))
+SCENE_TEXELS(kBindingLights) lightWords;         // 3 texels each
+SCENE_TEXELS(kBindingMaterials) materialWords;   // 4 texels each
+SCENE_TEXELS(kBindingBvhNodes) nodeWords;        // 2 texels each
+layout(binding = kBindingPrimRefs, r32ui) uniform readonly restrict uimageBuffer primRefWords;
 
 GpuLight loadLight(uint i) {
   GpuLight l;
@@ -28,7 +33,7 @@ GpuMaterial loadMaterial(uint i) {
   return m;
 }
 GpuBvhNode loadNode(uint i) {
-  uvec4 a = texelFetch(nodeWords, int(2u * i)), b = texelFetch(nodeWords, int(2u * i + 1u));
+  uvec4 a = texelU(nodeWords, 2u * i), b = texelU(nodeWords, 2u * i + 1u);
   GpuBvhNode n;
   n.minX = uintBitsToFloat(a.x); n.minY = uintBitsToFloat(a.y); n.minZ = uintBitsToFloat(a.z);
   n.leftOrFirst = a.w;
@@ -36,7 +41,7 @@ GpuBvhNode loadNode(uint i) {
   n.primCount = b.w;
   return n;
 }
-uint loadPrimRef(uint i) { return texelFetch(primRefWords, int(i)).x; }
+uint loadPrimRef(uint i) { return texelU(primRefWords, i).x; }
 #else
 layout(std430, binding = kBindingLights) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, binding = kBindingMaterials) readonly buffer Materials { GpuMaterial materials[]; };

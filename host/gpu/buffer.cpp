@@ -34,7 +34,7 @@ Buffer::Buffer(const Context& context, std::size_t bytes, bool readback)
     : device_(context.device()), size_(std::max(bytes, kMinBufferBytes)) {
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = size_;
-  info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+  info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT |
                VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   VK_CHECK(vk::vkCreateBuffer(device_, &info, nullptr, &buffer_));

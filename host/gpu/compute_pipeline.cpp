@@ -89,8 +89,8 @@ void checkBindingLimits(const VkPhysicalDeviceLimits& limits, const char* device
   } checks[] = {
       {count(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER), limits.maxPerStageDescriptorStorageBuffers, "storage buffers",
        "--reads texel"},
-      {count(VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER), limits.maxPerStageDescriptorSampledImages,
-       "uniform texel buffers (sampled images)", "--reads storage"},
+      {count(VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER), limits.maxPerStageDescriptorStorageImages,
+       "storage texel buffers (storage images)", "--reads storage"},
       {static_cast<std::uint32_t>(types.size()), limits.maxPerStageResources, "resources", nullptr},
   };
   for (const auto& c : checks)
@@ -199,7 +199,7 @@ void ComputePipeline::bindTexels(std::uint32_t binding, const Buffer& buffer, Vk
   VkBufferView view = VK_NULL_HANDLE;
   VK_CHECK(vk::vkCreateBufferView(device_, &info, nullptr, &view));
   views_.push_back(view);
-  write(binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, nullptr, &view);
+  write(binding, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, nullptr, &view);
 }
 
 void ComputePipeline::run(const void* pushConstants, std::uint32_t groups, const Buffer* clear) {

@@ -14,9 +14,9 @@
 namespace vkrt {
 
 // Throws DeviceError when a compute shader on a device of `limits` (named `deviceName`) cannot
-// have the bindings `types`: more storage buffers, uniform texel buffers (sampled images, to
+// have the bindings `types`: more storage buffers, storage texel buffers (storage images, to
 // Vulkan) or resources in all than the device allows a shader stage. Every device lavapipe
-// or a desktop GPU offers allows them; Vulkan's minimums (4 storage buffers, 16 sampled
+// or a desktop GPU offers allows them; Vulkan's minimums (4 storage buffers, 4 storage
 // images, 128 resources) do not.
 void checkBindingLimits(const VkPhysicalDeviceLimits& limits, const char* deviceName,
                         const std::vector<VkDescriptorType>& types);
@@ -39,7 +39,7 @@ class ComputePipeline {
 
   // A storage buffer at `binding`.
   void bind(std::uint32_t binding, const Buffer& buffer);
-  // A uniform texel buffer at `binding`: a view of `buffer` as texels of `format`
+  // A storage texel buffer at `binding`: a view of `buffer` as texels of `format`
   // (`texelBytes` each). The pipeline owns the view.
   void bindTexels(std::uint32_t binding, const Buffer& buffer, VkFormat format, std::size_t texelBytes);
 

@@ -78,7 +78,7 @@ ShaderBindings::ShaderBindings(SceneArrays arrays, bool texelReads)
       buffers(types.size(), nullptr) {
   if (texelReads)
     forEachTexelArray(GpuScene{}, arrays, [&](std::uint32_t binding, const auto&) {
-      types[binding] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+      types[binding] = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
     });
 }
 
@@ -134,11 +134,15 @@ void SceneUpload::bind(ShaderBindings& bindings) const {
   if (emitters_) bindings.set(gpu::kBindingEmitters, *emitters_);
 }
 
-bool chooseTexelReads(SceneReads reads, bool fit, std::size_t maxTexels) {
-  const bool texel = reads == SceneReads::Texel || (reads == SceneReads::Auto && fit);
+bool chooseTexelReads(SceneReads reads, SceneArrays arrays, bool fit, const VkPhysicalDeviceLimits& limits) {
+  std::uint32_t views = 0;
+  forEachTexelArray(GpuScene{}, arrays, [&](std::uint32_t, const auto&) { ++views; });
+  const bool allowed = views <= limits.maxPerStageDescriptorStorageImages;
+  const bool texel = reads == SceneReads::Texel || (reads == SceneReads::Auto && fit && allowed);
   if (texel && !fit)
     throw DeviceError("the scene is too large for texel-buffer reads on this device (limit " +
-                      std::to_string(maxTexels) + " texels); use storage-buffer reads (--reads storage)");
+                      std::to_string(limits.maxTexelBufferElements) +
+                      " texels); use storage-buffer reads (--reads storage)");
   return texel;
 }
 

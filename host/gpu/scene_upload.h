@@ -21,13 +21,13 @@ enum class SceneArrays { Whitted, Path };
 // A shader's bindings 0..N-1: a descriptor type and a buffer each.
 struct ShaderBindings {
   // The bindings of the Whitted shader (SceneArrays::Whitted) or the path shader, their types
-  // set, no buffer yet: the scene's arrays uniform texel buffers (texelReads) or storage
+  // set, no buffer yet: the scene's arrays storage texel buffers (texelReads) or storage
   // buffers, the rest (the render's and the path's parameters, pixels, states, counters,
   // emitters) storage buffers. The one table of the types, which a pipeline made
   // ahead (ComputePipeline::prepare) and the render's own take alike.
   ShaderBindings(SceneArrays arrays, bool texelReads);
   void set(std::uint32_t binding, const Buffer& buffer) { buffers[binding] = &buffer; }
-  // Binds each buffer at its binding, as its type says: a uniform texel buffer as a view of
+  // Binds each buffer at its binding, as its type says: a storage texel buffer as a view of
   // uints (the primitive references) or of uvec4 texels (the rest).
   void bindTo(ComputePipeline& pipeline) const;
   std::vector<VkDescriptorType> types;
@@ -61,8 +61,10 @@ class SceneUpload {
 bool texelsFitBeforeBvh(const GpuScene& scene, SceneArrays arrays, std::size_t maxTexels);
 
 // Whether the shader reads the scene through texel buffers: as `reads` says, Auto where
-// `fit` (SceneUpload::texelsFit). Throws DeviceError for Texel on a scene that does not fit
-// the device's `maxTexels`.
-bool chooseTexelReads(SceneReads reads, bool fit, std::size_t maxTexels);
+// `fit` (SceneUpload::texelsFit with the device's maxTexelBufferElements) and the device
+// allows a shader as many storage texel buffers as `arrays` has (Vulkan guarantees only 4).
+// Throws DeviceError for Texel on a scene that does not fit; Texel on a device that allows
+// too few is the pipeline's DeviceError (checkBindingLimits).
+bool chooseTexelReads(SceneReads reads, SceneArrays arrays, bool fit, const VkPhysicalDeviceLimits& limits);
 
 }  // namespace vkrt

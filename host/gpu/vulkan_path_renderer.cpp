@@ -136,8 +136,7 @@ PathShader pathShader(const Context& context, const GpuScene& scene, const Vulka
   const std::size_t primitives = primitiveCount(scene);
   p.testAll = options.testAll && primitives == path.triangleCount + path.sphereCount &&
               primitives <= gpu::kTestAllMaxPrims && eachPrimitiveOnce;
-  const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
-  p.texelReads = chooseTexelReads(options.reads, texelsFit, maxTexels);
+  p.texelReads = chooseTexelReads(options.reads, SceneArrays::Path, texelsFit, context.properties().limits);
   // The rays, about (what ShaderVariant::Auto goes by): per sample a camera ray; direct: a
   // shadow ray per light sample of each quad light; pathtracer: per vertex (4 where only
   // Russian roulette ends the path) a scattered ray and, with next-event estimation, a shadow

@@ -141,8 +141,7 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
     return spec;
   };
   // Texel reads where every scene buffer fits the device's texel-count limit.
-  const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
-  w.texelReads = chooseTexelReads(options.reads, texelsFit, maxTexels);
+  w.texelReads = chooseTexelReads(options.reads, SceneArrays::Whitted, texelsFit, context.properties().limits);
   w.spirv = w.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv;
   w.spirvBytes = w.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv);
   w.specializedKey = variantKey(context.properties(), w.spirv, w.spirvBytes, specConstants(used, false));

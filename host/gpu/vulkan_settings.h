@@ -7,8 +7,9 @@
 
 namespace vkrt {
 
-// How the shader reads the scene: storage buffers, or uniform texel buffers (faster on
-// lavapipe; limited to maxTexelBufferElements texels per buffer).
+// How the shader reads the scene: storage buffers, or storage texel buffers read with imageLoad
+// (faster on lavapipe; limited to maxTexelBufferElements texels per buffer and
+// maxPerStageDescriptorStorageImages buffers per shader).
 enum class SceneReads { Auto, Storage, Texel };
 
 enum class Cutoff { Auto, On, Off };

@@ -4,13 +4,13 @@
 // intersect.glsl, which dispatches over shapes.
 
 #ifdef VKRT_TEXEL_READS
-layout(binding = kBindingSpheres) uniform usamplerBuffer sphereWords;          // RGBA32UI, 6 texels each
+SCENE_TEXELS(kBindingSpheres) sphereWords;   // 6 texels each
 GpuSphere loadSphere(uint i) {
   GpuSphere s;
   s.objectFromWorld = mat4(texelF(sphereWords, 6u * i), texelF(sphereWords, 6u * i + 1u),
                            texelF(sphereWords, 6u * i + 2u), texelF(sphereWords, 6u * i + 3u));
   s.centerRadius = texelF(sphereWords, 6u * i + 4u);
-  uvec4 w = texelFetch(sphereWords, int(6u * i + 5u));
+  uvec4 w = texelU(sphereWords, 6u * i + 5u);
   s.materialIndex = w.x;
   s.rayOffset = uintBitsToFloat(w.y);
   return s;

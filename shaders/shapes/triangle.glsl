@@ -3,14 +3,14 @@
 // and a point for a light sample. Included by intersect.glsl, which dispatches over shapes.
 
 #ifdef VKRT_TEXEL_READS
-layout(binding = kBindingTriangles) uniform usamplerBuffer triangleWords;        // RGBA32UI, 4 texels each
-layout(binding = kBindingTriangleNormals) uniform usamplerBuffer triangleNormalWords;  // RGBA32UI, 3 texels each
+SCENE_TEXELS(kBindingTriangles) triangleWords;               // 4 texels each
+SCENE_TEXELS(kBindingTriangleNormals) triangleNormalWords;   // 3 texels each
 GpuTriangle loadTriangle(uint i) {
   GpuTriangle t;
   t.p0 = texelF(triangleWords, 4u * i);
   t.p1 = texelF(triangleWords, 4u * i + 1u);
   t.p2 = texelF(triangleWords, 4u * i + 2u);
-  uvec4 w = texelFetch(triangleWords, int(4u * i + 3u));
+  uvec4 w = texelU(triangleWords, 4u * i + 3u);
   t.materialIndex = w.x;
   t.normalsIndex = w.y;
   t.rayOffset = uintBitsToFloat(w.z);

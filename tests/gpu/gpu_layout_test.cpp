@@ -97,16 +97,25 @@ TEST(GpuLayout, ShaderReadsExactlyTheBytesTheHostWrote) {
 
 // A device that allows a compute shader fewer bindings of a kind than a shader has is a
 // device error naming the device and both numbers, before any pipeline is made; Vulkan's
-// minimums fit the texel-read Whitted shader but not the storage-read path shader (its scene
-// arrays are storage buffers).
+// minimums (4 storage buffers, 4 storage images) fit neither the texel-read Whitted shader
+// (7 storage texel buffers) nor the storage-read path shader (its scene arrays are storage
+// buffers), and generous limits fit both.
 TEST(GpuLayout, BindingsBeyondTheDeviceLimitsAreADeviceError) {
   VkPhysicalDeviceLimits minimum{};
   minimum.maxPerStageDescriptorStorageBuffers = 4;
-  minimum.maxPerStageDescriptorSampledImages = 16;
+  minimum.maxPerStageDescriptorStorageImages = 4;
   minimum.maxPerStageResources = 128;
   const std::vector<VkDescriptorType> whittedTexel = ShaderBindings(SceneArrays::Whitted, true).types;
   const std::vector<VkDescriptorType> pathStorage = ShaderBindings(SceneArrays::Path, false).types;
-  EXPECT_NO_THROW(checkBindingLimits(minimum, "small", whittedTexel));
+  try {
+    checkBindingLimits(minimum, "small", whittedTexel);
+    ADD_FAILURE() << "the texel-read Whitted shader fit in 4 storage images";
+  } catch (const DeviceError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("'small' allows a compute shader 4 storage texel buffers"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("--reads storage"), std::string::npos) << message;
+  }
   try {
     checkBindingLimits(minimum, "small", pathStorage);
     ADD_FAILURE() << "the storage-read path shader fit in 4 storage buffers";
@@ -116,14 +125,39 @@ TEST(GpuLayout, BindingsBeyondTheDeviceLimitsAreADeviceError) {
     const auto storage = std::count(pathStorage.begin(), pathStorage.end(), VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     EXPECT_NE(message.find("needs " + std::to_string(storage)), std::string::npos) << message;
   }
-  VkPhysicalDeviceLimits fewTexels = minimum;
-  fewTexels.maxPerStageDescriptorStorageBuffers = 64;
-  fewTexels.maxPerStageDescriptorSampledImages = 2;
-  EXPECT_THROW(checkBindingLimits(fewTexels, "t", whittedTexel), DeviceError);
-  VkPhysicalDeviceLimits fewResources = fewTexels;
-  fewResources.maxPerStageDescriptorSampledImages = 64;
+  VkPhysicalDeviceLimits generous = minimum;
+  generous.maxPerStageDescriptorStorageBuffers = 64;
+  generous.maxPerStageDescriptorStorageImages = 64;
+  EXPECT_NO_THROW(checkBindingLimits(generous, "g", whittedTexel));
+  VkPhysicalDeviceLimits fewResources = generous;
   fewResources.maxPerStageResources = 3;
   EXPECT_THROW(checkBindingLimits(fewResources, "r", whittedTexel), DeviceError);
   fewResources.maxPerStageResources = 64;
   EXPECT_NO_THROW(checkBindingLimits(fewResources, "r", pathStorage));
+}
+
+// `--reads auto` takes texel reads only where the scene fits the texel-count limit and the
+// device allows the shader a storage texel buffer per scene array: the Whitted shader has 7,
+// the path shader 8, and Vulkan guarantees 4. `--reads texel` on a scene that does not fit is
+// a device error naming the limit.
+TEST(GpuLayout, AutoReadsTakeTexelsOnlyWhereTheDeviceAllowsThem) {
+  VkPhysicalDeviceLimits limits{};
+  limits.maxTexelBufferElements = 1000;
+  limits.maxPerStageDescriptorStorageImages = 8;
+  EXPECT_TRUE(chooseTexelReads(SceneReads::Auto, SceneArrays::Whitted, true, limits));
+  EXPECT_TRUE(chooseTexelReads(SceneReads::Auto, SceneArrays::Path, true, limits));
+  EXPECT_FALSE(chooseTexelReads(SceneReads::Auto, SceneArrays::Path, false, limits));
+  EXPECT_FALSE(chooseTexelReads(SceneReads::Storage, SceneArrays::Path, true, limits));
+  limits.maxPerStageDescriptorStorageImages = 7;
+  EXPECT_TRUE(chooseTexelReads(SceneReads::Auto, SceneArrays::Whitted, true, limits));
+  EXPECT_FALSE(chooseTexelReads(SceneReads::Auto, SceneArrays::Path, true, limits));
+  limits.maxPerStageDescriptorStorageImages = 4;
+  EXPECT_FALSE(chooseTexelReads(SceneReads::Auto, SceneArrays::Whitted, true, limits));
+  EXPECT_TRUE(chooseTexelReads(SceneReads::Texel, SceneArrays::Whitted, true, limits));
+  try {
+    chooseTexelReads(SceneReads::Texel, SceneArrays::Whitted, false, limits);
+    ADD_FAILURE() << "--reads texel took a scene beyond the texel limit";
+  } catch (const DeviceError& e) {
+    EXPECT_NE(std::string(e.what()).find("limit 1000 texels"), std::string::npos) << e.what();
+  }
 }
