@@ -124,7 +124,8 @@ TEST(ShaderVariant, AutoTakesTheSpecialisedVariantOnceCompiledOrWhenItPays) {
 
 // The general variant is one compiled shader for every scene: the driver's cache gains no
 // entry for a second scene that differs in everything the parameter buffers carry (camera,
-// size, crop, light counts and samples, depth, integrator settings). It fails where the
+// size, crop, light counts and samples, depth, integrator settings), nor for one whose arrays
+// are larger. It fails where the
 // shaders read those from uniform blocks, some of whose values lavapipe 22.3 inlines, compiling
 // the shader again for each new set (shaders/params.glsl).
 TEST(ShaderVariant, TheGeneralVariantIsCompiledOnceForEveryScene) {
@@ -176,7 +177,22 @@ TEST(ShaderVariant, TheGeneralVariantIsCompiledOnceForEveryScene) {
          "size 40 30\nmaxdepth 3\ncamera 0.5 2 2 0 0.2 0 0 1 0 70\nspecular 0.3 0.3 0.3\n"
          "point 1 2 3 1 1 1\ndirectional 0 1 1 0.5 0.5 0.5\npoint -1 2 3 0.2 0.2 0.2\n" + box,
          "--crop 2,2,30,20");
-  EXPECT_EQ(cacheEntries(), afterWhitted) << "the general Whitted variant was compiled again for another scene";
+  // Arrays of other sizes (a mesh of 5,000 triangles: its arrays span several of the 64 KiB
+  // blocks they are padded to, where the box's take one): lavapipe keys its code on whether
+  // a texel buffer's size is a power of two, which the padding never makes it.
+  std::string grid = "size 32 24\ncamera 0 3 3 0 0 0 0 1 0 50\npoint 1 2 3 1 1 1\n";
+  const int n = 51;
+  for (int z = 0; z < n; ++z)
+    for (int x = 0; x < n; ++x)
+      grid += "vertex " + std::to_string(x - n / 2) + " 0 " + std::to_string(z - n / 2) + "\n";
+  for (int z = 0; z + 1 < n; ++z)
+    for (int x = 0; x + 1 < n; ++x) {
+      const int a = z * n + x, b = a + 1, c = a + n, d = c + 1;
+      grid += "tri " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(b) + "\ntri " +
+              std::to_string(b) + " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+    }
+  render("whitted-mesh.test", grid + "sphere 0 0.5 0 0.4\n", "");
+  EXPECT_EQ(cacheEntries(), afterWhitted) << "the general Whitted variant was compiled again for a larger scene";
 }
 
 }  // namespace
