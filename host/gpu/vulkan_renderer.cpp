@@ -140,7 +140,8 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
     spec[gpu::kSpecCutoff] = general || w.cutoff;
     return spec;
   };
-  // Texel reads where every scene buffer fits the device's texel-count limit.
+  // Texel reads where every scene buffer fits the device's texel-count limit and the device
+  // allows the shader that many storage texel buffers.
   w.texelReads = chooseTexelReads(options.reads, SceneArrays::Whitted, texelsFit, context.properties().limits);
   w.spirv = w.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv;
   w.spirvBytes = w.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv);
