@@ -152,8 +152,9 @@ void printStats(const vkrt::RenderRequest& req, const vkrt::RenderReport& r) {
     std::fprintf(stderr, "    pipeline  %9.1f ms  (%s reads)\n", v.pipelineSeconds * ms,
                  v.texelReads ? "texel-buffer" : "storage-buffer");
     std::fprintf(stderr, "    first dispatch (with JIT) %9.1f ms\n", v.firstDispatchSeconds * ms);
-    std::fprintf(stderr, "    shader: the %s variant (about %.3g M rays)\n",
-                 v.general ? "general" : "specialised", v.estimatedRays / 1e6);
+    std::fprintf(stderr, "    shader: the %s variant (about %.3g M rays; %s)\n",
+                 v.general ? "general" : "specialised", v.estimatedRays / 1e6,
+                 v.testedAll ? "each ray tests every primitive" : "rays walk the BVH");
     std::fprintf(stderr, "    left out: %s\n", v.leftOut.empty() ? "nothing" : v.leftOut.c_str());
     std::fprintf(stderr, "    dispatch  %9.1f ms  (%s, %s, %s)\n", v.dispatchSeconds * ms,
                  vkrt::counted(v.bands, "band", "bands").c_str(),

@@ -35,7 +35,6 @@ layout(constant_id = kPathSpecRussianRoulette) const uint kSpecRussianRoulette =
 layout(constant_id = kPathSpecStratified) const uint kSpecStratified = kPathSpecFromParams;
 layout(constant_id = kPathSpecJitter) const uint kSpecJitter = kPathSpecFromParams;
 layout(constant_id = kPathSpecHasEmitters) const bool kHasEmitters = true;
-layout(constant_id = kPathSpecTestAll) const bool kTestAll = false;
 layout(constant_id = kPathSpecSampler) const uint kSpecSampler = kPathSpecFromParams;
 
 // rgb: the sum of the pixel's finished samples; w: 1 once all are done, 0 while suspended.
@@ -470,58 +469,11 @@ void lightStep(inout uint step) {
     finishSample();
 }
 
-// The nearest hit within (tMin, tMax) among all primitives (bestT, hitPrim, bestB1, bestB2),
-// or with `shadow` whether any blocks the ray. The loop index is the same in every lane.
-bool testAll(vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, bool shadow) {
-  float nearest = tMax;
-  uint prim = kNoHit;
-  vec2 bary = vec2(0.0);
-  if (kHasTriangles) {
-    for (uint i = 0u; i < path.triangleCount; ++i) {
-      vec2 b;
-      float t = hitTriangleWhole(i, origin, dir, sh, tMin, nearest, b);
-      bool hit = t > 0.0;
-      nearest = hit ? t : nearest;
-      prim = hit ? i : prim;
-      bary = hit ? b : bary;
-    }
-  }
-  if (kHasSpheres) {
-    for (uint i = 0u; i < path.sphereCount; ++i) {
-      float t = hitSphere(i, origin, dir, tMin, nearest);
-      bool hit = t > 0.0;
-      nearest = hit ? t : nearest;
-      prim = hit ? primRef(kPrimSphere, i) : prim;
-      bary = hit ? vec2(0.0) : bary;
-    }
-  }
-  if (shadow || prim == kNoHit) return prim != kNoHit;
-  bestT = nearest;
-  hitPrim = prim;
-  bestB1 = bary.x;
-  bestB2 = bary.y;
-  return false;
-}
-
 // The traversal of the current ray (kPhaseTrace: nearest hit) or shadow ray (kPhaseShadow:
-// any hit), as far as the step budget goes (traverseBvh), or with kTestAll every primitive of
-// the scene (testAll), the whole ray in one go. Then what follows.
+// any hit), as far as the step budget goes (traceRay). Then what follows.
 void traversalStep(inout uint step) {
   TracedRay r = tracedRay();
-  bool blocked;
-  if (kTestAll) {
-    // Every primitive, as one step per kMaxLeafPrims of them; a ray is never left half-tested,
-    // so it waits for the next dispatch unless the steps left suffice or the dispatch just began.
-    uint cost = max(1u, (path.triangleCount + path.sphereCount + kMaxLeafPrims - 1u) / kMaxLeafPrims);
-    if (step > 0u && step + cost > params.stepBudget) return;
-    step += cost - 1u;
-    sp = 0u;
-    Shear sh;
-    if (kHasTriangles) sh = shearFor(r.dir);
-    blocked = testAll(r.origin, r.dir, sh, r.tMin, r.tMax, r.shadow);
-  } else {
-    blocked = traverseBvh(r, step);
-  }
+  bool blocked = traceRay(r, step);
   if (sp > 0u) return;   // out of steps: the next dispatch goes on from here
   ++step;                // what follows the traversal is a step of its own
   if (r.shadow) {

@@ -132,11 +132,11 @@ void addLightContribution() {
 }
 
 // The traversal of the current ray (kPhaseTrace: nearest hit) or of a shadow ray
-// (kPhaseShadow: any hit), as far as the step budget goes (traverseBvh); one function for both
+// (kPhaseShadow: any hit), as far as the step budget goes (traceRay); one function for both
 // kinds, so that lanes of a SIMD vector in different phases run it once. Then what follows.
 void traversalStep(inout uint step) {
   TracedRay r = tracedRay();
-  bool blocked = traverseBvh(r, step);
+  bool blocked = traceRay(r, step);
   if (sp > 0u) return;   // out of steps: the next dispatch goes on from here
   ++step;                // what follows the traversal is a step of its own
   if (r.shadow) {

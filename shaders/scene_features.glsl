@@ -7,3 +7,4 @@ layout(constant_id = kSpecHasSmoothNormals) const bool kHasSmoothNormals = true;
 layout(constant_id = kSpecHasPointLights) const bool kHasPointLights = true;
 layout(constant_id = kSpecHasDirectionalLights) const bool kHasDirectionalLights = true;
 layout(constant_id = kSpecHasAttenuation) const bool kHasAttenuation = true;
+layout(constant_id = kSpecTestAll) const bool kTestAll = false;

@@ -1,6 +1,7 @@
 // traverse.glsl: the skeleton both compute shaders share (raytrace.comp, pathtrace.comp): the
 // current ray and its nearest hit, the shadow ray of a light, the traversal stack, one BVH
-// descent as a bounded number of steps, and the save and load of all that (GpuTraceState)
+// descent as a bounded number of steps or the test of every primitive of a small scene
+// (traceRay), and the save and load of all that (GpuTraceState)
 // when an invocation runs out of steps. What a shader does with a hit, a miss or a shadow
 // ray's answer stays in the shader.
 // Include after intersect.glsl, params.glsl (`params`, GpuRenderParams) and the buffer
@@ -183,4 +184,53 @@ void loadTrace(uint slot) {
     stack[i] = states[slot].trace.stack[i];
     stackT[i] = states[slot].trace.stackT[i];
   }
+}
+
+// The nearest hit within (tMin, tMax) among all primitives (bestT, hitPrim, bestB1, bestB2),
+// or with `shadow` whether any blocks the ray. The loop index is the same in every lane.
+bool testAll(vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, bool shadow) {
+  float nearest = tMax;
+  uint prim = kNoHit;
+  vec2 bary = vec2(0.0);
+  if (kHasTriangles) {
+    for (uint i = 0u; i < params.triangleCount; ++i) {
+      vec2 b;
+      float t = hitTriangleWhole(i, origin, dir, sh, tMin, nearest, b);
+      bool hit = t > 0.0;
+      nearest = hit ? t : nearest;
+      prim = hit ? i : prim;
+      bary = hit ? b : bary;
+    }
+  }
+  if (kHasSpheres) {
+    for (uint i = 0u; i < params.sphereCount; ++i) {
+      float t = hitSphere(i, origin, dir, tMin, nearest);
+      bool hit = t > 0.0;
+      nearest = hit ? t : nearest;
+      prim = hit ? primRef(kPrimSphere, i) : prim;
+      bary = hit ? vec2(0.0) : bary;
+    }
+  }
+  if (shadow || prim == kNoHit) return prim != kNoHit;
+  bestT = nearest;
+  hitPrim = prim;
+  bestB1 = bary.x;
+  bestB2 = bary.y;
+  return false;
+}
+
+// The ray `r` traced as far as the step budget goes: with kTestAll against every primitive of
+// the scene (testAll), the whole ray in one go, else the walk of the BVH (traverseBvh). The
+// result and the suspension (sp > 0) as traverseBvh's.
+bool traceRay(TracedRay r, inout uint step) {
+  if (!kTestAll) return traverseBvh(r, step);
+  // Every primitive, as one step per kMaxLeafPrims of them; a ray is never left half-tested,
+  // so it waits for the next dispatch unless the steps left suffice or the dispatch just began.
+  uint cost = max(1u, (params.triangleCount + params.sphereCount + kMaxLeafPrims - 1u) / kMaxLeafPrims);
+  if (step > 0u && step + cost > params.stepBudget) return false;
+  step += cost - 1u;
+  sp = 0u;
+  Shear sh;
+  if (kHasTriangles) sh = shearFor(r.dir);
+  return testAll(r.origin, r.dir, sh, r.tMin, r.tMax, r.shadow);
 }

@@ -49,7 +49,15 @@ gpu::GpuRenderParams renderParams(const GpuScene& scene, const BandLayout& layou
   params.originY = static_cast<std::uint32_t>(layout.region.y0);
   params.fullWidth = scene.width;
   params.fullHeight = scene.height;
+  params.triangleCount = static_cast<std::uint32_t>(scene.triangles.size());
+  params.sphereCount = static_cast<std::uint32_t>(scene.spheres.size());
   return params;
+}
+
+bool testsEveryPrimitive(const GpuScene& scene, bool allowed, bool eachPrimitiveOnce) {
+  const std::size_t primitives = primitiveCount(scene);
+  return allowed && eachPrimitiveOnce && primitives == scene.triangles.size() + scene.spheres.size() &&
+         scene.triangles.size() + 2 * scene.spheres.size() <= gpu::kTestAllMaxPrims;
 }
 
 void checkShaderLimits(const GpuScene& scene) {

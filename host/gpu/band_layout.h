@@ -42,6 +42,13 @@ BandLayout bandLayout(const PixelRect& region, std::size_t stateBytes, std::size
 // budget (BandBuffers sets it; left 0).
 gpu::GpuRenderParams renderParams(const GpuScene& scene, const BandLayout& layout, std::uint32_t maxDepth);
 
+// Whether every ray of a render tests each primitive of `scene` instead of walking its BVH
+// (kSpecTestAll, both shaders): where `allowed` (the options' testAll), the BVH holds every
+// primitive exactly once (`eachPrimitiveOnce`), each is of a kind the shaders' loop tests
+// (triangles and spheres), and there are at most kTestAllMaxPrims of them, a sphere counting
+// as two.
+bool testsEveryPrimitive(const GpuScene& scene, bool allowed, bool eachPrimitiveOnce);
+
 // Throws DeviceError for a scene beyond what the shaders take (more primitives than a
 // traversal-stack entry can name), InternalError for a BVH deeper than their stack.
 void checkShaderLimits(const GpuScene& scene);

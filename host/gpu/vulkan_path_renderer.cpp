@@ -38,7 +38,7 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPat
   // both sides of an `if`), a tenth of a direct-lighting preview's instructions. A machine
   // whose renders use both samplers compiles a general variant for each.
   spec[gpu::kPathSpecSampler] = path.strataSide > 0 ? 1u : 0u;
-  spec[gpu::kPathSpecTestAll] = testAll;
+  spec[gpu::kSpecTestAll] = testAll;
   if (!specialize) return spec;
   bool point = false, directional = false, attenuation = false, ggx = false;
   for (const gpu::GpuLight& l : scene.lights) {
@@ -63,11 +63,20 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPat
   spec[gpu::kPathSpecRussianRoulette] = scene.path.russianRoulette;
   spec[gpu::kPathSpecStratified] = scene.path.lightStrata > 0 ? 1u : 0u;
   spec[gpu::kPathSpecJitter] = path.jitter;
-  const char* names[gpu::kPathSpecHasGgx + 1] = {"triangles",   "spheres",            "smooth normals", "point lights",
-                                            "directional lights", "attenuation", "quad lights",    "ggx"};
-  for (std::uint32_t i = 0; i <= gpu::kPathSpecHasGgx; ++i)
-    if (!spec[i]) leftOut += (leftOut.empty() ? "" : ", ") + std::string(names[i]);
-  if (!spec[gpu::kPathSpecHasEmitters]) leftOut += (leftOut.empty() ? "" : ", ") + std::string("emissive surfaces");
+  const struct {
+    std::uint32_t id;
+    const char* name;
+  } features[] = {{gpu::kSpecHasTriangles, "triangles"},
+                  {gpu::kSpecHasSpheres, "spheres"},
+                  {gpu::kSpecHasSmoothNormals, "smooth normals"},
+                  {gpu::kSpecHasPointLights, "point lights"},
+                  {gpu::kSpecHasDirectionalLights, "directional lights"},
+                  {gpu::kSpecHasAttenuation, "attenuation"},
+                  {gpu::kPathSpecHasQuadLights, "quad lights"},
+                  {gpu::kPathSpecHasGgx, "ggx"},
+                  {gpu::kPathSpecHasEmitters, "emissive surfaces"}};
+  for (const auto& f : features)
+    if (!spec[f.id]) leftOut += (leftOut.empty() ? "" : ", ") + std::string(f.name);
   return spec;
 }
 
@@ -127,15 +136,7 @@ PathShader pathShader(const Context& context, const GpuScene& scene, const Vulka
   path.sampleCount = samples;
   path.jitter = renderSpp == 1 ? 0u : 1u;
   path.strataSide = options.stratified ? gpu::rngStrataSide(renderSpp) : 0u;
-  path.triangleCount = static_cast<std::uint32_t>(scene.triangles.size());
-  path.sphereCount = static_cast<std::uint32_t>(scene.spheres.size());
-
-  // Every primitive of a small scene tested by every ray, when the BVH holds each exactly once
-  // and each is of a kind that the shader's loop tests (triangles and spheres): the BVH
-  // otherwise, for a scene with a shape of another kind.
-  const std::size_t primitives = primitiveCount(scene);
-  p.testAll = options.testAll && primitives == path.triangleCount + path.sphereCount &&
-              primitives <= gpu::kTestAllMaxPrims && eachPrimitiveOnce;
+  p.testAll = testsEveryPrimitive(scene, options.testAll, eachPrimitiveOnce);
   p.texelReads = chooseTexelReads(options.reads, SceneArrays::Path, texelsFit, context.properties().limits);
   // The rays, about (what ShaderVariant::Auto goes by): per sample a camera ray; direct: a
   // shadow ray per light sample of each quad light; pathtracer: per vertex (4 where only

@@ -37,8 +37,8 @@ struct VulkanPathOptions {
   std::uint32_t pixelsPerInvocation = 0;
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer
   ShaderVariant variant = ShaderVariant::Specialized;   // the shader's: specialised to the scene, general, or Auto
-  // Scenes of at most kTestAllMaxPrims primitives: every ray tests each of them instead of
-  // walking the BVH (kPathSpecTestAll); false: always the BVH. The same image either way.
+  // Small scenes (testsEveryPrimitive): every ray tests each primitive instead of walking the
+  // BVH (kSpecTestAll); false: always the BVH. The same image either way.
   bool testAll = true;
   std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixel samples done, total)
   std::function<bool()> stop;   // polled before each dispatch: true stops early (image incomplete)

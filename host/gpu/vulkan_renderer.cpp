@@ -103,6 +103,7 @@ BandLayout whittedLayout(const Context& context, const GpuScene& scene, const Vu
 struct WhittedShader {
   bool cutoff = false;     // the exactness cut-off cuts (compiled in, or told so at run time)
   bool specular = true;    // mirror rays are traced (the features' specular)
+  bool testAll = false;    // rays test every primitive (testsEveryPrimitive), specialised or general
   bool texelReads = false, general = false;
   const std::uint32_t* spirv = nullptr;
   std::size_t spirvBytes = 0;
@@ -112,10 +113,13 @@ struct WhittedShader {
   std::string leftOut;
 };
 
-// `texelsFit`: SceneUpload::texelsFit, or texelsFitBeforeBvh for a pipeline made ahead.
+// `texelsFit`: SceneUpload::texelsFit, or texelsFitBeforeBvh for a pipeline made ahead;
+// `eachPrimitiveOnce`: the BVH holds every primitive exactly once (before it is built, as
+// prepareVulkanPipeline's caller says).
 WhittedShader whittedShader(const Context& context, const GpuScene& scene, const VulkanOptions& options,
-                            const BandLayout& layout, bool texelsFit) {
+                            const BandLayout& layout, bool texelsFit, bool eachPrimitiveOnce) {
   WhittedShader w;
+  w.testAll = testsEveryPrimitive(scene, options.testAll, eachPrimitiveOnce);
   const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const Features used = sceneFeatures(scene, true);
   // The exactness cut-off: forced, or where it pays. The general variant has it compiled in
@@ -138,6 +142,7 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
     spec[gpu::kSpecHasAttenuation] = f.attenuation;
     spec[gpu::kSpecHasSpecular] = f.specular;
     spec[gpu::kSpecCutoff] = general || w.cutoff;
+    spec[gpu::kSpecTestAll] = w.testAll;   // in the general variant too: a second general variant
     return spec;
   };
   // Texel reads where every scene buffer fits the device's texel-count limit and the device
@@ -159,10 +164,11 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
 
 }  // namespace
 
-void prepareVulkanPipeline(const Context& context, const GpuScene& scene, const VulkanOptions& options) {
+void prepareVulkanPipeline(const Context& context, const GpuScene& scene, const VulkanOptions& options,
+                           bool eachPrimitiveOnce) {
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const WhittedShader w = whittedShader(context, scene, options, whittedLayout(context, scene, options),
-                                        texelsFitBeforeBvh(scene, SceneArrays::Whitted, maxTexels));
+                                        texelsFitBeforeBvh(scene, SceneArrays::Whitted, maxTexels), eachPrimitiveOnce);
   ComputePipeline::prepare(context, w.spirv, w.spirvBytes, ShaderBindings(SceneArrays::Whitted, w.texelReads).types,
                            w.spec, sizeof(gpu::GpuPushConstants));
 }
@@ -177,7 +183,9 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   auto t0 = std::chrono::steady_clock::now();
   const SceneUpload upload(context, scene, SceneArrays::Whitted);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
-  const WhittedShader shader = whittedShader(context, scene, options, layout, upload.texelsFit(maxTexels));
+  const WhittedShader shader = whittedShader(context, scene, options, layout, upload.texelsFit(maxTexels),
+                                             scene.bvh.primRefs.size() == primitiveCount(scene));
+  t.testedAll = shader.testAll;
   t.texelReads = shader.texelReads;
   t.general = shader.general;
   t.estimatedRays = shader.estimatedRays;

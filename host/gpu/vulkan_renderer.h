@@ -31,6 +31,9 @@ struct VulkanOptions {
   // can stop a path at least two bounces before maxdepth (its test costs 10-20% of trace time
   // on lavapipe, more than it saves on scenes with bright lights and shallow mirrors).
   Cutoff cutoff = Cutoff::Auto;
+  // Small scenes (testsEveryPrimitive): every ray tests each primitive instead of walking the
+  // BVH (kSpecTestAll); false: always the BVH. The same image either way.
+  bool testAll = true;
   std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixels done, pixels total)
   std::function<bool()> stop;   // polled before each dispatch: true stops early (image incomplete)
   // Only these pixels of the scene's image (inside it), as an image of the crop's size; the
@@ -57,9 +60,12 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
 
 // Makes, in the context's PipelineCache, the pipeline that renderVulkan(context, scene,
 // options) will take, from `scene` before its BVH is built (flatten's arraysMade): lavapipe
-// creates a pipeline in 20-90 ms on one core, which then overlaps the BVH build. Where the
-// built BVH decides otherwise (a scene too large for texel reads), the render makes its own.
-// Throws as renderVulkan.
-void prepareVulkanPipeline(const Context& context, const GpuScene& scene, const VulkanOptions& options);
+// creates a pipeline in 20-90 ms on one core, which then overlaps the BVH build.
+// `eachPrimitiveOnce`: whether the BVH will hold every primitive exactly once (the caller asks
+// shapes::anyNeverHit of scenes small enough to test every primitive). Where the built BVH
+// decides otherwise (a scene too large for texel reads), the render makes its own. Throws as
+// renderVulkan.
+void prepareVulkanPipeline(const Context& context, const GpuScene& scene, const VulkanOptions& options,
+                           bool eachPrimitiveOnce);
 
 }  // namespace vkrt

@@ -25,7 +25,7 @@ struct VulkanTimings {
   std::uint32_t bands = 0, dispatches = 0;
   std::uint64_t suspensions = 0;   // invocations (Whitted) or pixels (path tracing) that ran out of steps, over the dispatches
   bool texelReads = false;         // which shader variant ran
-  bool testedAll = false;          // the path shader tested every primitive (no BVH walk)
+  bool testedAll = false;          // the shader tested every primitive (no BVH walk)
   std::string leftOut;             // the features compiled out, e.g. "spheres, specular (maxdepth 0)"
   bool general = false;            // the general variant ran (Variant)
   double estimatedRays = 0;        // what ShaderVariant::Auto went by

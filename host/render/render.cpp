@@ -181,11 +181,12 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
     const auto start = std::chrono::steady_clock::now();
     const SampleBatch first = firstBatch(plan.progressive);
     try {
+      // (whether every primitive is in the BVH matters only to a scene small enough to test all)
+      const bool eachPrimitiveOnce = primitiveCount(arrays) > gpu::kTestAllMaxPrims || !shapes::anyNeverHit(scene);
       if (whitted)
-        prepareVulkanPipeline(context, arrays, whittedOptions(first, {}));
-      else   // (whether every primitive is in the BVH matters only to a scene small enough to test all)
-        prepareVulkanPathPipeline(context, arrays, pathOptions(first, {}),
-                                  primitiveCount(arrays) > gpu::kTestAllMaxPrims || !shapes::anyNeverHit(scene));
+        prepareVulkanPipeline(context, arrays, whittedOptions(first, {}), eachPrimitiveOnce);
+      else
+        prepareVulkanPathPipeline(context, arrays, pathOptions(first, {}), eachPrimitiveOnce);
     } catch (const std::exception&) {
     }
     ahead = secondsSince(start);

@@ -28,9 +28,11 @@ GPU_CONST uint kWorkgroupSize = 8u;       // 8x8 pixels per workgroup (lavapipe:
 // by the next dispatch.
 GPU_CONST uint kDefaultStepBudget = 8192u;
 GPU_CONST uint kMaxLeafPrims = 4u;
-// pathtrace.comp's test of every primitive (kPathSpecTestAll) is for scenes of at most this
-// many primitives; it counts as one step per kMaxLeafPrims of them.
-GPU_CONST uint kTestAllMaxPrims = 32u;
+// The shaders' test of every primitive (kSpecTestAll) is for scenes of at most this many
+// primitives, a sphere counting as two triangles (its test reads 6 texels and transforms the
+// ray); it counts as one step per kMaxLeafPrims of them. The walk of the BVH wins from about
+// 45 (bench/README.md, "Path tracing on lavapipe" and "Every primitive tested").
+GPU_CONST uint kTestAllMaxPrims = 45u;
 // raytrace.comp: each workgroup takes a run of this many 8x8 tiles of a band, each lane a
 // pixel of each tile in turn, a new one when its pixel is done (VulkanOptions::pixelsPerInvocation;
 // on CPU devices: a GPU gets a pixel per invocation).

@@ -44,14 +44,9 @@ GPU_CONST uint kPathSpecRussianRoulette = kSpecSharedCount + 5u;
 GPU_CONST uint kPathSpecStratified = kSpecSharedCount + 6u;     // 1: lightStrata > 0 (`lightstratify on`)
 GPU_CONST uint kPathSpecJitter = kSpecSharedCount + 7u;
 GPU_CONST uint kPathSpecHasEmitters = kSpecSharedCount + 8u;    // some triangle or sphere emits (GpuEmitter): a feature, 0 or 1
-// 1: a ray is tested against every primitive, triangles then spheres (GpuPathParams
-// triangleCount and sphereCount), in a loop whose index is the same in every lane, instead of
-// a walk of the BVH; for scenes of at most kTestAllMaxPrims primitives, each of them in the BVH
-// and each a triangle or a sphere (a scene with a shape of another kind walks the BVH).
-GPU_CONST uint kPathSpecTestAll = kSpecSharedCount + 9u;
 // 1: stratified samples (GpuPathParams strataSide > 0), 0: independent ones.
-GPU_CONST uint kPathSpecSampler = kSpecSharedCount + 10u;
-GPU_CONST uint kPathSpecCount = kSpecSharedCount + 11u;
+GPU_CONST uint kPathSpecSampler = kSpecSharedCount + 9u;
+GPU_CONST uint kPathSpecCount = kSpecSharedCount + 10u;
 GPU_CONST uint kPathSpecFromParams = 0xFFFFFFFFu;
 
 // GpuPathParams.maxDepth of `maxdepth -1`: no limit, only Russian roulette ends a path...
@@ -82,8 +77,8 @@ struct GpuPathParams {
   uint jitter;              // 0: every sample through the pixel centre (a render of spp 1); 1: uniform in the pixel
   uint emitterCount;        // entries of the GpuEmitter table (0: emissive surfaces are found by hitting only)
   float emitterWeightScale; // 1 / the emitters' total weight (GpuEmitter)
-  uint triangleCount;       // the scene's triangles and spheres (read with kPathSpecTestAll)
-  uint sphereCount;
+  uint pad2;
+  uint pad3;
   uint strataSide;          // stratified samples (gpu_rng.h, rngStratify): side x side strata; 0: independent
   uint pad0;
   uint pad1;                // size 144
@@ -94,7 +89,7 @@ GPU_ASSERT_OFFSET(GpuPathParams, maxDepth, 80)
 GPU_ASSERT_OFFSET(GpuPathParams, seed, 100)
 GPU_ASSERT_OFFSET(GpuPathParams, jitter, 112)
 GPU_ASSERT_OFFSET(GpuPathParams, emitterWeightScale, 120)
-GPU_ASSERT_OFFSET(GpuPathParams, sphereCount, 128)
+GPU_ASSERT_OFFSET(GpuPathParams, strataSide, 132)
 
 struct GpuPathPush {
   uint bandY0;              // first image row of this band

@@ -33,7 +33,13 @@ GPU_CONST uint kSpecHasSmoothNormals = 2u;   // `trinormal`
 GPU_CONST uint kSpecHasPointLights = 3u;
 GPU_CONST uint kSpecHasDirectionalLights = 4u;
 GPU_CONST uint kSpecHasAttenuation = 5u;     // a point light whose attenuation is not 1 0 0
-GPU_CONST uint kSpecSharedCount = 6u;        // each shader's own ids follow (gpu_whitted.h, gpu_path.h)
+// 1: a ray is tested against every primitive, triangles then spheres (GpuRenderParams
+// triangleCount and sphereCount), in a loop whose index is the same in every lane, instead of
+// a walk of the BVH (traverse.glsl, traceRay); for scenes of at most kTestAllMaxPrims
+// primitives (a sphere counting as two), each of them in the BVH and each a triangle or a sphere (a scene with a shape
+// of another kind walks the BVH).
+GPU_CONST uint kSpecTestAll = 6u;
+GPU_CONST uint kSpecSharedCount = 7u;        // each shader's own ids follow (gpu_whitted.h, gpu_path.h)
 
 // Phases of a pixel's state machine.
 GPU_CONST uint kPhaseTrace = 0u;     // nearest hit of the current ray (camera or mirror)
@@ -72,12 +78,14 @@ struct GpuRenderParams {
   uint originY;
   uint fullWidth;
   uint fullHeight;
-  uint pad0, pad1;          // size 64 (std430)
+  uint triangleCount;       // the scene's triangles and spheres (read with kSpecTestAll)
+  uint sphereCount;         // size 64 (std430)
 };
 GPU_ASSERT_SIZE(GpuRenderParams, 64)
 GPU_ASSERT_OFFSET(GpuRenderParams, stepBudget, 16)
 GPU_ASSERT_OFFSET(GpuRenderParams, rootEntry, 36)
 GPU_ASSERT_OFFSET(GpuRenderParams, originX, 40)
+GPU_ASSERT_OFFSET(GpuRenderParams, sphereCount, 60)
 GPU_ASSERT_OFFSET(GpuRenderParams, fullHeight, 52)
 
 struct GpuCounters {

@@ -201,6 +201,40 @@ TEST(GpuLoopBudget, SuspendingInTheMiddleOfADescentChangesNoPixel) {
   }
 }
 
+// Small scenes (testsEveryPrimitive), each primitive in the BVH, test every primitive with
+// each ray instead of walking the BVH (kSpecTestAll, traverse.glsl's traceRay): the same bits
+// as the walk, specialised and general, and suspended after every few steps, where a ray
+// waits whole for the next dispatch.
+TEST(GpuLoopBudget, TestingEveryPrimitiveChangesNoBit) {
+  Context* context = gpuContextOrSkip();
+  if (!context) return;
+  for (const char* name : {"deep_mirrors", "shadows", "spheres", "trinormal", "attenuation", "transformed_triangles"}) {
+    SCOPED_TRACE(name);
+    GpuScene flat = flatten(parseSceneFile(sourcePath(std::string("scenes/") + name + ".test")));
+    VulkanOptions walk;
+    walk.testAll = false;
+    VulkanTimings walked;
+    RadianceImage expected = renderVulkan(*context, flat, walk, nullptr, &walked);
+    EXPECT_FALSE(walked.testedAll);
+    for (std::uint32_t budget : {0u, 2u, 5u}) {
+      for (ShaderVariant variant : {ShaderVariant::Specialized, ShaderVariant::General}) {
+        VulkanOptions all;
+        all.stepBudget = budget;
+        all.variant = variant;
+        VulkanTimings tested;
+        RadianceImage image = renderVulkan(*context, flat, all, nullptr, &tested);
+        EXPECT_TRUE(tested.testedAll);
+        EXPECT_EQ(tested.general, variant == ShaderVariant::General);
+        EXPECT_TRUE(sameBits(image, expected)) << "budget " << budget << ", general " << tested.general;
+        if (budget > 0u) {
+          EXPECT_GT(tested.suspensions, 100u) << "budget " << budget;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(context->validationMessages(), 0);
+}
+
 // The Whitted shader's invocations share out a band's pixels, each taking its next pixel when
 // its pixel is done (raytrace.comp). However many pixels an invocation takes, however small
 // the step budget (so that an invocation suspends in the middle of a pixel, then resumes and

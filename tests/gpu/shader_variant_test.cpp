@@ -125,7 +125,8 @@ TEST(ShaderVariant, AutoTakesTheSpecialisedVariantOnceCompiledOrWhenItPays) {
 // The general variant is one compiled shader for every scene: the driver's cache gains no
 // entry for a second scene that differs in everything the parameter buffers carry (camera,
 // size, crop, light counts and samples, depth, integrator settings), nor for one whose arrays
-// are larger. It fails where the
+// are of another size (of those whose rays walk the BVH; small scenes, whose rays test every
+// primitive, have a general variant of their own). It fails where the
 // shaders read those from uniform blocks, some of whose values lavapipe 22.3 inlines, compiling
 // the shader again for each new set (shaders/params.glsl).
 TEST(ShaderVariant, TheGeneralVariantIsCompiledOnceForEveryScene) {
@@ -177,22 +178,28 @@ TEST(ShaderVariant, TheGeneralVariantIsCompiledOnceForEveryScene) {
          "size 40 30\nmaxdepth 3\ncamera 0.5 2 2 0 0.2 0 0 1 0 70\nspecular 0.3 0.3 0.3\n"
          "point 1 2 3 1 1 1\ndirectional 0 1 1 0.5 0.5 0.5\npoint -1 2 3 0.2 0.2 0.2\n" + box,
          "--crop 2,2,30,20");
-  // Arrays of other sizes (a mesh of 5,000 triangles: its arrays span several of the 64 KiB
-  // blocks they are padded to, where the box's take one): lavapipe keys its code on whether
-  // a texel buffer's size is a power of two, which the padding never makes it.
-  std::string grid = "size 32 24\ncamera 0 3 3 0 0 0 0 1 0 50\npoint 1 2 3 1 1 1\n";
-  const int n = 51;
-  for (int z = 0; z < n; ++z)
-    for (int x = 0; x < n; ++x)
-      grid += "vertex " + std::to_string(x - n / 2) + " 0 " + std::to_string(z - n / 2) + "\n";
-  for (int z = 0; z + 1 < n; ++z)
-    for (int x = 0; x + 1 < n; ++x) {
-      const int a = z * n + x, b = a + 1, c = a + n, d = c + 1;
-      grid += "tri " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(b) + "\ntri " +
-              std::to_string(b) + " " + std::to_string(c) + " " + std::to_string(d) + "\n";
-    }
-  render("whitted-mesh.test", grid + "sphere 0 0.5 0 0.4\n", "");
-  EXPECT_EQ(cacheEntries(), afterWhitted) << "the general Whitted variant was compiled again for a larger scene";
+  // Scenes too large to test every primitive (meshes of (n - 1)^2 quads) take the general
+  // variant that walks the BVH: compiled once for arrays of every size. Lavapipe keys its code
+  // on whether a texel buffer's size is a power of two, which the padding of the arrays to a
+  // count of 64 KiB blocks never makes it: 2,048 triangles are 8,192 texels.
+  auto grid = [](int n) {
+    std::string text = "size 32 24\ncamera 0 3 3 0 0 0 0 1 0 50\npoint 1 2 3 1 1 1\n";
+    for (int z = 0; z < n; ++z)
+      for (int x = 0; x < n; ++x)
+        text += "vertex " + std::to_string(x - n / 2) + " 0 " + std::to_string(z - n / 2) + "\n";
+    for (int z = 0; z + 1 < n; ++z)
+      for (int x = 0; x + 1 < n; ++x) {
+        const int a = z * n + x, b = a + 1, c = a + n, d = c + 1;
+        text += "tri " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(b) + "\ntri " +
+                std::to_string(b) + " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+      }
+    return text + "sphere 0 0.5 0 0.4\n";
+  };
+  render("whitted-mesh-5000.test", grid(51), "");
+  const std::size_t afterWalk = cacheEntries();
+  EXPECT_GT(afterWalk, afterWhitted) << "the BVH-walking general variant left no entry of its own";
+  render("whitted-mesh-2048.test", grid(33), "");
+  EXPECT_EQ(cacheEntries(), afterWalk) << "the general Whitted variant was compiled again for a larger scene";
 }
 
 }  // namespace

@@ -57,7 +57,7 @@ void main() {
   GpuRenderParams p = params;
   put(p.width); put(p.height); put(p.maxDepth); put(p.lightCount); put(p.stepBudget); put(p.bandHeight);
   put(p.tilesX); put(p.tileOrderStride); put(p.primCount); put(p.rootEntry);
-  put(p.originX); put(p.originY); put(p.fullWidth); put(p.fullHeight); put(p.pad0); put(p.pad1);
+  put(p.originX); put(p.originY); put(p.fullWidth); put(p.fullHeight); put(p.triangleCount); put(p.sphereCount);
   GpuQuadLight q = quadLights[1];
   put(q.corner); put(q.edgeAB); put(q.edgeAC); put(q.normal); put(q.radiance);
   GpuPathParams pp = pathParams;
@@ -65,8 +65,8 @@ void main() {
   put(pp.integrator); put(pp.nextEvent); put(pp.sampling); put(pp.russianRoulette);
   put(pp.maxDepth); put(pp.lightSamples); put(pp.lightStrata); put(pp.quadLightCount);
   put(pp.lightCount); put(pp.seed); put(pp.firstSample); put(pp.sampleCount);
-  put(pp.jitter); put(pp.emitterCount); put(pp.emitterWeightScale); put(pp.triangleCount);
-  put(pp.sphereCount); put(pp.strataSide); put(pp.pad0); put(pp.pad1);
+  put(pp.jitter); put(pp.emitterCount); put(pp.emitterWeightScale); put(pp.pad2);
+  put(pp.pad3); put(pp.strataSide); put(pp.pad0); put(pp.pad1);
   GpuEmitter e = emitters[1];
   put(e.primRef); put(e.cdf);
   GpuWhittedState w = whittedStates[1];
