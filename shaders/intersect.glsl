@@ -8,8 +8,8 @@
 // The shapes' includes and the dispatches below are the shaders' one list of the shapes. A
 // new kind tests primKind first in each dispatch: the specialised shortcuts after that
 // (isSphere, and the !kHasSpheres and !kHasTriangles branches) know of triangles and spheres
-// only. The path shader's test-all loop tests those two kinds only, and the host leaves it off
-// for a scene with a shape of another kind (vulkan_path_renderer.cpp).
+// only. The test-all loop (traverse.glsl, testAll) tests those two kinds only, and the host
+// leaves it off for a scene with a shape of another kind (band_layout.cpp, testsEveryPrimitive).
 
 const float kInfinity = 3.402823466e38;
 const float kPi = 3.14159265358979;
