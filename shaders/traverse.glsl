@@ -221,7 +221,9 @@ bool testAll(vec3 origin, vec3 dir, Shear sh, float tMin, float tMax, bool shado
 
 // The ray `r` traced as far as the step budget goes: with kTestAll against every primitive of
 // the scene (testAll), the whole ray in one go, else the walk of the BVH (traverseBvh). The
-// result and the suspension (sp > 0) as traverseBvh's.
+// result and the suspension (sp > 0) as traverseBvh's: a tested ray that waits for the next
+// dispatch returns with sp as startTraversal left it, 1 (0 only in a scene without
+// primitives, whose ray then misses at once, as testing it would find).
 bool traceRay(TracedRay r, inout uint step) {
   if (!kTestAll) return traverseBvh(r, step);
   // Every primitive, as one step per kMaxLeafPrims of them; a ray is never left half-tested,

@@ -77,11 +77,9 @@ struct GpuPathParams {
   uint jitter;              // 0: every sample through the pixel centre (a render of spp 1); 1: uniform in the pixel
   uint emitterCount;        // entries of the GpuEmitter table (0: emissive surfaces are found by hitting only)
   float emitterWeightScale; // 1 / the emitters' total weight (GpuEmitter)
-  uint pad2;
-  uint pad3;
   uint strataSide;          // stratified samples (gpu_rng.h, rngStratify): side x side strata; 0: independent
-  uint pad0;
-  uint pad1;                // size 144
+  uint pad0, pad1, pad2;
+  uint pad3;                // size 144
 };
 GPU_ASSERT_SIZE(GpuPathParams, 144)
 GPU_ASSERT_OFFSET(GpuPathParams, integrator, 64)
@@ -89,7 +87,7 @@ GPU_ASSERT_OFFSET(GpuPathParams, maxDepth, 80)
 GPU_ASSERT_OFFSET(GpuPathParams, seed, 100)
 GPU_ASSERT_OFFSET(GpuPathParams, jitter, 112)
 GPU_ASSERT_OFFSET(GpuPathParams, emitterWeightScale, 120)
-GPU_ASSERT_OFFSET(GpuPathParams, strataSide, 132)
+GPU_ASSERT_OFFSET(GpuPathParams, strataSide, 124)
 
 struct GpuPathPush {
   uint bandY0;              // first image row of this band

@@ -36,8 +36,8 @@ GPU_CONST uint kSpecHasAttenuation = 5u;     // a point light whose attenuation 
 // 1: a ray is tested against every primitive, triangles then spheres (GpuRenderParams
 // triangleCount and sphereCount), in a loop whose index is the same in every lane, instead of
 // a walk of the BVH (traverse.glsl, traceRay); for scenes of at most kTestAllMaxPrims
-// primitives (a sphere counting as two), each of them in the BVH and each a triangle or a sphere (a scene with a shape
-// of another kind walks the BVH).
+// primitives (a sphere counting as two), each of them in the BVH and each a triangle or a
+// sphere (a scene with a shape of another kind walks the BVH).
 GPU_CONST uint kSpecTestAll = 6u;
 GPU_CONST uint kSpecSharedCount = 7u;        // each shader's own ids follow (gpu_whitted.h, gpu_path.h)
 

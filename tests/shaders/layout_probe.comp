@@ -65,8 +65,8 @@ void main() {
   put(pp.integrator); put(pp.nextEvent); put(pp.sampling); put(pp.russianRoulette);
   put(pp.maxDepth); put(pp.lightSamples); put(pp.lightStrata); put(pp.quadLightCount);
   put(pp.lightCount); put(pp.seed); put(pp.firstSample); put(pp.sampleCount);
-  put(pp.jitter); put(pp.emitterCount); put(pp.emitterWeightScale); put(pp.pad2);
-  put(pp.pad3); put(pp.strataSide); put(pp.pad0); put(pp.pad1);
+  put(pp.jitter); put(pp.emitterCount); put(pp.emitterWeightScale); put(pp.strataSide);
+  put(pp.pad0); put(pp.pad1); put(pp.pad2); put(pp.pad3);
   GpuEmitter e = emitters[1];
   put(e.primRef); put(e.cdf);
   GpuWhittedState w = whittedStates[1];
