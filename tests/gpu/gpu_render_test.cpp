@@ -221,6 +221,9 @@ TEST(GpuLoopBudget, TestingEveryPrimitiveChangesNoBit) {
         VulkanOptions all;
         all.stepBudget = budget;
         all.variant = variant;
+        // Several pixels an invocation, as on a CPU device: a GPU's one pixel (a few steps in
+        // these scenes) would not run out of even 5 steps, and nothing would be suspended.
+        all.pixelsPerInvocation = gpu::kDefaultPixelsPerInvocation;
         VulkanTimings tested;
         RadianceImage image = renderVulkan(*context, flat, all, nullptr, &tested);
         EXPECT_TRUE(tested.testedAll);

@@ -6,6 +6,8 @@
 #include "test_support.h"
 
 int main(int argc, char** argv) {
+  // A copy of this binary that runs vkrt to measure its peak memory (runVkrtMeasuringMemory).
+  if (int status = vkrt::test::measurePeakMemoryMain(argc, argv); status >= 0) return status;
   ::testing::InitGoogleTest(&argc, argv);
   auto dir = vkrt::test::cse167Dir();
   if (!dir)

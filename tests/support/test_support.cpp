@@ -216,12 +216,12 @@ double parallelMirrorsRadiance(const MirrorChannel& c, int maxDepth) {
   return c.emission * -std::expm1(segments * std::log1p(c.specular - 1.0)) / (1.0 - c.specular);
 }
 
-Spawned spawnVkrt(const std::vector<std::string>& args, const std::string& logPath,
-                  const std::vector<std::string>& env) {
+namespace {
+
+// Forks and execs `all` (argv) with stdout and stderr to `logPath` and `env` put.
+Spawned spawnArgv(std::vector<std::string> all, const std::string& logPath, const std::vector<std::string>& env) {
   Spawned s;
   s.logPath = logPath;
-  std::vector<std::string> all = {vkrtBinary()};
-  all.insert(all.end(), args.begin(), args.end());
   pid_t pid = ::fork();
   if (pid == 0) {
     int fd = ::open(logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -238,15 +238,58 @@ Spawned spawnVkrt(const std::vector<std::string>& args, const std::string& logPa
   return s;
 }
 
+constexpr const char* kMeasureFlag = "--measure-peak-memory";
+
+}  // namespace
+
+Spawned spawnVkrt(const std::vector<std::string>& args, const std::string& logPath,
+                  const std::vector<std::string>& env) {
+  std::vector<std::string> all = {vkrtBinary()};
+  all.insert(all.end(), args.begin(), args.end());
+  return spawnArgv(std::move(all), logPath, env);
+}
+
 Finished waitVkrt(const Spawned& process) {
   Finished f;
   int status = 0;
-  struct rusage usage {};
-  if (::wait4(process.pid, &status, 0, &usage) != process.pid) return f;
+  if (::waitpid(process.pid, &status, 0) != process.pid) return f;
   f.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  f.peakRssKb = usage.ru_maxrss;
   f.output = readFile(process.logPath);
   return f;
+}
+
+Finished runVkrtMeasuringMemory(const std::vector<std::string>& args, const std::string& logPath,
+                                const std::vector<std::string>& env) {
+  const std::string peakPath = logPath + ".peak";
+  std::remove(peakPath.c_str());
+  std::vector<std::string> all = {"/proc/self/exe", kMeasureFlag, peakPath, vkrtBinary()};
+  all.insert(all.end(), args.begin(), args.end());
+  Spawned helper = spawnArgv(std::move(all), logPath, env);
+  Finished f = waitVkrt(helper);
+  std::ifstream peak(peakPath);
+  if (!(peak >> f.peakRssKb)) {
+    ADD_FAILURE() << "vkrt's peak memory was not measured (" << peakPath << "); exit " << f.exitCode;
+    f.peakRssKb = -1;
+  }
+  std::remove(peakPath.c_str());
+  return f;
+}
+
+int measurePeakMemoryMain(int argc, char** argv) {
+  if (argc < 4 || std::strcmp(argv[1], kMeasureFlag) != 0) return -1;
+  pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execv(argv[3], argv + 3);
+    ::_exit(127);
+  }
+  int status = 0;
+  struct rusage usage {};
+  if (pid < 0 || ::wait4(pid, &status, 0, &usage) != pid) return 126;
+  if (std::FILE* f = std::fopen(argv[2], "w")) {
+    std::fprintf(f, "%ld\n", usage.ru_maxrss);
+    std::fclose(f);
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 Finished waitVkrtWithin(const Spawned& p, double seconds) {

@@ -155,10 +155,21 @@ Spawned spawnVkrt(const std::vector<std::string>& args, const std::string& logPa
                   const std::vector<std::string>& env = {});
 struct Finished {
   int exitCode = -1;         // 128 + signal when killed by one
-  long long peakRssKb = 0;   // the process's maximum resident set size
+  long long peakRssKb = 0;   // runVkrtMeasuringMemory: vkrt's peak resident set (KiB); -1 unknown
   std::string output;
 };
 Finished waitVkrt(const Spawned& process);
+// Runs vkrt to its end and measures its peak resident memory. The kernel counts into a
+// program's peak the resident size of the process that forked it (fork copies the parent's
+// page tables, exec keeps their high-water mark), and this test binary may hold a GPU
+// driver's 150 MB. So vkrt is started by a fresh, small copy of the test binary
+// (measurePeakMemoryMain), whose wait4 reads vkrt's own peak.
+Finished runVkrtMeasuringMemory(const std::vector<std::string>& args, const std::string& logPath,
+                                const std::vector<std::string>& env = {});
+// The test binary's entry for that copy (`--measure-peak-memory FILE PROGRAM ARGS...`):
+// runs PROGRAM, writes its peak resident KiB to FILE and returns its exit status; -1 when
+// argv is not that.
+int measurePeakMemoryMain(int argc, char** argv);
 // waitVkrt, but a process still running after `seconds` is killed (SIGKILL: exit 137), so
 // that a vkrt that does not stop fails the test instead of hanging it.
 Finished waitVkrtWithin(const Spawned& process, double seconds);
