@@ -347,6 +347,26 @@ bool sameBits(const RadianceImage& a, const RadianceImage& b) {
   return a.width == b.width && a.height == b.height && sameBits(a.rgb, b.rgb);
 }
 
+::testing::AssertionResult pathVariantsAgree(const Context& context, const RadianceImage& a, const RadianceImage& b) {
+  if (a.width != b.width || a.height != b.height || a.rgb.size() != b.rgb.size())
+    return ::testing::AssertionFailure() << "sizes differ";
+  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  if (cpuDevice)
+    return sameBits(a, b) ? ::testing::AssertionSuccess()
+                          : ::testing::AssertionFailure() << "not the same bits on a CPU device";
+  double worst = 0.0;
+  std::size_t differing = 0, worstAt = 0;
+  for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+    const double x = a.rgb[i], y = b.rgb[i];
+    if (x != y) ++differing;
+    const double d = std::abs(x - y) / std::max(1.0, std::abs(x));
+    if (!(d <= worst)) worst = d, worstAt = i;
+  }
+  if (worst <= 1e-5) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << differing << " values differ; the worst by " << worst << " at value "
+                                       << worstAt << " (" << a.rgb[worstAt] << " against " << b.rgb[worstAt] << ")";
+}
+
 Image gradient(int w, int h) {
   Image img(w, h);
   for (int y = 0; y < h; ++y)

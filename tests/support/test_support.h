@@ -80,6 +80,14 @@ void expectNear(const dvec3& a, const dvec3& b, double eps = 1e-12);
 bool sameBits(const std::vector<float>& a, const std::vector<float>& b);
 bool sameBits(const RadianceImage& a, const RadianceImage& b);
 
+// Whether two path-traced images of one scene by the general and the specialised shader
+// variant agree. Both compute the same arithmetic, but a GPU's compiler may fuse multiplies
+// and adds differently in the two (an H200's did, in path-traced scenes: up to 4e-6
+// relative; its Whitted images were the same bits). Bit for bit on a CPU device (lavapipe
+// fuses the same way in both), within 1e-5 of each value (relative; absolute below 1)
+// elsewhere.
+::testing::AssertionResult pathVariantsAgree(const Context& context, const RadianceImage& a, const RadianceImage& b);
+
 // Compares two images: passes when at most `maxPixelsOver` pixels differ by more than
 // `stepTolerance` 8-bit steps in some channel. On failure writes actual.png, expected.png and
 // an amplified diff.png in outputPath("failures/" + name) and names them in the message.
