@@ -14,6 +14,7 @@
 #include "gpu/band_layout.h"
 #include "gpu/compute_pipeline.h"
 #include "gpu/device_error.h"
+#include "gpu/scene_features.h"
 #include "gpu/scene_upload.h"
 #include "gpu/shader_variant.h"
 #include "pathtrace.comp.h"         // kPathtraceSpirv: the shader, compiled at build time
@@ -40,19 +41,9 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPat
   spec[gpu::kPathSpecSampler] = path.strataSide > 0 ? 1u : 0u;
   spec[gpu::kSpecTestAll] = testAll;
   if (!specialize) return spec;
-  bool point = false, directional = false, attenuation = false, ggx = false;
-  for (const gpu::GpuLight& l : scene.lights) {
-    bool isPoint = l.positionOrDirection.w == gpu::kPointLight;
-    (isPoint ? point : directional) = true;
-    if (isPoint && (l.attenuation.x != 1.0f || l.attenuation.y != 0.0f || l.attenuation.z != 0.0f)) attenuation = true;
-  }
+  bool ggx = false;
   for (const gpu::GpuMaterial& m : scene.materials) ggx = ggx || m.ambient.w == gpu::kBrdfGgx;
-  spec[gpu::kSpecHasTriangles] = !scene.triangles.empty();
-  spec[gpu::kSpecHasSpheres] = !scene.spheres.empty();
-  spec[gpu::kSpecHasSmoothNormals] = !scene.triangleNormals.empty();
-  spec[gpu::kSpecHasPointLights] = point;
-  spec[gpu::kSpecHasDirectionalLights] = directional;
-  spec[gpu::kSpecHasAttenuation] = attenuation;
+  setSharedFeatures(scene, spec);
   spec[gpu::kPathSpecHasQuadLights] = !scene.quadLights.empty();
   spec[gpu::kPathSpecHasGgx] = ggx;
   spec[gpu::kPathSpecHasEmitters] = !scene.emitters.empty();
@@ -63,20 +54,9 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPat
   spec[gpu::kPathSpecRussianRoulette] = scene.path.russianRoulette;
   spec[gpu::kPathSpecStratified] = scene.path.lightStrata > 0 ? 1u : 0u;
   spec[gpu::kPathSpecJitter] = path.jitter;
-  const struct {
-    std::uint32_t id;
-    const char* name;
-  } features[] = {{gpu::kSpecHasTriangles, "triangles"},
-                  {gpu::kSpecHasSpheres, "spheres"},
-                  {gpu::kSpecHasSmoothNormals, "smooth normals"},
-                  {gpu::kSpecHasPointLights, "point lights"},
-                  {gpu::kSpecHasDirectionalLights, "directional lights"},
-                  {gpu::kSpecHasAttenuation, "attenuation"},
-                  {gpu::kPathSpecHasQuadLights, "quad lights"},
-                  {gpu::kPathSpecHasGgx, "ggx"},
-                  {gpu::kPathSpecHasEmitters, "emissive surfaces"}};
-  for (const auto& f : features)
-    if (!spec[f.id]) leftOut += (leftOut.empty() ? "" : ", ") + std::string(f.name);
+  leftOut = leftOutNames(spec, {{gpu::kPathSpecHasQuadLights, "quad lights"},
+                                {gpu::kPathSpecHasGgx, "ggx"},
+                                {gpu::kPathSpecHasEmitters, "emissive surfaces"}});
   return spec;
 }
 

@@ -12,6 +12,7 @@
 #include "gpu/band_dispatch.h"
 #include "gpu/band_layout.h"
 #include "gpu/compute_pipeline.h"
+#include "gpu/scene_features.h"
 #include "gpu/scene_upload.h"
 #include "gpu/shader_variant.h"
 #include "timing.h"
@@ -21,39 +22,11 @@
 namespace vkrt {
 namespace {
 
-// Which features the scene uses; the shader is specialised to them (all on when not
-// specializing). Also says, for --stats, what was left out.
-struct Features {
-  bool triangles = true, spheres = true, smoothNormals = true, pointLights = true, directionalLights = true,
-       attenuation = true, specular = true;
-  std::string leftOut;
-};
-
-Features sceneFeatures(const GpuScene& scene, bool specialize) {
-  Features f;
-  if (!specialize) return f;
-  f.triangles = !scene.triangles.empty();
-  f.spheres = !scene.spheres.empty();
-  f.smoothNormals = !scene.triangleNormals.empty();
-  f.pointLights = f.directionalLights = f.attenuation = f.specular = false;
-  for (const gpu::GpuLight& l : scene.lights) {
-    bool point = l.positionOrDirection.w == gpu::kPointLight;
-    (point ? f.pointLights : f.directionalLights) = true;
-    if (point && (l.attenuation.x != 1.0f || l.attenuation.y != 0.0f || l.attenuation.z != 0.0f)) f.attenuation = true;
-  }
+// Whether some material of the scene has a specular colour: highlights and mirror rays.
+bool usesSpecular(const GpuScene& scene) {
   for (const gpu::GpuMaterial& m : scene.materials)
-    if (m.specular.x != 0.0f || m.specular.y != 0.0f || m.specular.z != 0.0f) f.specular = true;
-  auto note = [&f](bool used, const char* name) {
-    if (!used) f.leftOut += (f.leftOut.empty() ? "" : ", ") + std::string(name);
-  };
-  note(f.triangles, "triangles");
-  note(f.spheres, "spheres");
-  note(f.smoothNormals, "smooth normals");
-  note(f.pointLights, "point lights");
-  note(f.directionalLights, "directional lights");
-  note(f.attenuation, "attenuation");
-  note(f.specular, "specular (maxdepth 0)");
-  return f;
+    if (m.specular.x != 0.0f || m.specular.y != 0.0f || m.specular.z != 0.0f) return true;
+  return false;
 }
 
 // Whether the exactness cut-off can stop some path at least two bounces early: the first
@@ -121,26 +94,24 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
   WhittedShader w;
   w.testAll = testsEveryPrimitive(scene, options.testAll, eachPrimitiveOnce);
   const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  const Features used = sceneFeatures(scene, true);
+  const bool specular = usesSpecular(scene);
   // The exactness cut-off: forced, or where it pays. The general variant has it compiled in
   // and is told at run time whether to cut (push constants), so that it cuts exactly where
   // the specialised one does.
   w.cutoff = options.cutoff == Cutoff::On ||
-             (options.cutoff == Cutoff::Auto && used.specular && cutoffPays(scene.cutoff, scene.maxDepth));
+             (options.cutoff == Cutoff::Auto && specular && cutoffPays(scene.cutoff, scene.maxDepth));
   // The rays this render will trace, about: a camera ray a pixel, a shadow ray a light, and
   // again for each mirror bounce (what ShaderVariant::Auto goes by).
   w.estimatedRays = static_cast<double>(layout.width) * layout.height *
                     (1.0 + static_cast<double>(scene.lights.size())) *
-                    (1.0 + (used.specular ? std::min(scene.maxDepth, 4u) : 0u));
-  auto specConstants = [&](const Features& f, bool general) {
-    std::vector<std::uint32_t> spec(gpu::kSpecCount);   // bools as 0/1 (SPIR-V bool spec constants are 32 bits)
-    spec[gpu::kSpecHasTriangles] = f.triangles;
-    spec[gpu::kSpecHasSpheres] = f.spheres;
-    spec[gpu::kSpecHasSmoothNormals] = f.smoothNormals;
-    spec[gpu::kSpecHasPointLights] = f.pointLights;
-    spec[gpu::kSpecHasDirectionalLights] = f.directionalLights;
-    spec[gpu::kSpecHasAttenuation] = f.attenuation;
-    spec[gpu::kSpecHasSpecular] = f.specular;
+                    (1.0 + (specular ? std::min(scene.maxDepth, 4u) : 0u));
+  // Bools as 0/1 (SPIR-V bool spec constants are 32 bits); every feature on in the general variant.
+  auto specConstants = [&](bool general) {
+    std::vector<std::uint32_t> spec(gpu::kSpecCount, 1u);
+    if (!general) {
+      setSharedFeatures(scene, spec);
+      spec[gpu::kSpecHasSpecular] = specular;
+    }
     spec[gpu::kSpecCutoff] = general || w.cutoff;
     spec[gpu::kSpecTestAll] = w.testAll;   // in the general variant too: a second general variant
     return spec;
@@ -150,15 +121,14 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
   w.texelReads = chooseTexelReads(options.reads, SceneArrays::Whitted, texelsFit, context.properties().limits);
   w.spirv = w.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv;
   w.spirvBytes = w.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv);
-  w.specializedKey = variantKey(context.properties(), w.spirv, w.spirvBytes, specConstants(used, false));
+  w.specializedKey = variantKey(context.properties(), w.spirv, w.spirvBytes, specConstants(false));
   w.general = options.variant == ShaderVariant::General ||
               (options.variant == ShaderVariant::Auto && !variantCompiled(w.specializedKey) &&
                !specializationPays(cpuDevice, w.estimatedRays, false));
-  const Features features = w.general ? sceneFeatures(scene, false) : used;
-  w.leftOut = features.leftOut;
+  w.spec = specConstants(w.general);
+  w.leftOut = leftOutNames(w.spec, {{gpu::kSpecHasSpecular, "specular (maxdepth 0)"}});
   if (!w.cutoff && !w.general) w.leftOut += std::string(w.leftOut.empty() ? "" : ", ") + "exactness cut-off";
-  w.specular = features.specular;
-  w.spec = specConstants(features, w.general);
+  w.specular = w.spec[gpu::kSpecHasSpecular] != 0u;
   return w;
 }
 
