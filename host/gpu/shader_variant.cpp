@@ -60,7 +60,12 @@ std::set<std::uint64_t>& keys(const std::string& path) {
 }  // namespace
 
 bool specializationPays(bool cpuDevice, double estimatedRays, bool pathShader) {
-  return !cpuDevice || estimatedRays > (pathShader ? kSpecializePathAboveRays : kSpecializeWhittedAboveRays);
+  if (!cpuDevice) return estimatedRays > kSpecializeGpuAboveRays;
+  return estimatedRays > (pathShader ? kSpecializePathAboveRays : kSpecializeWhittedAboveRays);
+}
+
+bool autoTakesSpecialised(bool cpuDevice, double estimatedRays, bool pathShader, std::uint64_t specializedKey) {
+  return specializationPays(cpuDevice, estimatedRays, pathShader) || (cpuDevice && variantCompiled(specializedKey));
 }
 
 std::uint64_t variantKey(const VkPhysicalDeviceProperties& device, const std::uint32_t* spirv, std::size_t spirvBytes,

@@ -3,9 +3,11 @@
 // combination of features: 0.2-0.5 s on two cores, more than a small render takes. The
 // general variant has every feature in, the same for every scene, so it is compiled once
 // per machine (by the first render that uses it) and then comes from the driver's shader
-// cache. Under ShaderVariant::Auto a render takes its specialised variant when that one has been
-// compiled on this machine before (the index below) or when the render is long enough to pay
-// for the compile; the general one otherwise. Both give the same image bit for bit.
+// cache. Under ShaderVariant::Auto a render takes its specialised variant when the render is
+// long enough to pay for the compile, or, on a CPU device, when that one has been compiled on
+// this machine before (the index below); the general one otherwise. Both give the same image
+// bit for bit on lavapipe (a GPU's compiler may fuse multiply-adds differently in the two: on
+// an H200 the path shader's differed by up to 4e-6 of a value).
 #pragma once
 
 #include <cstddef>
@@ -22,11 +24,22 @@ namespace vkrt {
 // variant traces 10-25% slower, at about 10-30 M of these estimated rays a second. The path
 // shader's general variant takes 9-50 ns more per estimated ray (median about 20 ns) over the
 // 16 CSE 168 scenes as previews (bench/README.md, "Latest figures: first render"), so its
-// compile pays from about 20 M. A GPU compiles in milliseconds and always specialises.
+// compile pays from about 20 M.
 inline constexpr double kSpecializeWhittedAboveRays = 30e6;
 inline constexpr double kSpecializePathAboveRays = 20e6;
+// The same on a GPU. An H200 (doc/device-check.md) compiled a specialised variant in 0.18-0.5
+// s and traced 0.15 ns per estimated ray (cornellNEE at 64 spp: 19 ms for 133 M; a course
+// scene in 0.5-2 ms): even a general variant twice as slow would lose less than the compile
+// below about a billion.
+inline constexpr double kSpecializeGpuAboveRays = 1e9;
 
 bool specializationPays(bool cpuDevice, double estimatedRays, bool pathShader);
+
+// ShaderVariant::Auto's choice: the specialised variant (key `specializedKey`) where it pays
+// for its compile, or, on a CPU device, where the index says it is compiled already. A GPU
+// does not take it for being compiled: its trace gains next to nothing there, and so the
+// variant, and the bits, of a command depend on the command alone.
+bool autoTakesSpecialised(bool cpuDevice, double estimatedRays, bool pathShader, std::uint64_t specializedKey);
 
 // The variant `spirv` with `specConstants` on this device, as the index knows it.
 std::uint64_t variantKey(const VkPhysicalDeviceProperties& device, const std::uint32_t* spirv, std::size_t spirvBytes,

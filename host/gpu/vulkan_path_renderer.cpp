@@ -141,8 +141,8 @@ PathShader pathShader(const Context& context, const GpuScene& scene, const Vulka
   p.module = pathModule(p.texelReads, quadLightsOnly);
   p.specializedKey = variantKey(context.properties(), p.module.words, p.module.bytes, specialized);
   p.general = options.variant == ShaderVariant::General ||
-              (options.variant == ShaderVariant::Auto && !variantCompiled(p.specializedKey) &&
-               !specializationPays(cpuDevice, p.estimatedRays, true));
+              (options.variant == ShaderVariant::Auto &&
+               !autoTakesSpecialised(cpuDevice, p.estimatedRays, true, p.specializedKey));
   // The general variant: every feature on, in the same module.
   p.spec = p.general ? pathFeatures(scene, path, false, p.testAll, p.leftOut) : specialized;
   if (!p.general) p.leftOut = leftOut;

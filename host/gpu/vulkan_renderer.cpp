@@ -123,8 +123,8 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
   w.spirvBytes = w.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv);
   w.specializedKey = variantKey(context.properties(), w.spirv, w.spirvBytes, specConstants(false));
   w.general = options.variant == ShaderVariant::General ||
-              (options.variant == ShaderVariant::Auto && !variantCompiled(w.specializedKey) &&
-               !specializationPays(cpuDevice, w.estimatedRays, false));
+              (options.variant == ShaderVariant::Auto &&
+               !autoTakesSpecialised(cpuDevice, w.estimatedRays, false, w.specializedKey));
   w.spec = specConstants(w.general);
   w.leftOut = leftOutNames(w.spec, {{gpu::kSpecHasSpecular, "specular (maxdepth 0)"}});
   if (!w.cutoff && !w.general) w.leftOut += std::string(w.leftOut.empty() ? "" : ", ") + "exactness cut-off";
