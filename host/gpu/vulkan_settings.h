@@ -16,7 +16,8 @@ enum class Cutoff { Auto, On, Off };
 
 // Which variant of the shader a render compiles (gpu/shader_variant.h): the one specialised to
 // the scene's features, the general one (every feature in; compiled once per machine), or
-// Auto: the specialised one where it is compiled already or pays for its compile.
+// Auto: the specialised one where it pays for its compile or, on a CPU device, is compiled
+// already (autoTakesSpecialised).
 enum class ShaderVariant { Specialized, General, Auto };
 
 struct VulkanTimings {

@@ -352,11 +352,12 @@ TEST(GpuPath, SameSeedSameBitsOtherSeedOtherImage) {
   o.reads = SceneReads::Texel;
   EXPECT_TRUE(sameBits(a, renderPath(s, o)));
   // Specialization compiles out only what the scene lacks: the general variant (every feature
-  // on, but the module of quad lights alone: VKRT_QUAD_LIGHTS_ONLY) renders the same bits.
+  // on, but the module of quad lights alone: VKRT_QUAD_LIGHTS_ONLY) renders the same image
+  // (pathVariantsAgree: the same bits on lavapipe).
   o.variant = ShaderVariant::General;
   EXPECT_TRUE(pathVariantsAgree(*context, a, renderPath(s, o)));
   // A black point light adds nothing, but takes the whole module, with every light's code:
-  // the same bits, specialised and general.
+  // the same image, specialised and general.
   SceneDesc black = s;
   black.lights.push_back(Light{LightType::Point, dvec3(0.0, 1.5, 0.0), dvec3(0.0), dvec3(1.0, 0.0, 0.0)});
   for (ShaderVariant v : {ShaderVariant::Specialized, ShaderVariant::General}) {

@@ -162,8 +162,8 @@ TEST(MergeIdentity, RecordFieldsOutOfRangeAreUsageErrors) {
                                    std::string("0,0,1,1 of 1 2147483647"), std::string("0,0,1,1 of 16385 1")}) {
     tile.text = {{kCropKeyword, value}};
     writeImageAtomic(tile, dir + "/forged.png");
-    Finished r = waitVkrt(spawnVkrt({"merge", "--allow-gaps", "-o", dir + "/never.png", dir + "/forged.png"},
-                                    dir + "/log"));
+    MeasuredRun r = runVkrtMeasuringMemory({"merge", "--allow-gaps", "-o", dir + "/never.png", dir + "/forged.png"},
+                                           dir + "/log");
     EXPECT_EQ(r.exitCode, 1) << value << "\n" << r.output;
     EXPECT_NE(r.output.find("vkrt: error: tile '" + dir + "/forged.png': malformed vkrt-crop record '" + value +
                             "' (the full image is not from 1 to 16384 pixels on a side)"),

@@ -218,8 +218,25 @@ double parallelMirrorsRadiance(const MirrorChannel& c, int maxDepth) {
 
 namespace {
 
-// Forks and execs `all` (argv) with stdout and stderr to `logPath` and `env` put.
+// Forks and execs `all` (argv) with stdout and stderr to `logPath` and `env` (NAME=value)
+// added to this process's environment. argv and the environment are made before the fork:
+// the child of a process with other threads (a GPU driver's) may only make system calls.
 Spawned spawnArgv(std::vector<std::string> all, const std::string& logPath, const std::vector<std::string>& env) {
+  std::vector<std::string> environment;
+  for (char** e = environ; *e; ++e) {
+    const std::string entry = *e;
+    const std::string name = entry.substr(0, entry.find('='));
+    const bool replaced = std::any_of(env.begin(), env.end(),
+                                      [&](const std::string& x) { return x.substr(0, x.find('=')) == name; });
+    if (!replaced) environment.push_back(entry);
+  }
+  environment.insert(environment.end(), env.begin(), env.end());
+  std::vector<char*> argv, envp;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  for (std::string& e : environment) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  static const char kExecFailed[] = "spawnArgv: exec failed\n";
   Spawned s;
   s.logPath = logPath;
   pid_t pid = ::fork();
@@ -227,11 +244,10 @@ Spawned spawnArgv(std::vector<std::string> all, const std::string& logPath, cons
     int fd = ::open(logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(fd, 1);
     ::dup2(fd, 2);
-    for (const std::string& e : env) ::putenv(const_cast<char*>(e.c_str()));
-    std::vector<char*> argv;
-    for (std::string& a : all) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    ::execv(argv[0], argv.data());
+    ::execve(argv[0], argv.data(), envp.data());
+    if (::write(2, kExecFailed, sizeof kExecFailed - 1) < 0) {
+      // (nothing more to say)
+    }
     ::_exit(127);
   }
   s.pid = pid;
@@ -258,14 +274,15 @@ Finished waitVkrt(const Spawned& process) {
   return f;
 }
 
-Finished runVkrtMeasuringMemory(const std::vector<std::string>& args, const std::string& logPath,
-                                const std::vector<std::string>& env) {
+MeasuredRun runVkrtMeasuringMemory(const std::vector<std::string>& args, const std::string& logPath,
+                                   const std::vector<std::string>& env) {
   const std::string peakPath = logPath + ".peak";
   std::remove(peakPath.c_str());
   std::vector<std::string> all = {"/proc/self/exe", kMeasureFlag, peakPath, vkrtBinary()};
   all.insert(all.end(), args.begin(), args.end());
   Spawned helper = spawnArgv(std::move(all), logPath, env);
-  Finished f = waitVkrt(helper);
+  MeasuredRun f;
+  static_cast<Finished&>(f) = waitVkrt(helper);
   std::ifstream peak(peakPath);
   if (!(peak >> f.peakRssKb)) {
     ADD_FAILURE() << "vkrt's peak memory was not measured (" << peakPath << "); exit " << f.exitCode;
@@ -280,6 +297,7 @@ int measurePeakMemoryMain(int argc, char** argv) {
   pid_t pid = ::fork();
   if (pid == 0) {
     ::execv(argv[3], argv + 3);
+    std::perror(argv[3]);
     ::_exit(127);
   }
   int status = 0;
@@ -357,8 +375,9 @@ bool sameBits(const RadianceImage& a, const RadianceImage& b) {
   double worst = 0.0;
   std::size_t differing = 0, worstAt = 0;
   for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+    if (std::memcmp(&a.rgb[i], &b.rgb[i], sizeof(float)) == 0) continue;   // (equal NaNs and infinities too)
     const double x = a.rgb[i], y = b.rgb[i];
-    if (x != y) ++differing;
+    ++differing;
     const double d = std::abs(x - y) / std::max(1.0, std::abs(x));
     if (!(d <= worst)) worst = d, worstAt = i;
   }

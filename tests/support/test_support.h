@@ -162,9 +162,11 @@ struct Spawned {
 Spawned spawnVkrt(const std::vector<std::string>& args, const std::string& logPath,
                   const std::vector<std::string>& env = {});
 struct Finished {
-  int exitCode = -1;         // 128 + signal when killed by one
-  long long peakRssKb = 0;   // runVkrtMeasuringMemory: vkrt's peak resident set (KiB); -1 unknown
+  int exitCode = -1;   // 128 + signal when killed by one
   std::string output;
+};
+struct MeasuredRun : Finished {
+  long long peakRssKb = -1;   // vkrt's peak resident set (KiB)
 };
 Finished waitVkrt(const Spawned& process);
 // Runs vkrt to its end and measures its peak resident memory. The kernel counts into a
@@ -172,8 +174,8 @@ Finished waitVkrt(const Spawned& process);
 // page tables, exec keeps their high-water mark), and this test binary may hold a GPU
 // driver's 150 MB. So vkrt is started by a fresh, small copy of the test binary
 // (measurePeakMemoryMain), whose wait4 reads vkrt's own peak.
-Finished runVkrtMeasuringMemory(const std::vector<std::string>& args, const std::string& logPath,
-                                const std::vector<std::string>& env = {});
+MeasuredRun runVkrtMeasuringMemory(const std::vector<std::string>& args, const std::string& logPath,
+                                   const std::vector<std::string>& env = {});
 // The test binary's entry for that copy (`--measure-peak-memory FILE PROGRAM ARGS...`):
 // runs PROGRAM, writes its peak resident KiB to FILE and returns its exit status; -1 when
 // argv is not that.
