@@ -60,6 +60,10 @@ bool testsEveryPrimitive(const GpuScene& scene, bool allowed, bool eachPrimitive
          scene.triangles.size() + 2 * scene.spheres.size() <= gpu::kTestAllMaxPrims;
 }
 
+bool bvhHoldsEachPrimitiveOnce(const GpuScene& scene) {
+  return scene.bvh.primRefs.size() == primitiveCount(scene);
+}
+
 void checkShaderLimits(const GpuScene& scene) {
   // The shaders pack a leaf's first primRef into 28 bits (kStackFirstMask).
   if (scene.bvh.primRefs.size() > gpu::kStackFirstMask)

@@ -48,6 +48,9 @@ gpu::GpuRenderParams renderParams(const GpuScene& scene, const BandLayout& layou
 // (triangles and spheres), and there are at most kTestAllMaxPrims of them, a sphere counting
 // as two.
 bool testsEveryPrimitive(const GpuScene& scene, bool allowed, bool eachPrimitiveOnce);
+// Whether the built BVH of `scene` holds every primitive exactly once (none left out as one
+// that can never be hit): testsEveryPrimitive's `eachPrimitiveOnce` at render time.
+bool bvhHoldsEachPrimitiveOnce(const GpuScene& scene);
 
 // Throws DeviceError for a scene beyond what the shaders take (more primitives than a
 // traversal-stack entry can name), InternalError for a BVH deeper than their stack.

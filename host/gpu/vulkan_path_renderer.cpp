@@ -217,7 +217,7 @@ RadianceImage VulkanPathRender::render(const VulkanPathOptions& options, RayCoun
   t0 = std::chrono::steady_clock::now();
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const PathShader shader = pathShader(context, scene, options, layout, samples, upload.texelsFit(maxTexels),
-                                       scene.bvh.primRefs.size() == primitiveCount(scene));
+                                       bvhHoldsEachPrimitiveOnce(scene));
   t.testedAll = shader.testAll;
   t.texelReads = shader.texelReads;
   t.estimatedRays = shader.estimatedRays;

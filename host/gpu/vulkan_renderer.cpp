@@ -154,7 +154,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   const SceneUpload upload(context, scene, SceneArrays::Whitted);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const WhittedShader shader = whittedShader(context, scene, options, layout, upload.texelsFit(maxTexels),
-                                             scene.bvh.primRefs.size() == primitiveCount(scene));
+                                             bvhHoldsEachPrimitiveOnce(scene));
   t.testedAll = shader.testAll;
   t.texelReads = shader.texelReads;
   t.general = shader.general;

@@ -85,8 +85,8 @@ GPU_ASSERT_SIZE(GpuRenderParams, 64)
 GPU_ASSERT_OFFSET(GpuRenderParams, stepBudget, 16)
 GPU_ASSERT_OFFSET(GpuRenderParams, rootEntry, 36)
 GPU_ASSERT_OFFSET(GpuRenderParams, originX, 40)
-GPU_ASSERT_OFFSET(GpuRenderParams, sphereCount, 60)
 GPU_ASSERT_OFFSET(GpuRenderParams, fullHeight, 52)
+GPU_ASSERT_OFFSET(GpuRenderParams, sphereCount, 60)
 
 struct GpuCounters {
   uint suspended;           // invocations (raytrace.comp) or pixels (pathtrace.comp) of this dispatch that ran out of steps
