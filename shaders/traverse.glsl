@@ -90,6 +90,15 @@ bool traverseBvh(TracedRay r, inout uint step) {
     uint entry = stack[sp];
     float entryT = stackT[sp];
     bool visit = entryT < tMax;   // false: entered beyond the nearest hit so far
+    // Entries beyond it are popped in a loop of their own, not each in a pass of the whole
+    // loop (bench/README.md, "The walk's pops": 2-3% fewer instructions)
+    while (!visit && sp > 0u && step < params.stepBudget) {
+      --sp;
+      ++step;
+      entry = stack[sp];
+      entryT = stackT[sp];
+      visit = entryT < tMax;
+    }
     // Down interior nodes: the nearer child the ray enters is the next node (in registers),
     // the farther one is pushed; the order of visits is that of pushing both. Each node
     // entered is a step.
