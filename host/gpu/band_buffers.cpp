@@ -19,7 +19,7 @@ BandBuffers::BandBuffers(const Context& context, const BandLayout& layout, std::
       counters(context, sizeof(gpu::GpuCounters), true),
       params(context, sizeof renderParams) {
   std::memset(counters.mapped(), 0, sizeof(gpu::GpuCounters));
-  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool cpuDevice = context.isCpuDevice();
   if (timedBands && !stepBudget)
     firstBandRows = firstTimedBandRows(gpu::kDefaultStepBudget / layout.tilesPerGroup, layout.width,
                                        layout.bandHeight, cpuDevice, firstDispatchSteps);

@@ -44,6 +44,8 @@ class Context {
   VkQueue queue() const { return queue_; }
   std::uint32_t queueFamily() const { return queueFamily_; }
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  // A CPU device (lavapipe), for which the renderers choose variants and work sizes apart.
+  bool isCpuDevice() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
   const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memory_; }
   // Validation messages (warnings and errors) so far; each is also printed on stderr.
   int validationMessages() const { return validationMessages_.load(); }

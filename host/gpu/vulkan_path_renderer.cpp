@@ -107,7 +107,7 @@ struct PathShader {
 PathShader pathShader(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
                       const BandLayout& layout, std::uint32_t samples, bool texelsFit, bool eachPrimitiveOnce) {
   PathShader p;
-  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool cpuDevice = context.isCpuDevice();
   const std::uint32_t renderSpp = options.renderSpp ? options.renderSpp : scene.spp;
   gpu::GpuPathParams& path = p.path;
   path = scene.path;
@@ -154,7 +154,7 @@ PathShader pathShader(const Context& context, const GpuScene& scene, const Vulka
 // perInvocation adjacent 8x8 tiles.
 BandLayout pathLayout(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
                       std::uint32_t samples) {
-  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool cpuDevice = context.isCpuDevice();
   const std::uint32_t perInvocation =
       options.pixelsPerInvocation
           ? options.pixelsPerInvocation

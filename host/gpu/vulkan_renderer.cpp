@@ -63,7 +63,7 @@ gpu::GpuCutoff neverCut() {
 // pixels; the workgroups of a band each take a run of perInvocation adjacent 8x8 tiles.
 BandLayout whittedLayout(const Context& context, const GpuScene& scene, const VulkanOptions& options) {
   // Sharing out pixels keeps a CPU's SIMD lanes busy; a GPU has lanes to spare for a pixel each.
-  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool cpuDevice = context.isCpuDevice();
   const std::uint32_t perInvocation = options.pixelsPerInvocation ? options.pixelsPerInvocation
                                       : cpuDevice                 ? gpu::kDefaultPixelsPerInvocation
                                                                   : 1u;
@@ -93,7 +93,7 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
                             const BandLayout& layout, bool texelsFit, bool eachPrimitiveOnce) {
   WhittedShader w;
   w.testAll = testsEveryPrimitive(scene, options.testAll, eachPrimitiveOnce);
-  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool cpuDevice = context.isCpuDevice();
   const bool specular = usesSpecular(scene);
   // The exactness cut-off: forced, or where it pays. The general variant has it compiled in
   // and is told at run time whether to cut (push constants), so that it cuts exactly where

@@ -116,7 +116,7 @@ TEST(ShaderVariant, OnlyACpuDeviceTakesAVariantForBeingCompiled) {
 // the general variant below a billion rays.)
 TEST(ShaderVariant, AutoTakesTheSpecialisedVariantOnceCompiledOrWhenItPays) {
   VKRT_REQUIRE_GPU(ctx);
-  const bool cpuDevice = ctx->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool cpuDevice = ctx->isCpuDevice();
   const std::string dir = test::freshDir("shader-variant/auto");
   const std::string env =
       "XDG_CACHE_HOME=" + dir + " MESA_SHADER_CACHE_DIR=" + dir + "/mesa MESA_SHADER_CACHE_DISABLE=false";
@@ -159,7 +159,7 @@ TEST(ShaderVariant, AutoTakesTheSpecialisedVariantOnceCompiledOrWhenItPays) {
 // the shader again for each new set (shaders/params.glsl).
 TEST(ShaderVariant, TheGeneralVariantIsCompiledOnceForEveryScene) {
   VKRT_REQUIRE_GPU(ctx);
-  if (ctx->properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)
+  if (!ctx->isCpuDevice())
     GTEST_SKIP() << "counts the entries of lavapipe's shader cache; this device is not a CPU";
   const std::string dir = test::freshDir("shader-variant/general-once");
   // Mesa's cache on, one file per entry (the layouts of one file or a database would hide a

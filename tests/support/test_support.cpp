@@ -368,7 +368,7 @@ bool sameBits(const RadianceImage& a, const RadianceImage& b) {
 ::testing::AssertionResult pathVariantsAgree(const Context& context, const RadianceImage& a, const RadianceImage& b) {
   if (a.width != b.width || a.height != b.height || a.rgb.size() != b.rgb.size())
     return ::testing::AssertionFailure() << "sizes differ";
-  const bool cpuDevice = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool cpuDevice = context.isCpuDevice();
   if (cpuDevice)
     return sameBits(a, b) ? ::testing::AssertionSuccess()
                           : ::testing::AssertionFailure() << "not the same bits on a CPU device";
