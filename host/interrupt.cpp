@@ -40,6 +40,10 @@ void installInterruptHandlers() {
     if (::sigaction(signal, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
     ::sigaction(signal, &action, nullptr);
   }
+  // A write past the file-size limit (`ulimit -f`, as a batch job may set) fails with EFBIG
+  // instead of the signal ending the process: the write's own error path then removes its
+  // temporary file and says why.
+  ::signal(SIGXFSZ, SIG_IGN);
 }
 
 int pendingInterrupt() { return received.load(std::memory_order_relaxed); }

@@ -19,7 +19,8 @@ class Interrupted : public std::runtime_error {
 };
 
 // Installs the handlers for SIGINT, SIGTERM and SIGHUP, except for a signal ignored when the
-// process started (nohup): vkrt's main does, before any command; a library user need not.
+// process started (nohup), and ignores SIGXFSZ (a write past `ulimit -f` then fails with an
+// error): vkrt's main does, before any command; a library user need not.
 void installInterruptHandlers();
 
 // The signal received so far, or 0. Safe to poll from any thread.

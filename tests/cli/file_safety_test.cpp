@@ -320,6 +320,22 @@ TEST(FileSafety, AFailedWriteLeavesNoTemporaryFile) {
   EXPECT_EQ(readFile(target), kPrecious);
 }
 
+// A write past the file-size limit (`ulimit -f`, as a batch job may set): the kernel's
+// SIGXFSZ would end vkrt with its temporary file left; vkrt ignores it, so the write fails
+// with "File too large", the old file stays, and nothing is left behind.
+TEST(FileSafety, AWriteBeyondTheFileSizeLimitLeavesNoTemporaryFile) {
+  std::string dir = freshDir("file-safety/file-size-limit");
+  writeFile(dir + "/s.test", kScene);
+  writeFile(dir + "/o.pfm", kPrecious);
+  // 8 blocks of 512 bytes: a 100x100 PFM is 120 KB.
+  RunResult r = runShell(dir, "ulimit -f 8 && exec " + kVkrt + " --backend cpu --size 100x100 -o o.pfm s.test");
+  EXPECT_EQ(r.exitCode, 4) << r.output;
+  EXPECT_TRUE(contains(r.output, "File too large")) << r.output;
+  EXPECT_EQ(readFile(dir + "/o.pfm"), kPrecious);
+  const std::vector<std::string> left = leftovers(dir);
+  EXPECT_TRUE(left.empty()) << left.front();
+}
+
 // SIGHUP while the image is written (vkrt waits for the signal with its temporary file
 // open), and SIGINT / SIGTERM while merge or diff --diff write: exit 128 + N, the old file
 // as it was, no temporary file.
