@@ -227,7 +227,8 @@ int compareBackends(const vkrt::Options& o) {
 void warnNonFinite(const vkrt::Options& o, const vkrt::RenderReport& report) {
   if (report.rays.nonFinite > 0 && !o.quiet)
     std::fprintf(stderr,
-                 "vkrt: warning: %s a NaN or infinite colour (written as 0, or 1 for +infinity); "
+                 "vkrt: warning: %s a NaN or infinite colour (NaN written as 0, +infinity as 255 in PNG "
+                 "and PPM, as the largest float in PFM and EXR); "
                  "the scene has extreme values\n",
                  vkrt::counted(report.rays.nonFinite, "pixel had", "pixels had").c_str());
 }

@@ -469,7 +469,7 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
                    bool mayStream, RenderSession& vulkan, PreparedRender& prepared) {
   if (request.backend == Backend::Vulkan) vulkan.prepare(request);
   auto t0 = std::chrono::steady_clock::now();
-  prepared.parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict});
+  prepared.parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict, request.output.has_value()});
   SceneDesc& scene = prepared.parsed.scene;
   report.parseSeconds = secondsSince(t0);
   if (!prepared.parsed.warnings.empty() && request.onWarnings) request.onWarnings(prepared.parsed.warnings);

@@ -96,7 +96,11 @@ glm::dmat3 normalMatrix(const dmat4& m) {
 class Parser {
  public:
   Parser(std::string_view text, const std::string& fileName, const ParseOptions& options)
-      : text_(text), tokenizer_(text), log_(fileName, options.strict), args_(log_) {
+      : text_(text),
+        tokenizer_(text),
+        log_(fileName, options.strict),
+        args_(log_),
+        outputOverridden_(options.outputOverridden) {
     scene_.sourcePath = fileName;
   }
 
@@ -257,7 +261,7 @@ class Parser {
     }
     args_.ignoreExtra("output", 1, usage);
     std::string_view name = args_[0];
-    if (!hasImageExtension(std::string(name)))
+    if (!outputOverridden_ && !hasImageExtension(std::string(name)))
       warn(WarningKind::OutputName, "output file " + quoted(name) + " is not named " + imageExtensionsText() +
                                         ": vkrt writes " + std::string(imageFormats().front().name) +
                                         ", under that name");
@@ -555,6 +559,7 @@ class Parser {
   Tokenizer tokenizer_;
   DiagnosticLog log_;
   Arguments args_;   // the arguments of the line being read
+  bool outputOverridden_;   // ParseOptions::outputOverridden
   SceneDesc scene_;
   Deferred deferred_;
   int line_ = 0;   // the line being read

@@ -17,6 +17,9 @@ inline constexpr int kMaxImageEdge = 16384;
 
 struct ParseOptions {
   bool strict = false;   // every warning is an error (for graders and CI)
+  // The command line names the output file (-o FILE): the scene's `output` line names nothing
+  // written, so its name is not checked.
+  bool outputOverridden = false;
 };
 
 struct ParsedScene {

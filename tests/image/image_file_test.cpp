@@ -178,4 +178,15 @@ TEST(ImageFile, OtherExtensionsWarnAndWritePng) {
   EXPECT_EQ(scene.exitCode, 0) << scene.output;
   EXPECT_NE(scene.output.find("is not named .png, .ppm, .pfm or .exr"), std::string::npos) << scene.output;
   EXPECT_EQ(readFile(dir + "/scene.bmp").substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  // -o FILE overrides that line: it names nothing written, so no warning, and --strict
+  // renders; -o DIR/ writes under its name, so the warning stays.
+  RunResult named = runVkrt("--strict --backend cpu -o " + dir + "/named.png " + dir + "/bmp.test");
+  EXPECT_EQ(named.exitCode, 0) << named.output;
+  EXPECT_EQ(named.output.find("is not named"), std::string::npos) << named.output;
+  EXPECT_TRUE(fileExists(dir + "/named.png"));
+  std::filesystem::create_directory(dir + "/into");
+  RunResult into = runVkrt("--backend cpu -o " + dir + "/into/ " + dir + "/bmp.test");
+  EXPECT_EQ(into.exitCode, 0) << into.output;
+  EXPECT_NE(into.output.find("is not named .png, .ppm, .pfm or .exr"), std::string::npos) << into.output;
+  EXPECT_TRUE(fileExists(dir + "/into/scene.bmp"));
 }
