@@ -247,7 +247,7 @@ std::string applyEstimator(const RenderRequest& request, SceneDesc& scene) {
 }
 
 // The samples of this render, and the warnings for options that do not apply (the Whitted
-// model has one deterministic sample: --spp, --seed and --time change nothing).
+// model has one deterministic sample: --spp, --seed, --time and --sampler change nothing).
 SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress) {
   SamplePlan plan;
   plan.progressive.stop = [] { return pendingInterrupt() != 0; };
@@ -256,6 +256,7 @@ SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, Prog
     if (request.spp > 0) given.push_back("--spp");
     if (request.seed) given.push_back("--seed");
     if (request.timeLimitSeconds > 0) given.push_back("--time");
+    if (request.stratified) given.push_back("--sampler stratified");
     if (!given.empty()) {
       std::string list;
       for (std::size_t i = 0; i < given.size(); ++i)

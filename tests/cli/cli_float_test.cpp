@@ -65,6 +65,10 @@ TEST(CliFloat, SampleOptionsOnAWhittedSceneWarnAndChangeNothing) {
   EXPECT_EQ(strict.exitCode, 1) << strict.output;
   EXPECT_NE(strict.output.find("--time does not apply to"), std::string::npos) << strict.output;
   EXPECT_FALSE(fileExists(dir + "/strict.png"));
+  RunResult strata = runVkrt("--backend cpu --strict --sampler stratified -o " + dir + "/strata.png " + dir + "/s.test");
+  EXPECT_EQ(strata.exitCode, 1) << strata.output;
+  EXPECT_NE(strata.output.find("--sampler stratified does not apply to"), std::string::npos) << strata.output;
+  EXPECT_FALSE(fileExists(dir + "/strata.png"));
 }
 
 // -o NAME.pfm: the renderer's floats as they are; the PNG of the same render is their encoding.
