@@ -78,7 +78,7 @@ ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds&
     ++lineNumber;
     if (lineNumber == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);   // a byte-order mark
     auto fail = [&](const std::string& what) {
-      return UsageError(abbreviated(path) + ":" + std::to_string(lineNumber) + ": error: " + what);
+      return UsageError(abbreviated(path) + ":" + std::to_string(lineNumber) + ": " + what);   // after "vkrt: error: "
     };
     if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
     std::istringstream words(line);

@@ -195,14 +195,14 @@ TEST(GradeThresholdFile, ABadLineIsAnErrorAtItsLine) {
     return std::string("no error");
   };
   const std::string at = dir + "/t.txt:";
-  EXPECT_EQ(error("scene6 --max-diff 2\nscene9 --max-diff 2\n"), at + "2: error: no reference image for the scene 'scene9'");
-  EXPECT_EQ(error("scene6 --max-diff 2\n\nSCENE6 --max-diff 3\n"), at + "3: error: the scene 'SCENE6' was given on line 1");
-  EXPECT_EQ(error("scene7 --max-diff 300\n"), at + "1: error: --max-diff expects an integer from 0 to 255, got '300'");
-  EXPECT_EQ(error("scene7 --max-bias -1\n"), at + "1: error: --max-bias expects a number of 0 or more (8-bit units), got '-1'");
+  EXPECT_EQ(error("scene6 --max-diff 2\nscene9 --max-diff 2\n"), at + "2: no reference image for the scene 'scene9'");
+  EXPECT_EQ(error("scene6 --max-diff 2\n\nSCENE6 --max-diff 3\n"), at + "3: the scene 'SCENE6' was given on line 1");
+  EXPECT_EQ(error("scene7 --max-diff 300\n"), at + "1: --max-diff expects an integer from 0 to 255, got '300'");
+  EXPECT_EQ(error("scene7 --max-bias -1\n"), at + "1: --max-bias expects a number of 0 or more (8-bit units), got '-1'");
   EXPECT_EQ(error("scene7 --max-pixel 2:1\n"),
-            at + "1: error: unknown threshold '--max-pixel' (expected --max-pixels-over, --max-diff, --max-bias or --max-variance)");
-  EXPECT_EQ(error("scene7 --max-diff\n"), at + "1: error: '--max-diff' needs a value");
-  EXPECT_EQ(error("scene7\n"), at + "1: error: no threshold for scene7 (e.g. --max-pixels-over 2:0.1%)");
+            at + "1: unknown threshold '--max-pixel' (expected --max-pixels-over, --max-diff, --max-bias or --max-variance)");
+  EXPECT_EQ(error("scene7 --max-diff\n"), at + "1: '--max-diff' needs a value");
+  EXPECT_EQ(error("scene7\n"), at + "1: no threshold for scene7 (e.g. --max-pixels-over 2:0.1%)");
   EXPECT_THROW(readThresholdFile(dir + "/absent.txt", GradeThresholds{}, {}), IoError);
 }
 
