@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "counted.h"
 #include "errors.h"
 #include "gpu/band_buffers.h"
 #include "gpu/band_dispatch.h"
@@ -75,17 +76,27 @@ PathModule pathModule(bool texelReads, bool quadLightsOnly) {
                     : PathModule{kPathtraceSpirv, sizeof kPathtraceSpirv};
 }
 
-// A vertex's random numbers must stay within its stride of dimensions (gpu_types.h): two per
-// quad-light sample, and with emitters two more and a pick per light sample. Throws DeviceError.
+// Throws DeviceError for lightSlotsProblem (the render's caller says where in the scene first).
 void checkLightSlots(const GpuScene& scene) {
+  if (std::string problem = lightSlotsProblem(scene); !problem.empty()) throw DeviceError(problem);
+}
+
+}  // namespace
+
+// Two per quad-light sample, and with emitters two more and a pick per light sample.
+std::string lightSlotsProblem(const GpuScene& scene) {
   const std::uint64_t lightSlots = std::uint64_t{scene.path.quadLightCount} * scene.path.lightSamples * 2 +
                                    (scene.emitters.empty() ? 0u : std::uint64_t{scene.path.lightSamples} * 3);
-  if (gpu::kRngSlotLightBase + lightSlots > gpu::kRngBounceStride)
-    throw DeviceError("the light samples per vertex need " + std::to_string(lightSlots) +
-                      " random numbers; the generator's dimensions allow at most " +
-                      std::to_string(gpu::kRngBounceStride - gpu::kRngSlotLightBase) +
-                      " (fewer quad lights or lightsamples)");
+  if (gpu::kRngSlotLightBase + lightSlots <= gpu::kRngBounceStride) return "";
+  return "the Vulkan backend draws at most " + std::to_string(gpu::kRngBounceStride - gpu::kRngSlotLightBase) +
+         " random numbers for the light samples of a path vertex; this scene needs " + std::to_string(lightSlots) +
+         " (" + counted(scene.path.quadLightCount, "quad light", "quad lights") + " x " +
+         std::to_string(scene.path.lightSamples) + " lightsamples x 2" +
+         (scene.emitters.empty() ? "" : ", and 3 a light sample for the emitters") +
+         "): use fewer quad lights or lightsamples, or --backend cpu";
 }
+
+namespace {
 
 // The shader a path render runs, decided before its buffers are made: its parameters, whether
 // rays test every primitive, the module and variant with its specialization constants, and

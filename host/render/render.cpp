@@ -193,6 +193,10 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
   });
   report.buildSeconds = secondsSince(t0);
   report.pipelineAheadSeconds = ahead;
+  if (!whitted) {   // a limit of the shader's random numbers: said at the scene's line, not the device's
+    if (std::string problem = lightSlotsProblem(gpuScene); !problem.empty())
+      throw SceneError({Diagnostic{scene.sourcePath, scene.path.lightSamplesLine, problem}});
+  }
   report.bvhNodes = gpuScene.bvh.nodes.size();
 #define VKRT_SHAPE_FREE(Type, member, name, kind, GpuType, binding) std::vector<Type>().swap(scene.member);
   VKRT_SHAPES(VKRT_SHAPE_FREE)

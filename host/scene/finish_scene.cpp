@@ -156,6 +156,7 @@ void finishScene(SceneDesc& scene, const Deferred& deferred, int lastLine, Diagn
     log.error(deferred.lightStratifyLine, "'lightstratify on' needs a perfect square 'lightsamples', got " +
                                               std::to_string(scene.path.lightSamples) + " (line " +
                                               std::to_string(deferred.lightSamplesLine) + ")");
+  scene.path.lightSamplesLine = deferred.lightSamplesLine;
   checkUnlimitedDepth(scene, deferred, which, log);
 
   if (!contains(ignored, Command::QuadLight))

@@ -57,6 +57,7 @@ struct PathSettings {
   Integrator integrator = Integrator::Raytracer;
   int spp = 1;                   // camera samples per pixel
   int lightSamples = 1;          // per quad light per shading point
+  int lightSamplesLine = 0;      // the last `lightsamples` line, 0 when defaulted (for messages)
   bool lightStratify = false;    // lightSamples is then a perfect square
   NextEvent nextEvent = NextEvent::Off;
   bool russianRoulette = false;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/options.h"
+#include "gpu_types.h"
 #include "scene/number.h"
 #include "test_support.h"
 
@@ -148,4 +149,31 @@ TEST(Messages, AnImageUnderAnotherNameIsWarnedOf) {
   EXPECT_EQ(readFile(dir + "/h.ppm").rfind("P6\n", 0), 0u);
   RunResult other = runIn(dir, "diff a.png t.png --diff h.img");
   EXPECT_TRUE(contains(other.output, "heatmap file 'h.img' is not named .png or .ppm")) << other.output;
+}
+
+// The path shader draws at most kRngBounceStride - kRngSlotLightBase random numbers for a
+// vertex's light samples (gpu_types.h); a scene that needs more is refused by the Vulkan
+// backend at its `lightsamples` line, before anything is written, with the limit and the way
+// out; one sample fewer renders, and so does the CPU backend.
+TEST(Messages, TooManyLightSamplesForTheVulkanBackendNameTheirLine) {
+  if (!gpuContextOrSkip()) return;
+  const std::string dir = freshDir("messages/light-samples");
+  const int most = static_cast<int>(gpu::kRngBounceStride - gpu::kRngSlotLightBase) / 2;   // one quad light
+  auto scene = [](int samples) {
+    return "size 8 6\nintegrator direct\ncamera 0 1 3 0 0 0 0 1 0 45\nlightsamples " + std::to_string(samples) +
+           "\nquadLight -0.5 2 -0.5 1 0 0 0 0 1 5 5 5\nvertex -2 0 -2\nvertex 2 0 -2\nvertex 2 0 2\n"
+           "diffuse 0.5 0.5 0.5\ntri 0 1 2\n";
+  };
+  writeFile(dir + "/over.test", scene(most + 1));
+  RunResult over = runIn(dir, "-o over.png over.test");
+  EXPECT_EQ(over.exitCode, 2) << over.output;
+  EXPECT_TRUE(contains(over.output, "over.test:4: error: the Vulkan backend draws at most " +
+                                        std::to_string(2 * most) + " random numbers")) << over.output;
+  EXPECT_TRUE(contains(over.output, "(1 quad light x " + std::to_string(most + 1) + " lightsamples x 2)")) << over.output;
+  EXPECT_TRUE(contains(over.output, "or --backend cpu")) << over.output;
+  EXPECT_FALSE(fs::exists(dir + "/over.png"));
+  writeFile(dir + "/most.test", scene(most));
+  RunResult fits = runIn(dir, "-q -o most.png most.test");
+  EXPECT_EQ(fits.exitCode, 0) << fits.output;
+  EXPECT_TRUE(fs::exists(dir + "/most.png"));
 }
