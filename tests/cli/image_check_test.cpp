@@ -1,5 +1,6 @@
 // `vkrt diff` and `vkrt SCENE --check`: metrics with known answers, thresholds and their exit
 // statuses (0 pass, 5 differ, 1 usage, 4 unreadable), JSON, and the heatmap.
+#include <cstdio>
 #include <gtest/gtest.h>
 
 #include "cli/image_check.h"
@@ -113,8 +114,10 @@ TEST(DiffCli, CheckRendersThenCompares) {
   Image ref = readImage(dir + "/ref.png");
   ref.pixel(3, 3)[1] = static_cast<std::uint8_t>(ref.pixel(3, 3)[1] ^ 0x40);
   writePngAtomic(ref, dir + "/ref2.png");
+  std::remove((dir + "/out.png").c_str());
   RunResult differs = runVkrt("-q --backend cpu -o " + dir + "/out.png --check " + dir + "/ref2.png " + scene);
   EXPECT_EQ(differs.exitCode, 5) << differs.output;
+  // (README, "Exit status": the one case of a non-zero status with an image written)
   EXPECT_TRUE(fileExists(dir + "/out.png")) << "the render is written whatever the comparison says";
   EXPECT_EQ(runVkrt("-q --backend cpu -o " + dir + "/out.png --check " + dir + "/ref2.png --max-pixels-over 2:1 " + scene)
                 .exitCode,
