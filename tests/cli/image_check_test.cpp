@@ -1,6 +1,7 @@
 // `vkrt diff` and `vkrt SCENE --check`: metrics with known answers, thresholds and their exit
 // statuses (0 pass, 5 differ, 1 usage, 4 unreadable), JSON, and the heatmap.
 #include <cstdio>
+
 #include <gtest/gtest.h>
 
 #include "cli/image_check.h"
