@@ -59,7 +59,10 @@ struct Vertex {
 
 class PathIntegrator {
  public:
-  PathIntegrator(const SceneDesc& scene, const Bvh& bvh) : scene_(scene), query_(scene, bvh) {
+  // `stop` (may be empty) is polled every kLightSamplesPerPoll light samples of a vertex, so
+  // that a scene of many light samples stops within a pixel (the image then incomplete).
+  PathIntegrator(const SceneDesc& scene, const Bvh& bvh, const std::function<bool()>& stop)
+      : scene_(scene), query_(scene, bvh), stop_(stop) {
     for (const QuadLight& q : scene.quadLights) {
       dvec3 c = glm::cross(q.ac, q.ab);
       lights_.push_back({q.a, q.ab, q.ac, glm::normalize(c), glm::length(c), q.radiance, -1});
@@ -114,6 +117,7 @@ class PathIntegrator {
     const int m = scene_.path.lightStratify ? static_cast<int>(std::lround(std::sqrt(static_cast<double>(n)))) : 0;
     dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < n; ++k) {
+      if (stopAfter(k)) return sum;
       const std::uint32_t slot = gpu::rngEmitterPointSlot(quads, n, k);
       double s = rng.at(bounce, slot), t = rng.at(bounce, slot + 1u);
       if (m > 0) {
@@ -202,6 +206,7 @@ class PathIntegrator {
     for (std::size_t j = 0; j < lights_.size(); ++j) {
       const AreaLight& light = lights_[j];
       for (int k = 0; k < n; ++k) {
+        if (stopAfter(j * static_cast<std::size_t>(n) + static_cast<std::size_t>(k))) return sum;
         // Sample a point x' on the light.
         const std::uint32_t slot = gpu::kRngSlotLightBase + 2u * static_cast<std::uint32_t>(j * n + k);
         double s = rng.at(bounce, slot), t = rng.at(bounce, slot + 1u);
@@ -337,8 +342,13 @@ class PathIntegrator {
     return radiance;
   }
 
+  // Whether to stop: after every kLightSamplesPerPoll light samples (k counts them from 0).
+  static constexpr std::uint32_t kLightSamplesPerPoll = 4096;
+  bool stopAfter(std::uint64_t k) const { return (k + 1) % kLightSamplesPerPoll == 0 && stop_ && stop_(); }
+
   const SceneDesc& scene_;
   SceneQuery query_;
+  const std::function<bool()>& stop_;
   std::vector<AreaLight> lights_;
   std::vector<std::uint32_t> emitters_;   // primRefs of the emissive triangles and spheres
   std::vector<double> emitterCdf_;        // their cumulative pick probabilities
@@ -372,7 +382,7 @@ RadianceImage renderPathReference(const SceneDesc& scene, const Bvh& bvh, const 
                                                       : 0;
   RadianceImage image(region.width(), region.height());
   image.samples = count;
-  PathIntegrator integrator(scene, bvh);
+  PathIntegrator integrator(scene, bvh, options.stop);
   const std::uint32_t strataSide = options.stratified ? gpu::rngStrataSide(totalSpp) : 0u;
   shadeTiles(
       region, options.threads, count,

@@ -191,6 +191,27 @@ TEST(Interrupt, DuringTheRenderLeavesTheOldImageAndNoTemporaryFile) {
   }
 }
 
+// Ctrl-C within a pixel: the CPU path integrators poll for it among a vertex's light samples,
+// so a scene of a billion light samples a pixel (hours) stops at once, not after its tile.
+// The signal comes a second after the start; 30 s later `timeout` would kill vkrt (status
+// 137) instead of it exiting with 130.
+TEST(Interrupt, CtrlCStopsACpuPathRenderWithinAPixel) {
+  std::string dir = freshDir("interrupt/light-samples");
+  writeFile(dir + "/many.test",
+            "size 2 2\nintegrator direct\ncamera 0 1 3 0 0 0 0 1 0 45\nlightsamples 1000000000\n"
+            "quadLight -0.5 2 -0.5 0 0 1 1 0 0 5 5 5\nvertex -9 0 -9\nvertex 9 0 -9\nvertex 9 0 9\n"
+            "vertex -9 0 9\ndiffuse 0.5 0.5 0.5\ntri 0 2 1\ntri 0 3 2\n");
+  auto t0 = std::chrono::steady_clock::now();
+  RunResult r = runCommand("cd '" + dir + "' && timeout --preserve-status -s INT -k 30 1 '" + vkrtBinary() +
+                           "' --backend cpu --threads 1 -o o.png many.test");
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(r.exitCode, 128 + SIGINT) << r.output;
+  EXPECT_NE(r.output.find("interrupted; nothing written"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/o.png"));
+  EXPECT_TRUE(leftovers(dir).empty());
+  std::printf("[ stats    ] stopped %.2f s after the start (the signal at 1 s)\n", seconds);
+}
+
 // Interrupted while the PNG is being written (the temporary file exists; vkrt waits for the
 // signal right after creating it): the temporary file goes, the old image stays.
 TEST(Interrupt, DuringTheWriteLeavesTheOldImageAndNoTemporaryFile) {
