@@ -18,6 +18,7 @@ enum class WarningKind {
   UnknownCommand, KeywordCase, ExtraArguments, Repeated, BeforeSize, OutputName, NotForIntegrator, EndlessPaths,
   Clamped,
   NoLights,
+  LineEnds,
   Count
 };
 

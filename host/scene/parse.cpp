@@ -95,17 +95,23 @@ glm::dmat3 normalMatrix(const dmat4& m) {
 
 class Parser {
  public:
-  Parser(std::string_view text, const std::string& fileName, const ParseOptions& options)
+  // `crLineEnds`: the text's lone CRs were made line ends (parseSceneWithWarnings), which the
+  // parser warns of.
+  Parser(std::string_view text, const std::string& fileName, const ParseOptions& options, bool crLineEnds = false)
       : text_(text),
         tokenizer_(text),
         log_(fileName, options.strict),
         args_(log_),
-        outputOverridden_(options.outputOverridden) {
+        outputOverridden_(options.outputOverridden),
+        crLineEnds_(crLineEnds) {
     scene_.sourcePath = fileName;
   }
 
   ParsedScene run() {
     reserveArrays();
+    if (crLineEnds_)
+      log_.warn(1, WarningKind::LineEnds,
+                "the lines end in CR alone (classic Mac OS), not LF or CRLF: each CR read as a line end");
     parseLines();
     std::vector<Diagnostic> warnings = log_.close();
     return {std::move(scene_), std::move(warnings)};
@@ -560,6 +566,7 @@ class Parser {
   DiagnosticLog log_;
   Arguments args_;   // the arguments of the line being read
   bool outputOverridden_;   // ParseOptions::outputOverridden
+  bool crLineEnds_;
   SceneDesc scene_;
   Deferred deferred_;
   int line_ = 0;   // the line being read
@@ -576,7 +583,15 @@ class Parser {
 }  // namespace
 
 ParsedScene parseSceneWithWarnings(std::string_view text, const std::string& fileName, const ParseOptions& options) {
-  ParsedScene parsed = Parser(text, fileName, options).run();
+  // A file without an LF whose lines end in CR alone would read as one line: its CRs end lines.
+  const bool crLineEnds = text.find('\n') == std::string_view::npos && text.find('\r') != std::string_view::npos &&
+                          text.find('\r') + 1 < text.size();
+  std::string lines;
+  if (crLineEnds) {
+    lines.assign(text);
+    std::replace(lines.begin(), lines.end(), '\r', '\n');
+  }
+  ParsedScene parsed = Parser(crLineEnds ? std::string_view(lines) : text, fileName, options, crLineEnds).run();
   Fnv1a64 hash;
   hash.add(text);
   parsed.scene.sourceHash = hash.value();

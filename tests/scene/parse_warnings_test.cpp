@@ -265,6 +265,30 @@ TEST(ParseWarnings, ByteOrderMarkIsSkippedSilently) {
   }
 }
 
+// A file whose lines end in CR alone (classic Mac OS) is the same scene as with LF, with one
+// warning at line 1 (an error under --strict); an error in it names its own line. A lone CR
+// at the very end of a one-line file, or a CR inside an LF file, changes nothing.
+TEST(ParseWarnings, LinesEndingInCrAloneAreLines) {
+  std::string mac = kOk + "sphere 0 0 0 1\n";
+  std::replace(mac.begin(), mac.end(), '\n', '\r');
+  ParsedScene p = parseSceneWithWarnings(mac, "mac.test");
+  ParsedScene unix = parseSceneWithWarnings(kOk + "sphere 0 0 0 1\n", "unix.test");
+  ASSERT_EQ(p.warnings.size(), 1u);
+  EXPECT_EQ(p.warnings[0].format(),
+            "mac.test:1: warning: the lines end in CR alone (classic Mac OS), not LF or CRLF: each CR read as a line end");
+  EXPECT_EQ(p.scene.width, unix.scene.width);
+  EXPECT_EQ(p.scene.camera.from, unix.scene.camera.from);
+  EXPECT_EQ(p.scene.spheres.size(), 1u);
+  EXPECT_THROW(parseSceneWithWarnings(mac, "mac.test", ParseOptions{true}), SceneError);
+  try {
+    parseSceneWithWarnings("size 64 48\rcamera 0 0 5 0 0 0 0 1 0 45\rsphere 0 0\r", "bad.test");
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.test:3: error:"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(parseSceneWithWarnings(kOk + "sphere 0 0 0 1\r", "end.test").warnings.empty());
+}
+
 TEST(ParseWarnings, CleanFilesHaveNone) {
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "maxdepth 2\noutput x.PNG\nsphere 0 0 0 1\n", "ok.test").warnings.empty());
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "output render.ppm\n", "ok.test").warnings.empty());   // written as PPM
