@@ -85,7 +85,8 @@ auto withInputFile(const std::string& path, F&& read) {
 RadianceImage infoOf(const Imf::InputFile& file, const std::string& path) {
   const Imath::Box2i dw = file.header().dataWindow();
   const std::int64_t w = std::int64_t{dw.max.x} - dw.min.x + 1, h = std::int64_t{dw.max.y} - dw.min.y + 1;
-  if (w < 1 || h < 1 || static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) > kMaxPixels)
+  checkImageHasPixels(path, w, h);
+  if (static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) > kMaxPixels)
     throw readError(path, "the EXR's data window is " + std::to_string(w) + "x" + std::to_string(h) +
                               " (at most 16384x16384 pixels are read)");
   RadianceImage info;

@@ -237,10 +237,111 @@ ImageRecords readImageFileText(const std::string& path) {
   return {};
 }
 
+ImageFileHandle openImageFile(const std::string& path) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
+  return ImageFileHandle(file, std::fclose);
+}
+
+void checkImageHasPixels(const std::string& path, std::int64_t width, std::int64_t height) {
+  if (width < 1 || height < 1)
+    throw IoError("cannot read image '" + path + "': it is " + std::to_string(width) + "x" + std::to_string(height) +
+                  " pixels, and an image has at least one pixel");
+}
+
+namespace {
+
+// A file read through stb_image's callbacks: first the bytes already read to tell its format
+// (`head`), then the rest of the file. Opened once and never rewound, so a FIFO's bytes, which
+// can be read once, all reach stb.
+struct StbSource {
+  explicit StbSource(std::FILE* f) : file(f) {}
+  std::FILE* file;
+  unsigned char head[24] = {};
+  std::size_t headSize = 0, headUsed = 0;
+
+  static int read(void* user, char* data, int size) {
+    auto* s = static_cast<StbSource*>(user);
+    const std::size_t fromHead = std::min(s->headSize - s->headUsed, static_cast<std::size_t>(size));
+    std::memcpy(data, s->head + s->headUsed, fromHead);
+    s->headUsed += fromHead;
+    return static_cast<int>(fromHead + std::fread(data + fromHead, 1, static_cast<std::size_t>(size) - fromHead, s->file));
+  }
+  // stb skips forward only. A FIFO cannot seek: its bytes are read and dropped.
+  static void skip(void* user, int n) {
+    auto* s = static_cast<StbSource*>(user);
+    const std::size_t fromHead = std::min(s->headSize - s->headUsed, static_cast<std::size_t>(n));
+    s->headUsed += fromHead;
+    std::size_t rest = static_cast<std::size_t>(n) - fromHead;
+    if (rest == 0 || std::fseek(s->file, static_cast<long>(rest), SEEK_CUR) == 0) return;
+    char dropped[4096];
+    while (rest > 0) {
+      const std::size_t got = std::fread(dropped, 1, std::min(rest, sizeof dropped), s->file);
+      if (got == 0) return;
+      rest -= got;
+    }
+  }
+  static int eof(void* user) {
+    auto* s = static_cast<StbSource*>(user);
+    return s->headUsed == s->headSize && (std::feof(s->file) || std::ferror(s->file));
+  }
+};
+
+constexpr stbi_io_callbacks kStbCallbacks = {StbSource::read, StbSource::skip, StbSource::eof};
+
+// Reads the file's first bytes into the head, up to `size` in all (at most 24: a PNG's
+// signature and the size in its IHDR chunk). A failed read says the system's reason.
+void readHead(StbSource& source, std::size_t size, const std::string& path) {
+  source.headSize += std::fread(source.head + source.headSize, 1, size - source.headSize, source.file);
+  if (std::ferror(source.file)) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
+  if (source.headSize == 0) throw IoError("cannot read image '" + path + "': the file is empty");
+}
+
+// A PNG's size is the first thing in it (the IHDR chunk, which must come first): checked
+// here so that an image of no pixels is refused in the words of every format.
+void checkPngHasPixels(const StbSource& source, const std::string& path) {
+  constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (source.headSize < 24 || std::memcmp(source.head, kPngSignature, 8) != 0 ||
+      std::memcmp(source.head + 12, "IHDR", 4) != 0)
+    return;
+  auto bigEndian = [](const unsigned char* p) {
+    return std::int64_t{p[0]} << 24 | std::int64_t{p[1]} << 16 | std::int64_t{p[2]} << 8 | std::int64_t{p[3]};
+  };
+  checkImageHasPixels(path, bigEndian(source.head + 16), bigEndian(source.head + 20));
+}
+
+// Why stb_image failed, in plain words where its terse reason is known; an unknown one as it
+// is. A failed read gives the system's reason whatever stb made of the bytes it got.
+IoError stbFailure(const StbSource& source, const std::string& path) {
+  const std::string reason = stbi_failure_reason() ? stbi_failure_reason() : "unknown failure";
+  std::string why = reason;
+  if (std::ferror(source.file))
+    why = std::strerror(errno);
+  else if (reason == "outofdata")
+    why = "the file ends early (it is truncated)";
+  else if (reason == "unknown image type")
+    why = "not an image vkrt reads (PNG, PPM, PFM, EXR or JPEG)";
+  else if (reason == "0 width")
+    why = "the JPEG is 0 pixels wide, and an image has at least one pixel";
+  else if (reason == "outofmem")
+    why = "out of memory";
+  return IoError("cannot read image '" + path + "': " + why);
+}
+
+}  // namespace
+
 Image readImage(const std::string& path) {
+  ImageFileHandle file = openImageFile(path);
+  StbSource source(file.get());
+  // Two bytes tell a binary Netpbm image, which is read on from there (never by stb_image).
+  readHead(source, 2, path);
+  if (isBinaryNetpbm(source.head, source.headSize))
+    return readBinaryNetpbm(file.get(), static_cast<char>(source.head[1]), path);
+  readHead(source, sizeof source.head, path);
+  checkPngHasPixels(source, path);
   int w = 0, h = 0, channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
-  if (!data) throw IoError("cannot read image '" + path + "': " + stbi_failure_reason());
+  unsigned char* data = stbi_load_from_callbacks(&kStbCallbacks, &source, &w, &h, &channels, 3);
+  if (!data) throw stbFailure(source, path);
   Image img(w, h);
   std::memcpy(img.rgb.data(), data, img.rgb.size());
   stbi_image_free(data);
@@ -248,9 +349,16 @@ Image readImage(const std::string& path) {
 }
 
 void readImageSize(const std::string& path, int& width, int& height) {
+  ImageFileHandle file = openImageFile(path);
+  StbSource source(file.get());
+  readHead(source, 2, path);
+  if (isBinaryNetpbm(source.head, source.headSize))
+    return readBinaryNetpbmSize(file.get(), static_cast<char>(source.head[1]), path, width, height);
+  readHead(source, sizeof source.head, path);
+  checkPngHasPixels(source, path);
   int channels = 0;
-  if (!stbi_info(path.c_str(), &width, &height, &channels))
-    throw IoError("cannot read image '" + path + "': " + stbi_failure_reason());
+  if (!stbi_info_from_callbacks(&kStbCallbacks, &source, &width, &height, &channels)) throw stbFailure(source, path);
+  checkImageHasPixels(path, width, height);
 }
 
 }  // namespace vkrt

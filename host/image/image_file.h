@@ -5,6 +5,8 @@
 // format. Knows nothing of rendering.
 #pragma once
 
+#include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -122,11 +124,25 @@ ImageRecords readFloatImageText(const std::string& path);
 // is cut short.
 ImageRecords readImageFileText(const std::string& path);
 
-// Reads a PNG, a binary PPM (P6) or a JPEG as 8-bit RGB (stb_image). Throws IoError.
+// Reads a PNG or a JPEG (stb_image), or a binary PPM (P6, or P5 grey) of any maxval
+// (image/ppm.h), as 8-bit RGB. Throws IoError: a file that cannot be opened or read says the
+// system's reason ("No such file or directory"), one that ends early says so, and an image
+// with no pixels is refused.
 Image readImage(const std::string& path);
 
 // The width and height readImage would give, from the file's header, without decoding its
 // pixels. Throws IoError for a file readImage cannot read.
 void readImageSize(const std::string& path, int& width, int& height);
+
+// An image file open for reading (binary), closed when it goes. openImageFile throws IoError
+// ("cannot read image 'PATH': " and the system's reason) when it cannot be opened.
+using ImageFileHandle = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+ImageFileHandle openImageFile(const std::string& path);
+
+// Every reader's check of a header's size, before anything is decoded or written: throws
+// IoError ("cannot read image 'PATH': it is 0x3 pixels, and an image has at least one pixel")
+// unless both are at least 1. An image of no pixels is no image: written as PNG it would be
+// an invalid file, and compared it would pass anything of the same size.
+void checkImageHasPixels(const std::string& path, std::int64_t width, std::int64_t height);
 
 }  // namespace vkrt

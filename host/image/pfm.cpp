@@ -57,6 +57,7 @@ Header readHeader(std::istream& in, const std::string& path) {
     if (used != ht.size()) throw std::invalid_argument(ht);
     double s = std::stod(scale, &used);
     if (used != scale.size() || s == 0.0 || !std::isfinite(s)) throw std::invalid_argument(scale);
+    if (lw == 0 || lh == 0) checkImageHasPixels(path, lw, lh);
     if (lw < 1 || lh < 1 || lw > (1 << 20) || lh > (1 << 20)) throw std::invalid_argument(w);
     h.width = static_cast<int>(lw);
     h.height = static_cast<int>(lh);
