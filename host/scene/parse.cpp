@@ -392,7 +392,7 @@ class Parser {
   void cmdTranslate() {
     double a[3];
     if (!args_.numbers("translate", 3, "x y z", a)) return;
-    transform_ = glm::translate(transform_, dvec3(a[0], a[1], a[2]));
+    applyTransform(glm::translate(transform_, dvec3(a[0], a[1], a[2])), "translate");
   }
 
   void cmdRotate() {
@@ -403,7 +403,7 @@ class Parser {
       error("rotate axis must not be zero");
       return;
     }
-    transform_ = transform_ * rotation(unitVector(axis), glm::radians(a[3]));
+    applyTransform(transform_ * rotation(unitVector(axis), glm::radians(a[3])), "rotate");
   }
 
   // Rodrigues' rotation about a unit axis, right-handed, as a 4x4 matrix.
@@ -420,7 +420,21 @@ class Parser {
   void cmdScale() {
     double a[3];
     if (!args_.numbers("scale", 3, "x y z", a)) return;
-    transform_ = glm::scale(transform_, dvec3(a[0], a[1], a[2]));
+    applyTransform(glm::scale(transform_, dvec3(a[0], a[1], a[2])), "scale");
+  }
+
+  // The current transform becomes `next`, unless a product overflowed (a scale of 1e200 twice,
+  // a translation beyond a double): an error at this line, and the transform stays as it was,
+  // so that the shapes after it are not refused for what is this line's fault.
+  void applyTransform(const dmat4& next, const char* command) {
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        if (!std::isfinite(next[c][r])) {
+          error(std::string("'") + command + "' makes the current transform overflow (an entry beyond " +
+                "1.8e308, the largest double): the shapes after it could not be placed");
+          return;
+        }
+    transform_ = next;
   }
 
   void cmdPush() {

@@ -74,6 +74,10 @@ std::vector<BadInput> badInputs() {
       {"DirectionalUnderZeroScale", kOk + "scale 0 0 0\ndirectional 0 0 1 1 1 1\n", 4,
        "directional light direction vanishes under the current transform (a scale of 0)"},
       {"SingularSphere", kOk + "scale 1 0 1\nsphere 0 0 0 1\n", 4, "singular transform"},
+      {"ScaleOverflows", kOk + "scale 1e200 1 1\nscale 1e200 1 1\nsphere 0 0 0 1\n", 4,
+       "'scale' makes the current transform overflow"},
+      {"TranslateOverflows", kOk + "translate 1e308 0 0\ntranslate 1e308 0 0\nsphere 0 0 0 1\n", 4,
+       "'translate' makes the current transform overflow"},
       // doc/path-tracing.md, "Commands" (kPath: lines 1-3, integrator pathtracer)
       {"MaxDepthBelowMinusOne", kPath + "maxdepth -2\n", 4,
        "'maxdepth' argument 1: expected a non-negative integer, or -1 (no limit), got '-2'"},

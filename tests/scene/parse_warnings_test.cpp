@@ -201,16 +201,20 @@ TEST_P(ParseWarning, CliWarnsAndRendersButStrictRefuses) {
   std::string dir = freshDir(std::string("parse-warnings/") + c.name);
   std::string scene = dir + "/w.test";
   writeFile(scene, c.text);
-  std::string image = dir + "/o.png";
-  RunResult r = runVkrt("--backend cpu -o '" + image + "' '" + scene + "'");
+  // Into the folder (-o DIR/), under the scene's output name: -o FILE would replace an
+  // `output` line, which then draws no warning.
+  RunResult r = runVkrt("--backend cpu -o '" + dir + "/' '" + scene + "'");
   EXPECT_EQ(r.exitCode, 0) << r.output;
   std::string expected = scene + ":" + std::to_string(c.line) + ": warning: ";
   EXPECT_NE(r.output.find(expected + c.message), std::string::npos) << "expected '" << expected << "' in:\n"
                                                                     << r.output;
-  EXPECT_TRUE(fileExists(image));
+  std::string image;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path() != scene) image = entry.path().string();
+  ASSERT_FALSE(image.empty()) << "no image written";
 
   writeFile(image, "precious");
-  RunResult strict = runVkrt("--strict --backend cpu -o '" + image + "' '" + scene + "'");
+  RunResult strict = runVkrt("--strict --backend cpu -o '" + dir + "/' '" + scene + "'");
   EXPECT_EQ(strict.exitCode, 2) << strict.output;
   EXPECT_NE(strict.output.find(scene + ":" + std::to_string(c.line) + ": error: " + c.message), std::string::npos)
       << strict.output;
