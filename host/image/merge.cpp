@@ -369,6 +369,10 @@ RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeRep
       if (batch.record.gamma != first.record.gamma)
         throw UsageError("batches of different gammas: '" + first.path + "' has gamma " +
                          gammaText(first.record.gamma) + ", '" + path + "' gamma " + gammaText(batch.record.gamma));
+      auto sampler = [](const SampleRecord& r) { return r.stratified ? "stratified" : "independent"; };
+      if (batch.record.stratified != first.record.stratified)
+        throw UsageError("batches of different samplers: '" + first.path + "' holds " + sampler(first.record) +
+                         " samples, '" + path + "' " + sampler(batch.record) + " ones (--sampler)");
     }
     for (const Batch& other : batches) {
       std::string shared = sharedSample(other.record, batch.record);
@@ -386,6 +390,7 @@ RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeRep
   std::vector<std::string> warnings;
   std::optional<std::string> identity = checkIdentities(paths, texts, "batch", "batches", warnings);
   merged.gamma = batches.front().record.gamma;
+  merged.stratified = batches.front().record.stratified;
 
   // The rasters, one at a time, into the running mean.
   RadianceImage mean;

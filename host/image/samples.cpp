@@ -19,7 +19,8 @@ std::uint64_t SampleRecord::total() const {
 std::string formatSampleRecord(const SampleRecord& record) {
   char gamma[32];
   std::snprintf(gamma, sizeof gamma, "%.17g", record.gamma);
-  std::string text = std::to_string(record.total()) + " gamma " + gamma + " seeds";
+  std::string text = std::to_string(record.total()) + " gamma " + gamma +
+                     (record.stratified ? " sampler stratified" : "") + " seeds";
   for (const SampleRange& r : record.ranges)
     text += " " + std::to_string(r.seed) + ":" + std::to_string(r.first) + "+" + std::to_string(r.count);
   return text;
@@ -46,9 +47,14 @@ bool parseWhole(const std::string& s, std::uint64_t max, std::uint64_t& out) {
 std::optional<SampleRecord> parseSampleRecord(const std::string& value) {
   std::istringstream in(value);
   std::string total, gammaWord, gamma, seedsWord;
-  if (!(in >> total >> gammaWord >> gamma >> seedsWord) || gammaWord != "gamma" || seedsWord != "seeds")
-    return std::nullopt;
+  if (!(in >> total >> gammaWord >> gamma >> seedsWord) || gammaWord != "gamma") return std::nullopt;
   SampleRecord record;
+  if (seedsWord == "sampler") {   // "sampler stratified": the one sampler named
+    std::string sampler;
+    if (!(in >> sampler >> seedsWord) || sampler != "stratified") return std::nullopt;
+    record.stratified = true;
+  }
+  if (seedsWord != "seeds") return std::nullopt;
   try {
     std::size_t used = 0;
     record.gamma = std::stod(gamma, &used);

@@ -23,13 +23,15 @@ struct SampleRange {
 struct SampleRecord {
   std::vector<SampleRange> ranges;   // disjoint
   double gamma = 1.0;
+  bool stratified = false;           // --sampler stratified (else independent samples)
   std::uint64_t total() const;
 };
 
 // The keyword of the record (a PNG tEXt chunk, a PPM header comment, a PFM trailer line).
 inline constexpr const char* kSamplesKeyword = "vkrt-samples";
 
-// "TOTAL gamma G seeds SEED:FIRST+COUNT[ SEED:FIRST+COUNT ...]", e.g. "64 gamma 2.2 seeds 7:0+64".
+// "TOTAL gamma G [sampler stratified ]seeds SEED:FIRST+COUNT[ SEED:FIRST+COUNT ...]", e.g.
+// "64 gamma 2.2 seeds 7:0+64" (independent samples: the record as it was before the sampler).
 std::string formatSampleRecord(const SampleRecord& record);
 
 // The record's value back; nullopt when malformed (TOTAL not the sum, no range, an empty range,

@@ -543,7 +543,8 @@ std::vector<std::pair<std::string, std::string>> imageRecords(const RenderReques
   if (report.pathIntegrator)
     text.emplace_back(kSamplesKeyword,
                       formatSampleRecord({{{prepared.plan.seed, prepared.plan.progressive.firstSample, report.samples}},
-                                          scene.path.gamma}));
+                                          scene.path.gamma,
+                                          request.stratified}));
   if (prepared.identity) text.emplace_back(kRenderKeyword, formatRenderIdentity(*prepared.identity));
   return text;
 }

@@ -186,7 +186,16 @@ TEST(Samples, RecordRoundTripsAndRejectsMalformedOnes) {
   EXPECT_EQ(back->ranges[1].seed, 9u);
   EXPECT_EQ(back->ranges[1].first, 16u);
   EXPECT_EQ(back->total(), 24u);
-  for (const char* bad : {"", "4", "5 gamma 1 seeds 1:0+4", "4 gamma 0 seeds 1:0+4", "4 gamma 1 seeds",
+  EXPECT_FALSE(back->stratified);
+  // --sampler stratified is named; independent samples keep the record as it always was.
+  SampleRecord strata{{{7, 0, 16}}, 1.0, true};
+  EXPECT_EQ(formatSampleRecord(strata), "16 gamma 1 sampler stratified seeds 7:0+16");
+  std::optional<SampleRecord> strataBack = parseSampleRecord(formatSampleRecord(strata));
+  ASSERT_TRUE(strataBack);
+  EXPECT_TRUE(strataBack->stratified);
+  EXPECT_EQ(strataBack->total(), 16u);
+  for (const char* bad : {"", "4", "5 gamma 1 seeds 1:0+4", "4 gamma 1 sampler seeds 1:0+4",
+                          "4 gamma 1 sampler independent seeds 1:0+4", "4 gamma 1 sampler stratified 1:0+4", "4 gamma 0 seeds 1:0+4", "4 gamma 1 seeds",
                           "4 gamma 1 seeds 1:0+0", "4 gamma 1 seeds x:0+4", "8 gamma 1 seeds 1:0+4 1:2+4",
                           "4 gamma 1 seeds 4294967296:0+4", "4 gamma nan seeds 1:0+4"})
     EXPECT_FALSE(parseSampleRecord(bad)) << bad;
@@ -454,6 +463,9 @@ TEST(MergeBatches, MismatchedBatchesAreRefusedWithClearMessages) {
           "batches of different sizes: '" + a + "' is 4x4, '" + dir + "/small.pfm' 4x3");
   refused({a, writeBatch(dir + "/gamma.pfm", img, {{{2, 0, 4}}, 2.2})},
           "batches of different gammas: '" + a + "' has gamma 1, '" + dir + "/gamma.pfm' gamma 2.2");
+  refused({a, writeBatch(dir + "/strata.pfm", img, {{{2, 0, 4}}, 1.0, true})},
+          "batches of different samplers: '" + a + "' holds independent samples, '" + dir +
+              "/strata.pfm' stratified ones (--sampler)");
   RadianceImage cropped = img;
   cropped.text.emplace_back("vkrt-crop", "0,0,4,4 of 8 8");
   refused({a, writeBatch(dir + "/crop.pfm", cropped, {{{2, 0, 4}}, 1.0})},
