@@ -194,7 +194,8 @@ TEST(Interrupt, DuringTheRenderLeavesTheOldImageAndNoTemporaryFile) {
 // Ctrl-C within a pixel: the CPU path integrators poll for it among a vertex's light samples,
 // so a scene of a billion light samples a pixel (hours) stops at once, not after its tile.
 // The signal comes a second after the start; 30 s later `timeout` would kill vkrt (status
-// 137) instead of it exiting with 130.
+// 137) instead of it exiting with 130. (--foreground: one SIGINT to vkrt alone; without it
+// timeout sends a second one to its process group, and a second signal ends vkrt at once.)
 TEST(Interrupt, CtrlCStopsACpuPathRenderWithinAPixel) {
   std::string dir = freshDir("interrupt/light-samples");
   writeFile(dir + "/many.test",
@@ -202,7 +203,7 @@ TEST(Interrupt, CtrlCStopsACpuPathRenderWithinAPixel) {
             "quadLight -0.5 2 -0.5 0 0 1 1 0 0 5 5 5\nvertex -9 0 -9\nvertex 9 0 -9\nvertex 9 0 9\n"
             "vertex -9 0 9\ndiffuse 0.5 0.5 0.5\ntri 0 2 1\ntri 0 3 2\n");
   auto t0 = std::chrono::steady_clock::now();
-  RunResult r = runCommand("cd '" + dir + "' && timeout --preserve-status -s INT -k 30 1 '" + vkrtBinary() +
+  RunResult r = runCommand("cd '" + dir + "' && timeout --foreground --preserve-status -s INT -k 30 1 '" + vkrtBinary() +
                            "' --backend cpu --threads 1 -o o.png many.test");
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(r.exitCode, 128 + SIGINT) << r.output;
