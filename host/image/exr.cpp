@@ -65,10 +65,6 @@ class FdStream : public Imf::OStream {
   std::string error_;   // the first failed write's message
 };
 
-IoError readError(const std::string& path, const std::string& why) {
-  return IoError("cannot read image '" + path + "': " + why);
-}
-
 // Runs `read` on the opened file; OpenEXR's exceptions become IoError.
 template <class F>
 auto withInputFile(const std::string& path, F&& read) {
@@ -78,7 +74,7 @@ auto withInputFile(const std::string& path, F&& read) {
   } catch (const IoError&) {
     throw;
   } catch (const std::exception& e) {
-    throw readError(path, e.what());
+    throw imageReadError(path, e.what());
   }
 }
 
@@ -87,8 +83,8 @@ RadianceImage infoOf(const Imf::InputFile& file, const std::string& path) {
   const std::int64_t w = std::int64_t{dw.max.x} - dw.min.x + 1, h = std::int64_t{dw.max.y} - dw.min.y + 1;
   checkImageHasPixels(path, w, h);
   if (static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) > kMaxPixels)
-    throw readError(path, "the EXR's data window is " + std::to_string(w) + "x" + std::to_string(h) +
-                              " (at most 16384x16384 pixels are read)");
+    throw imageReadError(path, "the EXR's data window is " + std::to_string(w) + "x" + std::to_string(h) +
+                         " (at most 16384x16384 pixels are read)");
   RadianceImage info;
   info.width = static_cast<int>(w);
   info.height = static_cast<int>(h);

@@ -214,9 +214,8 @@ namespace {
 const ImageFormat& floatFormatOrThrow(const std::string& path) {
   if (const ImageFormat* format = floatImageFormatOf(path)) return *format;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
-  throw IoError("cannot read image '" + path + "': not a linear-float image (" +
-                imageFormatNamesText(FormatsOf::LinearFloat) + ")");
+  if (!in) throw imageReadError(path, std::strerror(errno));
+  throw imageReadError(path, "not a linear-float image (" + imageFormatNamesText(FormatsOf::LinearFloat) + ")");
 }
 
 }  // namespace
@@ -229,24 +228,27 @@ ImageRecords readFloatImageText(const std::string& path) { return floatFormatOrT
 
 ImageRecords readImageFileText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
-  if (in.peek() == std::ifstream::traits_type::eof())
-    throw IoError("cannot read image '" + path + "': the file is empty");
+  if (!in) throw imageReadError(path, std::strerror(errno));
+  if (in.peek() == std::ifstream::traits_type::eof()) throw imageReadError(path, "the file is empty");
   for (const ImageFormat& format : imageFormats())
     if (format.isFile(path)) return format.readText(path);
   return {};
 }
 
+IoError imageReadError(const std::string& path, const std::string& why) {
+  return IoError("cannot read image '" + path + "': " + why);
+}
+
 ImageFileHandle openImageFile(const std::string& path) {
   std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (!file) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
+  if (!file) throw imageReadError(path, std::strerror(errno));
   return ImageFileHandle(file, std::fclose);
 }
 
 void checkImageHasPixels(const std::string& path, std::int64_t width, std::int64_t height) {
   if (width < 1 || height < 1)
-    throw IoError("cannot read image '" + path + "': it is " + std::to_string(width) + "x" + std::to_string(height) +
-                  " pixels, and an image has at least one pixel");
+    throw imageReadError(path, "it is " + std::to_string(width) + "x" + std::to_string(height) +
+                         " pixels, and an image has at least one pixel");
 }
 
 namespace {
@@ -293,8 +295,8 @@ constexpr stbi_io_callbacks kStbCallbacks = {StbSource::read, StbSource::skip, S
 // signature and the size in its IHDR chunk). A failed read says the system's reason.
 void readHead(StbSource& source, std::size_t size, const std::string& path) {
   source.headSize += std::fread(source.head + source.headSize, 1, size - source.headSize, source.file);
-  if (std::ferror(source.file)) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
-  if (source.headSize == 0) throw IoError("cannot read image '" + path + "': the file is empty");
+  if (std::ferror(source.file)) throw imageReadError(path, std::strerror(errno));
+  if (source.headSize == 0) throw imageReadError(path, "the file is empty");
 }
 
 // A PNG's size is the first thing in it (the IHDR chunk, which must come first): checked
@@ -325,7 +327,7 @@ IoError stbFailure(const StbSource& source, const std::string& path) {
     why = "the JPEG is 0 pixels wide, and an image has at least one pixel";
   else if (reason == "outofmem")
     why = "out of memory";
-  return IoError("cannot read image '" + path + "': " + why);
+  return imageReadError(path, why);
 }
 
 }  // namespace

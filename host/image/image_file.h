@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "errors.h"
 #include "image/image.h"
 #include "image/radiance_image.h"
 
@@ -133,6 +134,9 @@ Image readImage(const std::string& path);
 // The width and height readImage would give, from the file's header, without decoding its
 // pixels. Throws IoError for a file readImage cannot read.
 void readImageSize(const std::string& path, int& width, int& height);
+
+// The error of every image reader: "cannot read image 'PATH': WHY".
+IoError imageReadError(const std::string& path, const std::string& why);
 
 // An image file open for reading (binary), closed when it goes. openImageFile throws IoError
 // ("cannot read image 'PATH': " and the system's reason) when it cannot be opened.

@@ -127,7 +127,7 @@ Pixels readTilePixels(const Tile& tile) {
     image = readImage(tile.path);
   // The file was checked a moment ago; one changed since is refused, not copied out of bounds.
   if (image.width != tile.record.rect.width() || image.height != tile.record.rect.height())
-    throw IoError("cannot read image '" + tile.path + "': it changed while being merged");
+    throw imageReadError(tile.path, "it changed while being merged");
   return image;
 }
 
@@ -398,7 +398,7 @@ RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeRep
   for (const Batch& b : batches) {
     RadianceImage pixels = readFloatImage(b.path);
     if (pixels.width != b.width || pixels.height != b.height)
-      throw IoError("cannot read image '" + b.path + "': it changed while being merged");
+      throw imageReadError(b.path, "it changed while being merged");
     pixels.samples = b.record.total();
     pixels.text.clear();
     accumulateMean(mean, std::move(pixels));

@@ -45,7 +45,7 @@ struct Header {
 Header readHeader(std::istream& in, const std::string& path) {
   Header h;
   std::string magic, w, ht, scale;
-  auto bad = [&](const std::string& why) { return IoError("cannot read image '" + path + "': " + why); };
+  auto bad = [&](const std::string& why) { return imageReadError(path, why); };
   if (!readWord(in, magic) || (magic != "PF" && magic != "Pf")) throw bad("not a PFM file (no PF or Pf)");
   h.channels = magic == "PF" ? 3 : 1;
   if (!readWord(in, w) || !readWord(in, ht) || !readWord(in, scale)) throw bad("truncated PFM header");
@@ -131,7 +131,7 @@ namespace {
 // Reads the raster (when `pixels`) and the trailer's records.
 RadianceImage readPfmParts(const std::string& path, bool pixels) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
+  if (!in) throw imageReadError(path, std::strerror(errno));
   Header h = readHeader(in, path);
   RadianceImage image;
   const std::size_t values = static_cast<std::size_t>(h.width) * h.height * h.channels;
@@ -142,15 +142,15 @@ RadianceImage readPfmParts(const std::string& path, bool pixels) {
   in.seekg(rasterStart);
   if (rasterStart < 0 || fileSize < 0 ||
       static_cast<std::uint64_t>(fileSize - rasterStart) < static_cast<std::uint64_t>(values) * 4)
-    throw IoError("cannot read image '" + path + "': the PFM raster is truncated (" +
-                  std::to_string(h.width) + "x" + std::to_string(h.height) + " pixels need " +
+    throw imageReadError(path, "the PFM raster is truncated (" +
+                         std::to_string(h.width) + "x" + std::to_string(h.height) + " pixels need " +
                   std::to_string(static_cast<std::uint64_t>(values) * 4) + " bytes)");
   if (pixels) {
     image = RadianceImage(h.width, h.height);
     std::vector<std::uint32_t> row(static_cast<std::size_t>(h.width) * h.channels);
     for (int y = h.height - 1; y >= 0; --y) {
       if (!in.read(reinterpret_cast<char*>(row.data()), static_cast<std::streamsize>(row.size() * 4)))
-        throw IoError("cannot read image '" + path + "': the PFM raster is truncated");
+        throw imageReadError(path, "the PFM raster is truncated");
       const bool swap = h.littleEndian != (std::endian::native == std::endian::little);
       float* out = image.pixel(0, y);
       for (int x = 0; x < h.width; ++x)

@@ -199,8 +199,8 @@ bool isPngFile(const std::string& path) {
 
 ImageRecords readPngText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot read image '" + path + "': " + std::strerror(errno));
-  auto cutShort = [&](const std::string& what) { return IoError("cannot read image '" + path + "': " + what); };
+  if (!in) throw imageReadError(path, std::strerror(errno));
+  auto cutShort = [&](const std::string& what) { return imageReadError(path, what); };
   in.seekg(0, std::ios::end);
   const auto fileSize = static_cast<std::uint64_t>(std::max<std::streamoff>(0, in.tellg()));
   in.seekg(8);

@@ -75,14 +75,10 @@ bool isPpmFile(const std::string& path) {
 
 namespace {
 
-IoError readError(const std::string& path, const std::string& why) {
-  return IoError("cannot read image '" + path + "': " + why);
-}
-
 // Why a read of `in` stopped short: the system's reason for a failed read (a FIFO's read cut
 // short by a signal: "Interrupted system call"), else `atEnd`, the file having ended.
 IoError stoppedShort(std::FILE* in, const std::string& path, const std::string& atEnd) {
-  return readError(path, std::ferror(in) ? std::strerror(errno) : atEnd);
+  return imageReadError(path, std::ferror(in) ? std::strerror(errno) : atEnd);
 }
 
 // Netpbm's whitespace (the C locale's isspace).
@@ -122,7 +118,7 @@ NetpbmHeader readHeader(std::FILE* in, char kind, const std::string& path) {
       for (; c != EOF && !isBlank(c); c = std::getc(in))
         if (word.size() < 10) word += static_cast<char>(c);
       if (word.size() > 9 || word.find_first_not_of("0123456789") != std::string::npos)
-        throw readError(path, "the PPM header is malformed ('" + word + "')");
+        throw imageReadError(path, "the PPM header is malformed ('" + word + "')");
       *numbers[count++] = std::stoull(word);
     }
   }
@@ -134,11 +130,11 @@ NetpbmHeader readHeader(std::FILE* in, char kind, const std::string& path) {
 // least one pixel, and samples that fit in memory as stb_image allowed them (2^31 bytes).
 void checkHeader(const NetpbmHeader& h, const std::string& path) {
   if (h.maxval < 1 || h.maxval > 65535)
-    throw readError(path, "its maxval is " + std::to_string(h.maxval) + ", and a PPM's maxval is 1 to 65535");
+    throw imageReadError(path, "its maxval is " + std::to_string(h.maxval) + ", and a PPM's maxval is 1 to 65535");
   checkImageHasPixels(path, static_cast<std::int64_t>(h.width), static_cast<std::int64_t>(h.height));
   if (h.width * h.height * 3 * h.sampleBytes() > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
-    throw readError(path, "it is " + std::to_string(h.width) + "x" + std::to_string(h.height) +
-                              " pixels, more than vkrt reads from a PPM (2 GiB of samples)");
+    throw imageReadError(path, "it is " + std::to_string(h.width) + "x" + std::to_string(h.height) +
+                         " pixels, more than vkrt reads from a PPM (2 GiB of samples)");
 }
 
 // A regular file's raster must be all there, checked before it is allocated (a header may
@@ -149,8 +145,8 @@ void checkRasterIsThere(std::FILE* in, const NetpbmHeader& h, const std::string&
   if (::fstat(fileno(in), &st) != 0 || !S_ISREG(st.st_mode) || at < 0) return;
   const std::uint64_t raster = h.rowBytes() * h.height;
   if (static_cast<std::uint64_t>(at) + raster > static_cast<std::uint64_t>(st.st_size))
-    throw readError(path, "the PPM raster is truncated (" + std::to_string(h.width) + "x" + std::to_string(h.height) +
-                              " pixels need " + std::to_string(raster) + " bytes)");
+    throw imageReadError(path, "the PPM raster is truncated (" + std::to_string(h.width) + "x" +
+                         std::to_string(h.height) + " pixels need " + std::to_string(raster) + " bytes)");
 }
 
 // Each sample value 0..maxval as a byte, round(v * 255 / maxval).

@@ -598,8 +598,9 @@ class Parser {
 
 ParsedScene parseSceneWithWarnings(std::string_view text, const std::string& fileName, const ParseOptions& options) {
   // A file without an LF whose lines end in CR alone would read as one line: its CRs end lines.
-  const bool crLineEnds = text.find('\n') == std::string_view::npos && text.find('\r') != std::string_view::npos &&
-                          text.find('\r') + 1 < text.size();
+  const std::size_t firstCr = text.find('\r');
+  const bool crLineEnds = firstCr != std::string_view::npos && firstCr + 1 < text.size() &&
+                          text.find('\n') == std::string_view::npos;
   std::string lines;
   if (crLineEnds) {
     lines.assign(text);
