@@ -27,11 +27,12 @@ namespace vkrt {
 // compile pays from about 20 M.
 inline constexpr double kSpecializeWhittedAboveRays = 30e6;
 inline constexpr double kSpecializePathAboveRays = 20e6;
-// The same on a GPU. An H200 (doc/device-check.md) compiled a specialised variant in 0.18-0.5
-// s and traced 0.15 ns per estimated ray (cornellNEE at 64 spp: 19 ms for 133 M; a course
-// scene in 0.5-2 ms): even a general variant twice as slow would lose less than the compile
-// below about a billion.
-inline constexpr double kSpecializeGpuAboveRays = 1e9;
+// The same on a GPU. An H200 (doc/device-check.md, its variant table) compiled a specialised
+// variant in 0.17-0.39 s, and it saved 5-8 ps of trace per estimated ray there: cornellNEE at
+// 64 spp (236 M estimated) 26.9 against 28.8 ms, the hw3 dragon (413 M) 134.4 against 137.1
+// ms, the hw4 dragon (826 M) 292.2 against 296.5 ms; a course scene's 1-3 ms within the
+// noise. So the compile pays from about 40 billion.
+inline constexpr double kSpecializeGpuAboveRays = 4e10;
 
 bool specializationPays(bool cpuDevice, double estimatedRays, bool pathShader);
 
