@@ -12,6 +12,7 @@
 
 #include "cpu/path_brdf.h"
 #include "cpu/pixel_tiles.h"
+#include "cpu/sample_numbers.h"
 #include "cpu/scene_query.h"
 #include "gpu_types.h"
 #include "scene/emitters.h"
@@ -35,20 +36,8 @@ struct AreaLight {
 // Emissive triangles and spheres (`emission`, not quad lights) as one more light for
 // next-event estimation (beyond the course): each light sample picks one of them with
 // probability proportional to area x sum(|emission|) (scene/emitters.h), then a point on it,
-// by the rules and from the slots of gpu_types.h (rngEmitterPointSlot, rngEmitterPickSlot),
+// by the rules and from the slots of gpu_types.h (sample_numbers.h: emitterPointSlot, emitterPickSlot),
 // the point as its shape samples one (scene/shapes/shape.h: samplePoint, densityAt).
-
-// The random numbers of one camera sample (gpu_types.h): keyed by seed, pixel, sample.
-struct SampleNumbers {
-  std::uint32_t seed, pixel, sample;
-  std::uint32_t strataSide = 0;   // stratified samples (gpu_rng.h); side 0: none
-  double at(std::uint32_t dimension) const {
-    const float r = gpu::rngUniform(seed, pixel, sample, dimension);
-    if (strataSide == 0) return r;
-    return gpu::rngStratify(r, gpu::rngPixelKey(seed, pixel), sample, dimension, strataSide);
-  }
-  double at(std::uint32_t bounce, std::uint32_t slot) const { return at(gpu::rngDimension(bounce, slot)); }
-};
 
 // A scattering point of a path.
 struct Vertex {
@@ -118,14 +107,14 @@ class PathIntegrator {
     dvec3 sum(0.0);
     for (std::uint32_t k = 0; k < n; ++k) {
       if (stopAfter(k)) return sum;
-      const std::uint32_t slot = gpu::rngEmitterPointSlot(quads, n, k);
+      const std::uint64_t slot = emitterPointSlot(quads, n, k);
       double s = rng.at(bounce, slot), t = rng.at(bounce, slot + 1u);
       if (m > 0) {
         s = (static_cast<int>(k) % m + s) / m;
         t = (static_cast<int>(k) / m + t) / m;
       }
       // Pick an emitter, then a point on it.
-      const double pick = rng.at(bounce, gpu::rngEmitterPickSlot(quads, n, k));
+      const double pick = rng.at(bounce, emitterPickSlot(quads, n, k));
       const std::size_t e = std::min<std::size_t>(
           static_cast<std::size_t>(std::upper_bound(emitterCdf_.begin(), emitterCdf_.end(), pick) - emitterCdf_.begin()),
           emitters_.size() - 1);
@@ -208,7 +197,7 @@ class PathIntegrator {
       for (int k = 0; k < n; ++k) {
         if (stopAfter(j * static_cast<std::size_t>(n) + static_cast<std::size_t>(k))) return sum;
         // Sample a point x' on the light.
-        const std::uint32_t slot = gpu::kRngSlotLightBase + 2u * static_cast<std::uint32_t>(j * n + k);
+        const std::uint64_t slot = quadLightSlot(j, static_cast<std::uint64_t>(n), static_cast<std::uint64_t>(k));
         double s = rng.at(bounce, slot), t = rng.at(bounce, slot + 1u);
         if (m > 0) {
           s = (k % m + s) / m;
