@@ -10,7 +10,7 @@ constexpr const char* kWarningKindNames[] = {
     "unknown commands", "keywords in another case", "extra arguments", "repeated commands",
     "commands before 'size'", "output names", "commands the integrator does not use", "paths without an end",
     "values clamped",
-    "scenes without lights", "line ends"};
+    "scenes without lights", "line ends", "coordinates beyond the exact range"};
 static_assert(std::size(kWarningKindNames) == static_cast<std::size_t>(WarningKind::Count));
 
 }  // namespace

@@ -19,6 +19,7 @@ enum class WarningKind {
   Clamped,
   NoLights,
   LineEnds,
+  Magnitude,
   Count
 };
 

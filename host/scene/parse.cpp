@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <optional>
 
@@ -45,15 +46,36 @@ constexpr double kMaxRoughness = 1e4;
 constexpr std::string_view kBrdfNames[] = {"phong", "ggx"};
 constexpr std::string_view kOnOffNames[] = {"on", "off"};
 
+// Beyond this magnitude, squares and products of lengths come near the largest double
+// (1.8e308, the square of 1.34e154), and the picture no longer follows the scene
+// (doc/robustness.md, "Where and how big a scene may be"). Measured: a sphere around the
+// camera and a scene scaled up render as they should up to 1e154 and are wrong from 2e154
+// (the CPU backend first); a margin of 10 leaves room for differences and sums of squares.
+constexpr double kMaxExactMagnitude = 1e153;
+
+// The largest magnitude among the coordinates of box (lo, hi): infinite when one is not finite.
+double largestMagnitude(const dvec3& lo, const dvec3& hi) {
+  double m = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (double v : {lo[i], hi[i]}) m = std::isfinite(v) ? std::max(m, std::abs(v)) : HUGE_VAL;
+  return m;
+}
+
 // The shapes' own commands (shapes/shape_list.h): each reads its shape in the shape's file
-// and adds it to its array.
+// and adds it to its array, and returns the largest magnitude of the shape's box (0 when it
+// added none).
 struct ShapeCommandRow {
   std::string_view name;
-  void (*read)(const ShapeCommand&, SceneDesc&);
+  double (*read)(const ShapeCommand&, SceneDesc&);
 };
-#define VKRT_SHAPE_COMMAND(name, read, member)                  \
-  ShapeCommandRow{name, [](const ShapeCommand& c, SceneDesc& s) { \
-    if (auto shape = read(c)) s.member.push_back(*shape);        \
+#define VKRT_SHAPE_COMMAND(name, read, member)                            \
+  ShapeCommandRow{name, [](const ShapeCommand& c, SceneDesc& s) -> double { \
+    auto shape = read(c);                                                  \
+    if (!shape) return 0.0;                                                \
+    s.member.push_back(*shape);                                            \
+    dvec3 lo, hi;                                                          \
+    shapes::bounds(*shape, lo, hi);                                        \
+    return largestMagnitude(lo, hi);                                       \
   }},
 constexpr ShapeCommandRow kShapeCommands[] = {VKRT_SHAPE_COMMANDS(VKRT_SHAPE_COMMAND)};
 #undef VKRT_SHAPE_COMMAND
@@ -300,7 +322,10 @@ class Parser {
       error("camera field of view must be in (0, 180) degrees, got " + quoted(args_[9]));
       ok = false;
     }
-    if (ok) scene_.camera = c;
+    if (ok) {
+      scene_.camera = c;
+      warnBeyondExactRange("camera", largestMagnitude(glm::min(c.from, c.at), glm::max(c.from, c.at)));
+    }
   }
 
   std::uint32_t currentMaterial() {
@@ -315,7 +340,17 @@ class Parser {
   void readShape(const ShapeCommandRow& row) {
     const ShapeCommand command{args_, [this](std::string message) { error(std::move(message)); }, transform_,
                                [this] { return currentMaterial(); }};
-    row.read(command, scene_);
+    warnBeyondExactRange(row.name, row.read(command, scene_));
+  }
+
+  // A shape or camera whose coordinates lie beyond kMaxExactMagnitude: rendered, with a warning.
+  void warnBeyondExactRange(std::string_view what, double magnitude) {
+    if (!(magnitude > kMaxExactMagnitude)) return;
+    char m[32];
+    std::snprintf(m, sizeof m, "%.3g", magnitude);
+    warn(WarningKind::Magnitude, "'" + std::string(what) + "' reaches coordinates of " + m +
+                                     ", beyond 1e153, where squares of lengths come near the largest double: the "
+                                     "picture may not show the scene; scale the scene down");
   }
 
   void cmdSizeHint(std::string_view cmd) {
@@ -365,7 +400,14 @@ class Parser {
     if (!indices("tri", vertices_.size(), "vertices", idx)) return;
     Triangle t;
     for (int k = 0; k < 3; ++k) t.p[k] = toWorldPoint(vertices_[idx[k]]);
+    addTriangle(t, "tri");
+  }
+
+  void addTriangle(Triangle& t, std::string_view cmd) {
     t.material = currentMaterial();
+    dvec3 lo, hi;
+    shapes::bounds(t, lo, hi);
+    warnBeyondExactRange(cmd, largestMagnitude(lo, hi));
     scene_.triangles.push_back(t);
   }
 
@@ -385,8 +427,7 @@ class Parser {
       else n /= len;
       t.n[k] = n != dvec3(0.0) ? n : dvec3(0.0, 0.0, 1.0);
     }
-    t.material = currentMaterial();
-    scene_.triangles.push_back(t);
+    addTriangle(t, "trinormal");
   }
 
   void cmdTranslate() {

@@ -154,6 +154,17 @@ std::vector<Accepted> acceptedInputs() {
       {"UnlimitedDepthRouletteTurnedOff", kOk + "maxdepth -1\nrussianroulette on\nintegrator pathtracer\nrussianroulette off\n", 3,
        "'maxdepth -1' (no limit) with 'russianroulette off'",
        [](const SceneDesc& s) { EXPECT_FALSE(s.path.russianRoulette); }},
+      // Coordinates beyond 1e153: squares of lengths near the largest double (a sphere of
+      // radius 2e154 around the camera renders wrong on the CPU backend).
+      {"SphereBeyondTheExactRange", kOk + "sphere 0 0 0 1e160\n", 3,
+       "'sphere' reaches coordinates of 1e+160, beyond 1e153, where squares of lengths come near the largest double",
+       [](const SceneDesc& s) { EXPECT_EQ(s.spheres.size(), 1u); }},
+      {"TriangleScaledBeyondTheExactRange", kOk + "vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nscale 3e153 1 1\ntri 0 1 2\n",
+       7, "'tri' reaches coordinates of 3e+153, beyond 1e153",
+       [](const SceneDesc& s) { EXPECT_EQ(s.triangles.size(), 1u); }},
+      {"CameraBeyondTheExactRange", "size 64 48\ncamera 0 0 -5e155 0 0 0 0 1 0 45\n", 2,
+       "'camera' reaches coordinates of 5e+155, beyond 1e153",
+       [](const SceneDesc& s) { EXPECT_EQ(s.camera.from.z, -5e155); }},
       {"ExtraArgumentsToIntegrator", kOk + "integrator direct fast\n", 3,
        "'integrator' takes 1 argument (raytracer, analyticdirect, direct or pathtracer), got 2: the extra one is ignored",
        [](const SceneDesc& s) { EXPECT_EQ(s.path.integrator, Integrator::Direct); }},
@@ -297,6 +308,9 @@ TEST(ParseWarnings, CleanFilesHaveNone) {
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "maxdepth 2\noutput x.PNG\nsphere 0 0 0 1\n", "ok.test").warnings.empty());
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "output render.ppm\n", "ok.test").warnings.empty());   // written as PPM
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "output RENDER.PPM\n", "ok.test").warnings.empty());
+  // Up to 1e153, and tiny: the picture follows the scene (doc/robustness.md).
+  EXPECT_TRUE(parseSceneWithWarnings("size 64 48\ncamera 0 0 1e153 0 0 0 0 1 0 45\nsphere 0 0 0 1e153\n"
+                                     "sphere 0 0 0 1e-200\n", "ok.test").warnings.empty());
   for (const std::string& name : projectSceneNames()) {
     ParsedScene p = parseSceneFileWithWarnings(sourcePath("scenes/" + name + ".test"));
     EXPECT_TRUE(p.warnings.empty()) << name << ": " << p.warnings.front().format();
