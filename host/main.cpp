@@ -300,6 +300,7 @@ int merge(const vkrt::Options& options) {
   for (const std::string& tile : options.mergeTiles) files.addInput(tile, "the tile");
   files.addOutput(options.mergeOutput, "the merged image");
   vkrt::checkOutputWritable(options.mergeOutput);
+  vkrt::checkMergeInputsAreFiles(options.mergeTiles);
   vkrt::MergeReport merged;
   auto printWarnings = [&] {   // -q leaves warnings out, as a scene's
     if (!options.quiet)

@@ -51,14 +51,25 @@ RunFiles::File RunFiles::resolvedOutput(const std::string& path, const std::stri
 }
 
 void RunFiles::checkOutput(const std::string& path, const std::string& role) const {
-  File out = resolvedOutput(path, role);
   auto spelt = [](const File& f) {
     return "'" + abbreviated(f.path) + "'";
   };
+  auto refuseInput = [&](const File& out, const File& in) {
+    throw RefusedOutput("refusing to write " + role + " " + spelt(out) + ": it is " + in.role + " " + spelt(in) +
+                        ", which this run reads; writing it would destroy that file (name another output)");
+  };
+  // An input first, by what the file is: resolveOutputFile refuses some existing files (a hard
+  // link among them) with an I/O error, and an input should be told as one.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) {
+    const File existing{path, role, canonicalName(path), true, static_cast<std::uint64_t>(st.st_dev),
+                        static_cast<std::uint64_t>(st.st_ino)};
+    for (const File& in : inputs_)
+      if (same(existing, in)) refuseInput(existing, in);
+  }
+  File out = resolvedOutput(path, role);
   for (const File& in : inputs_)
-    if (same(out, in))
-      throw RefusedOutput("refusing to write " + role + " " + spelt(out) + ": it is " + in.role + " " + spelt(in) +
-                          ", which this run reads; writing it would destroy that file (name another output)");
+    if (same(out, in)) refuseInput(out, in);
   for (const File& earlier : outputs_)
     if (same(out, earlier))
       throw RefusedOutput("refusing to write " + role + " " + spelt(out) + ": it is also " + earlier.role + " " +

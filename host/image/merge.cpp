@@ -4,6 +4,7 @@
 #include "image/merge.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -17,6 +18,8 @@
 #include "image/image_file.h"
 #include "image/render_identity.h"
 #include "image/row_sink.h"
+
+#include <sys/stat.h>
 
 namespace vkrt {
 namespace {
@@ -261,6 +264,14 @@ void streamTiles(const CheckedTiles& checked, const std::function<void(int, cons
   }
 }
 
+// The name of the linear float format of `path` ("PFM"), read again: a file that has changed
+// since is no longer one.
+std::string floatFormatName(const std::string& path) {
+  const ImageFormat* format = floatImageFormatOf(path);
+  if (!format) throw imageReadError(path, "it changed while being merged");
+  return std::string(format->name);
+}
+
 // "WHY: merge tiles of one kind (all PFM, or all PNG or PPM)".
 std::string mixedTiles(const std::string& why) {
   return why + ": merge tiles of one kind (all " + imageFormatNamesText(FormatsOf::LinearFloat) + ", or all " +
@@ -272,7 +283,7 @@ std::string mixedTiles(const std::string& why) {
 Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
   for (const std::string& path : tilePaths)
     if (isFloatImageFile(path))
-      throw UsageError(mixedTiles("tile '" + path + "' is a " + std::string(floatImageFormatOf(path)->name) + " file"));
+      throw UsageError(mixedTiles("tile '" + path + "' is a " + floatFormatName(path) + " file"));
   return placeTiles<Image>(tilePaths, allowGaps, report);
 }
 
@@ -291,7 +302,7 @@ void writeMergedCrops(const std::vector<std::string>& tilePaths, bool allowGaps,
   const bool floatTiles = !tilePaths.empty() && std::all_of(tilePaths.begin(), tilePaths.end(), isFloatImageFile);
   for (const std::string& path : tilePaths)
     if (!floatTiles && isFloatImageFile(path))
-      throw UsageError(mixedTiles("tile '" + path + "' is a " + std::string(floatImageFormatOf(path)->name) + " file"));
+      throw UsageError(mixedTiles("tile '" + path + "' is a " + floatFormatName(path) + " file"));
   CheckedTiles checked = checkTiles(tilePaths, allowGaps, floatTiles);
   if (floatTiles) {
     const double gamma = checked.samples ? checked.samples->gamma : 1.0;
@@ -302,6 +313,17 @@ void writeMergedCrops(const std::vector<std::string>& tilePaths, bool allowGaps,
                        [&](const ByteRowSink& sink) { streamTiles<Image>(checked, sink); });
   }
   fillReport(checked, report);
+}
+
+void checkMergeInputsAreFiles(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) throw imageReadError(path, std::strerror(errno));
+    if (S_ISDIR(st.st_mode)) throw imageReadError(path, std::strerror(EISDIR));
+    if (!S_ISREG(st.st_mode))
+      throw imageReadError(path, "it is not a regular file (a pipe, FIFO or device), and merge reads each input more "
+                                 "than once (its records first, then its pixels); save it to a file first");
+  }
 }
 
 bool areSampleBatches(const std::vector<std::string>& paths) {

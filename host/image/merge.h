@@ -22,6 +22,12 @@ struct MergeReport {
   int width = 0, height = 0;     // tiles: the merged image's size
 };
 
+// Merging reads each input more than once (its records, then its pixels, so that only the
+// tiles that share a row are held): throws IoError, naming the file, for an input that is
+// missing, a folder, or not a regular file (a pipe, which can be read once, or a FIFO, whose
+// opening would wait for a writer). Call it before the functions below.
+void checkMergeInputsAreFiles(const std::vector<std::string>& paths);
+
 // Reads every tile's records, checks them, then reads the tiles' pixels one at a time and
 // places each where its record says. Throws UsageError (before anything is allocated for the
 // merged image) for a set of tiles that does not make one image of one render: a tile without

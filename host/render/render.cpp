@@ -432,9 +432,11 @@ unsigned long long availableMemoryBytes() {
 std::string resolveOutput(const SceneDesc& scene, const RenderRequest& request) {
   if (request.output || request.outputDir) {
     std::string path = request.output ? *request.output : pathInOutputDir(scene, *request.outputDir);
+    if (request.onOutput) request.onOutput(path);
     checkOutputWritable(path);
     return path;
   }
+  if (request.onOutput) request.onOutput(scene.output);
   try {
     checkOutputWritable(scene.output);
   } catch (const IoError& e) {
@@ -483,7 +485,6 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   report.estimator = applyEstimator(request, scene);
   if (checkOutput) {
     report.outputPath = resolveOutput(scene, request);
-    if (request.onOutput) request.onOutput(report.outputPath);
   }
   if (request.crop) {
     std::string problem = cropProblem(*request.crop, scene.width, scene.height);

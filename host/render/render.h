@@ -74,8 +74,10 @@ struct RenderRequest {
   // Every warning is an error: the scene's (doc/scene-format.md, "Warnings and errors"), and pixels whose colour came
   // out NaN or infinite (then no image is written).
   bool strict = false;
-  // Called with the output path once it is resolved and checked, before the render starts;
-  // it may throw to refuse the path (a batch refuses a path an earlier scene wrote).
+  // Called with the output path once it is resolved, before it is checked for writing (so
+  // that a file the run reads is refused as such, whatever else is wrong with replacing it)
+  // and before the render starts; it may throw to refuse the path (a batch refuses a path an
+  // earlier scene wrote).
   std::function<void(const std::string&)> onOutput;
   // Called once with the scene's warnings, if it has any, after parsing and before the
   // render starts (not called with --strict: they are errors then).
@@ -174,8 +176,9 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
 // The memory the machine has available now (MemAvailable), or 0 when unknown.
 unsigned long long availableMemoryBytes();
 
-// The output path for a parsed scene, checked before rendering. A bad `output` line in the
-// scene is a SceneError at that line; a bad override (`output` or `outputDir`) is an IoError.
+// The output path for a parsed scene, checked before rendering: first by request.onOutput,
+// then for writing. A bad `output` line in the scene is a SceneError at that line; a bad
+// override (`output` or `outputDir`) is an IoError.
 std::string resolveOutput(const SceneDesc& scene, const RenderRequest& request);
 
 }  // namespace vkrt
