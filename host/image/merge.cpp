@@ -413,6 +413,19 @@ RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeRep
   std::optional<std::string> identity = checkIdentities(paths, texts, "batch", "batches", warnings);
   merged.gamma = batches.front().record.gamma;
   merged.stratified = batches.front().record.stratified;
+  // One order whatever the command line's (a shell's glob puts batch-10 before batch-2): the
+  // batches by their first samples, seed then index, so that the mean's rounding, and so its
+  // bits, are those of the batches taken in sample order (as --watch and --time add them), and
+  // the record lists its ranges in that order.
+  auto byFirstSample = [](const SampleRange& a, const SampleRange& b) {
+    return a.seed != b.seed ? a.seed < b.seed : a.first < b.first;
+  };
+  auto firstSample = [&](const Batch& b) {
+    return *std::min_element(b.record.ranges.begin(), b.record.ranges.end(), byFirstSample);
+  };
+  std::stable_sort(batches.begin(), batches.end(),
+                   [&](const Batch& a, const Batch& b) { return byFirstSample(firstSample(a), firstSample(b)); });
+  std::sort(merged.ranges.begin(), merged.ranges.end(), byFirstSample);
 
   // The rasters, one at a time, into the running mean.
   RadianceImage mean;

@@ -426,6 +426,32 @@ TEST(MergeBatches, BatchesOfADeterministicRenderAverageToItsImage) {
   EXPECT_EQ(mean.text[0].second, "8 gamma 1 seeds 1:0+2 2:0+5 3:0+1");
 }
 
+// The merge is the same bits, and the same record, whatever the order the files are given in
+// (a shell's glob puts batch-10 before batch-2): the batches are taken by their first samples.
+TEST(MergeBatches, TheOrderOfTheFilesChangesNoBit) {
+  std::string dir = freshDir("float/merge-order");
+  std::vector<std::string> paths;
+  for (std::uint32_t seed : {1u, 2u, 3u, 10u}) {
+    RadianceImage img(16, 16);
+    for (std::size_t i = 0; i < img.rgb.size(); ++i)   // values whose running mean rounds by order
+      img.rgb[i] = 0.1f * static_cast<float>(seed) + 1e-3f * static_cast<float>((i * 7919u + seed * 104729u) % 1000u);
+    paths.push_back(writeBatch(dir + "/batch-" + std::to_string(seed) + ".pfm", img, {{{seed, 0, 1 + seed % 3}}, 1.0}));
+  }
+  const RadianceImage inOrder = mergeSampleBatches(paths);
+  int orders = 0;
+  std::vector<std::string> shuffled = paths;
+  std::sort(shuffled.begin(), shuffled.end());   // batch-1, batch-10, batch-2, batch-3: the glob's order
+  do {
+    RadianceImage mean = mergeSampleBatches(shuffled);
+    EXPECT_TRUE(sameBits(mean.rgb, inOrder.rgb)) << shuffled[0] << " " << shuffled[1] << " " << shuffled[2];
+    EXPECT_EQ(mean.text, inOrder.text);
+    ++orders;
+  } while (std::next_permutation(shuffled.begin(), shuffled.end()));
+  EXPECT_EQ(orders, 24);
+  ASSERT_EQ(inOrder.text.size(), 1u);
+  EXPECT_EQ(inOrder.text[0].second, "8 gamma 1 seeds 1:0+2 2:0+3 3:0+1 10:0+2");
+}
+
 TEST(MergeBatches, WeightsAreTheSampleCounts) {
   std::string dir = freshDir("float/merge-weights");
   RadianceImage crop1 = filled(3, 2, 1.0f, 1), crop3 = filled(3, 2, 2.0f, 1);
