@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 
 #include "cli/exit_status.h"
 #include "cli/file_watch.h"
 #include "cli/warning_printers.h"
 #include "cli/run_files.h"
 #include "counted.h"
+#include "image/atomic_file.h"
 #include "image/image_file.h"
 #include "image/samples.h"
 #include "interrupt.h"
@@ -30,6 +32,13 @@ class Watcher {
   explicit Watcher(Options& options) : o_(options), watch_(options.request.scenePath) {}
 
   int run() {
+    // An output named on the command line that cannot be written (a folder that does not
+    // exist): no edit of the scene fixes it, so it is an error now, not a wait (IoError).
+    if (o_.request.output) checkOutputWritable(*o_.request.output);
+    if (o_.request.outputDir)
+      checkOutputWritable((std::filesystem::path(*o_.request.outputDir) /
+                           std::filesystem::path(o_.request.scenePath).stem().concat(defaultImageExtension()))
+                              .string());
     for (int round = 1;; ++round) {
       bool changed = false;
       try {

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <thread>
 
@@ -19,6 +20,7 @@
 
 using namespace vkrt;
 using namespace vkrt::test;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -79,7 +81,84 @@ void watchFollowsEdits(const std::string& backend) {
   EXPECT_EQ(fileCount(dir), 6u);
 }
 
+// Waits until the log holds `text` `count` times.
+bool logShowsTimes(const std::string& logPath, const std::string& text, int count, double seconds = 60) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (fileExists(logPath)) {
+      const std::string log = readFile(logPath);
+      int n = 0;
+      for (std::size_t at = log.find(text); at != std::string::npos; at = log.find(text, at + 1)) ++n;
+      if (n >= count) return true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
 }  // namespace
+
+// A scene given as a symbolic link renders again when it is written through the link, when
+// its target is written or replaced, and a scene whose folder is removed and made again, or
+// which is deleted and written again, is followed too: each said as it happens, none missed.
+TEST(Watch, FollowsALinkAFolderMadeAgainAndADeletion) {
+  const std::string dir = freshDir("watch/links");
+  fs::create_directories(dir + "/real");
+  const std::string target = dir + "/real/target.test", link = dir + "/link.test", log = dir + "/log";
+  writeFile(target, whittedScene("0.8 0.2 0.2"));
+  fs::create_symlink("real/target.test", link);
+  Spawned watching = spawnVkrt({"--watch", "--backend", "cpu", "-o", dir + "/l.png", link}, log);
+  ASSERT_TRUE(logShows(log, "[1] wrote")) << readFile(log);
+  writeFile(link, whittedScene("0.2 0.8 0.2"));   // through the link
+  ASSERT_TRUE(logShows(log, "[2] wrote")) << readFile(log);
+  writeFile(target, whittedScene("0.2 0.2 0.8"));   // the target itself
+  ASSERT_TRUE(logShows(log, "[3] wrote")) << readFile(log);
+  saveByRename(target, whittedScene("0.5 0.5 0.5"));   // a new target renamed into place
+  ASSERT_TRUE(logShows(log, "[4] wrote")) << readFile(log);
+  EXPECT_EQ(readImage(dir + "/l.png").rgb, [&] {
+    EXPECT_EQ(runVkrt("--backend cpu -q -o " + dir + "/fresh.png " + link).exitCode, 0);
+    return readImage(dir + "/fresh.png").rgb;
+  }());
+  ::kill(watching.pid, SIGINT);
+  EXPECT_EQ(waitVkrtWithin(watching, 30).exitCode, 130);
+
+  // The scene's folder removed and made again (a checkout can do this), then the scene deleted.
+  const std::string sub = dir + "/sub", scene = sub + "/x.test", log2 = dir + "/log2";
+  fs::create_directories(sub);
+  writeFile(scene, whittedScene("0.8 0.2 0.2"));
+  Spawned again = spawnVkrt({"--watch", "--backend", "cpu", "-o", dir + "/x.png", scene}, log2);
+  ASSERT_TRUE(logShows(log2, "[1] wrote")) << readFile(log2);
+  fs::remove_all(sub);
+  fs::create_directories(sub);
+  writeFile(scene, whittedScene("0.2 0.8 0.2"));
+  ASSERT_TRUE(logShows(log2, "[2] wrote")) << readFile(log2);
+  writeFile(scene, whittedScene("0.2 0.2 0.8"));   // and edits after it are still seen
+  ASSERT_TRUE(logShows(log2, "[3] wrote")) << readFile(log2);
+  fs::remove(scene);
+  ASSERT_TRUE(logShowsTimes(log2, "waiting for the next change of " + scene, 1)) << readFile(log2);
+  EXPECT_NE(readFile(log2).find("cannot open scene file"), std::string::npos) << readFile(log2);
+  writeFile(scene, whittedScene("0.5 0.5 0.5"));
+  ASSERT_TRUE(logShows(log2, "[5] wrote")) << readFile(log2);
+  ::kill(again.pid, SIGINT);
+  EXPECT_EQ(waitVkrtWithin(again, 30).exitCode, 130);
+  // One render per change: no change seen twice.
+  EXPECT_EQ(readFile(log2).find("[6]"), std::string::npos) << readFile(log2);
+}
+
+// An output named on the command line in a folder that does not exist: no edit of the scene
+// can fix it, so --watch exits 4 at once instead of waiting.
+TEST(Watch, AnOutputThatCannotBeWrittenEndsIt) {
+  const std::string dir = freshDir("watch/no-output-folder");
+  writeFile(dir + "/s.test", whittedScene("0.8 0.2 0.2"));
+  for (const std::string& output : {dir + "/missing/x.png", dir + "/missing/"}) {
+    // (timeout: a watch that waits would never end the test.)
+    RunResult r = runCommand("timeout 60 '" + vkrtBinary() + "' --watch --backend cpu -o " + output + " " + dir +
+                             "/s.test");
+    EXPECT_EQ(r.exitCode, 4) << r.output;
+    EXPECT_NE(r.output.find("output directory '" + dir + "/missing' does not exist"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("waiting"), std::string::npos) << r.output;
+  }
+}
 
 TEST(Watch, RendersAgainAtEachChangeOnTheCpu) { watchFollowsEdits("cpu"); }
 
