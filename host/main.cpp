@@ -265,7 +265,7 @@ int renderBatch(const vkrt::Options& o) {
       vkrt::ProgressBar progress(!o.quiet);
       report = vkrt::renderSceneFile(request, progress, nullptr, &session);
       files.addOutput(report.outputPath, role);
-      if (o.stats) printStats(request, report);
+      if (o.stats && !o.request.dryRun) printStats(request, report);
       warnNonFinite(o, report);
     } catch (...) {
       status = vkrt::reportError(failure(), {scenePath, o.quiet}, stderr);
@@ -274,7 +274,10 @@ int renderBatch(const vkrt::Options& o) {
     worst = vkrt::worseExitStatus(worst, status);
     if (status == kExitOk) {
       ++rendered;
-      if (!o.quiet)
+      if (!o.quiet && o.request.dryRun)
+        std::fprintf(stderr, "vkrt: [%zu/%zu] ok      %s -> %s (%dx%d), not rendered (--dry-run)\n", done, n,
+                     scenePath.c_str(), report.outputPath.c_str(), report.width, report.height);
+      else if (!o.quiet)
         std::fprintf(stderr, "vkrt: [%zu/%zu] ok      %s -> %s (%dx%d%s) in %.2f s\n", done, n, scenePath.c_str(),
                      report.outputPath.c_str(), report.width, report.height, samplesNote(report).c_str(), seconds);
     } else {
@@ -286,8 +289,8 @@ int renderBatch(const vkrt::Options& o) {
   }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!o.quiet || worst != kExitOk) {
-    std::fprintf(stderr, "vkrt: %s in %.2f s: %zu rendered, %zu failed", vkrt::counted(n, "scene", "scenes").c_str(),
-                 seconds, rendered, failed);
+    std::fprintf(stderr, "vkrt: %s in %.2f s: %zu %s, %zu failed", vkrt::counted(n, "scene", "scenes").c_str(),
+                 seconds, rendered, o.request.dryRun ? "checked (--dry-run: nothing rendered)" : "rendered", failed);
     if (done < n) std::fprintf(stderr, ", %zu not rendered (stopped)", n - done);
     std::fprintf(stderr, "; exit status %d\n", worst);
   }
@@ -370,6 +373,12 @@ int renderOne(vkrt::Options& options) {
   options.request.onWarnings = vkrt::warningPrinter(options.quiet);
   options.request.onOptionWarning = vkrt::optionWarningPrinter(options.quiet);
   vkrt::RenderReport report = vkrt::renderSceneFile(options.request, progress, reference ? &image : nullptr);
+  if (options.request.dryRun) {
+    if (!options.quiet)
+      std::fprintf(stderr, "vkrt: %s -> %s (%dx%d), not rendered (--dry-run)\n", options.request.scenePath.c_str(),
+                   report.outputPath.c_str(), report.width, report.height);
+    return kExitOk;
+  }
   if (options.stats) printStats(options.request, report);
   warnNonFinite(options, report);
   if (!options.quiet)

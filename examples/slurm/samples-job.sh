@@ -4,7 +4,8 @@
 # BATCH_DIR/batch-I.pfm, a float image whose vkrt-samples record carries its seed and sample
 # count for vkrt merge. SPP (samples per batch) and TIME (seconds per batch) are optional:
 # without SPP the scene's spp; with TIME the samples taken when the time was up (at most SPP).
-# Submitted by submit-samples.sh, which sets the variables below (sbatch --export).
+# Submitted by submit-samples.sh, which sets the variables below in the job's environment
+# (sbatch --export=ALL).
 #SBATCH --job-name=vkrt-samples
 #SBATCH --ntasks=1
 #SBATCH --cpus-per-task=1
@@ -14,8 +15,10 @@ i=${SLURM_ARRAY_TASK_ID:?not an array task}
 limits=()
 [ -z "${SPP:-}" ] || limits+=(--spp "$SPP")
 [ -z "${TIME:-}" ] || limits+=(--time "$TIME")
-# VKRT_ARGS: extra options for every batch (e.g. "--backend cpu --size 640x480"), split on blanks.
+# VKRT_ARGS: extra options for every batch, as shell words (e.g. "--backend cpu --size 640x480";
+# quote a value that holds blanks: "--device 'NVIDIA H200'"), as submit-samples.sh writes them.
+vkrt_args=()
+eval "vkrt_args=(${VKRT_ARGS:-})"
 # Not quiet: the log says how many samples the batch took.
-# shellcheck disable=SC2086
-exec "$VKRT" ${VKRT_ARGS:-} --threads "${SLURM_CPUS_PER_TASK:-1}" "${limits[@]}" \
+exec "$VKRT" "${vkrt_args[@]}" --threads "${SLURM_CPUS_PER_TASK:-1}" "${limits[@]}" \
   --seed $((SEED_BASE + i)) -o "$BATCH_DIR/batch-$i.pfm" "$SCENE"

@@ -7,8 +7,12 @@
 # --tiles     the grid (default 4x4); --vkrt the binary (default: vkrt on PATH); --work the
 #             folder for the tiles and logs (default OUT.png.tiles), on storage every node sees;
 # --wait      wait for the merge to finish and exit with its status.
-# VKRT OPTIONS go to every tile (e.g. --backend cpu, --size 1920x1080). The full image size is
-# the scene's `size` (its last one) or --size's; --scale is not read here: give --size.
+# VKRT OPTIONS go to every tile (e.g. --backend cpu, --size 1920x1080, --spp 64). The full image
+# size is the scene's `size` (its last one) or --size's; --scale is not read here: give --size.
+# Refused before anything is submitted: options that would make the tiles differ (--time: each
+# tile would stop at its own sample count, and tiles of different counts do not merge), that
+# this script sets (--crop, -o/--output) and that write no tile (--watch, --compare, --check,
+# --list-devices, --help, --version).
 # Any further sbatch options: the environment variables SBATCH_* (e.g. SBATCH_PARTITION).
 set -euo pipefail
 tiles=4x4 vkrt=$(command -v vkrt || true) work="" wait=""
@@ -32,13 +36,20 @@ vkrt=$(realpath "$vkrt")
 [[ $tiles =~ ^([1-9][0-9]*)x([1-9][0-9]*)$ ]] || { echo "submit-tiles: --tiles expects COLSxROWS" >&2; exit 1; }
 cols=${BASH_REMATCH[1]} rows=${BASH_REMATCH[2]}
 
-# The full image size: --size among the options, else the scene's last `size` line.
+# The options that cannot work in a tile; the full image size: --size among the options, else
+# the scene's last `size` line.
 size=""
 for ((k = 0; k < ${#extra[@]}; k++)); do
   case "${extra[k]}" in
     --size) size=${extra[k + 1]:-} ;;
     --size=*) size=${extra[k]#--size=} ;;
     --scale|--scale=*) echo "submit-tiles: give --size instead of --scale" >&2; exit 1 ;;
+    --time|--time=*)
+      echo "submit-tiles: ${extra[k]} is not for tiles: each tile would stop at its own number of samples, and tiles of different sample counts do not merge; give --spp" >&2; exit 1 ;;
+    --crop|--crop=*|-o|--output|--output=*)
+      echo "submit-tiles: ${extra[k]} is not for the tiles' options: this script gives each tile its --crop and -o (OUT.png is the merged image)" >&2; exit 1 ;;
+    --watch|--compare|--check|--check=*|--list-devices|-h|--help|--version)
+      echo "submit-tiles: ${extra[k]} is not for the tiles' options: a tile render with it writes no tile to merge" >&2; exit 1 ;;
   esac
 done
 [ -n "$size" ] || size=$(awk 'tolower($1) == "size" && NF >= 3 { s = $2 "x" $3 } END { print s }' "$scene" | tr -d '\r')
@@ -52,13 +63,17 @@ work=$(realpath -m "${work:-$output.tiles}")
 mkdir -p "$work"
 here=$(dirname "$(realpath "$0")")
 count=$((cols * rows))
-common="ALL,VKRT=$vkrt"
-array=$(sbatch --parsable --array=0-$((count - 1)) --output="$work/tile-%a.log" \
-  --export="$common,TILE_DIR=$work,SCENE=$scene,COLS=$cols,ROWS=$rows,FULL_W=$width,FULL_H=$height,VKRT_ARGS=${extra[*]}" \
+# The jobs' variables go through the environment (--export=ALL), not in --export's
+# comma-separated list, which would cut a value that holds a comma; VKRT_ARGS as shell words.
+vkrt_args=""
+[ ${#extra[@]} -eq 0 ] || vkrt_args=$(printf '%q ' "${extra[@]}")
+array=$(VKRT=$vkrt TILE_DIR=$work SCENE=$scene COLS=$cols ROWS=$rows FULL_W=$width FULL_H=$height \
+  VKRT_ARGS=$vkrt_args sbatch --parsable --export=ALL --array=0-$((count - 1)) --output="$work/tile-%a.log" \
   "$here/tile-job.sh")
 array=${array%%;*}   # (a cluster name may follow)
-merge=$(sbatch --parsable $wait --dependency="afterok:$array" --kill-on-invalid-dep=yes \
-  --output="$work/merge.log" --export="$common,PART_DIR=$work,OUTPUT=$output,PARTS=$count" "$here/merge-job.sh") || {
+merge=$(VKRT=$vkrt PART_DIR=$work PART_NAME=tile PART_EXT=png OUTPUT=$output PARTS=$count \
+  sbatch --parsable $wait --export=ALL --dependency="afterok:$array" --kill-on-invalid-dep=yes \
+  --output="$work/merge.log" "$here/merge-job.sh") || {
   echo "submit-tiles: the merge job failed (see $work/merge.log and $work/tile-*.log)" >&2; exit 1; }
 # (sbatch --wait may report success for a merge cancelled because a tile failed.)
 if [ -n "$wait" ] && [ ! -f "$output" ]; then

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Proves the Slurm examples on a one-node cluster made here: installs slurm and munge when
-# missing (Debian 12; root or sudo), starts a private munged, slurmctld and slurmd under a
-# temporary folder (no systemd, nothing under /etc changed), renders a scene as a 3x2 tile
-# array plus a dependent merge, a path-traced scene as 4 sample batches plus a dependent
-# merge, and a list of scenes in chunks; checks that the merged tiles and the chunks' images
-# equal one-machine renders bit for bit, and the merged batches a one-machine render of other
+# Proves the Slurm examples on a one-node cluster made here. First, with a stand-in sbatch
+# that must not be called, that the submit scripts refuse what cannot work: scenes in chunks
+# that would write the same file, tile options that would make the tiles differ. Then it
+# installs slurm and munge when missing (Debian 12; root or sudo), starts a private munged,
+# slurmctld and slurmd under a temporary folder (no systemd, nothing under /etc changed),
+# renders a scene as a 3x2 tile array plus a dependent merge, a path-traced scene as 4 sample
+# batches plus a dependent merge, and a list of scenes in chunks, with paths and an option
+# value that hold commas and blanks; checks that the merged tiles and the chunks' images equal
+# one-machine renders bit for bit, and the merged batches a one-machine render of other
 # samples statistically; and stops what it started. Needs perl (Debian's perl-base) to read
 # the float images.
 #
@@ -20,17 +23,11 @@ start=$(date +%s)
 say() { echo "slurm-test: $*"; }
 [ -x "$vkrt" ] || { say "no vkrt binary at $vkrt (build first)" >&2; exit 1; }
 
-# Packages: slurmctld, slurmd, the client commands and munge, from Debian's mirrors.
-if ! command -v slurmctld >/dev/null || ! command -v slurmd >/dev/null || ! command -v sbatch >/dev/null ||
-   ! command -v munged >/dev/null; then
-  bash "$root/.ci/install-deps" --slurm
-fi
-
-tmp=$(mktemp -d -t vkrt-slurm.XXXXXX)
+tmp=$(realpath "$(mktemp -d -t vkrt-slurm.XXXXXX)")
 chmod 755 "$tmp"   # munged wants its socket's folders searchable by all
 pids=()
 dump_logs() {
-  for f in "$tmp"/log/* "$tmp"/jobs/tiles/*.log "$tmp"/jobs/samples/*.log "$tmp"/out/chunks/*.log; do
+  for f in "$tmp"/log/* "$tmp"/refused.err "$tmp"/jobs/*/tiles/*.log "$tmp"/jobs/*/samples/*.log "$tmp"/out/*/*.log; do
     [ -f "$f" ] || continue
     echo "----- $f (last 40 lines)"; tail -n 40 "$f"
   done
@@ -65,6 +62,61 @@ wait_for() {
     sleep 0.5
   done
 }
+
+# Refused before anything is submitted (no cluster needed): a stand-in sbatch, first on PATH,
+# records each call in $fake_calls; the refusals must leave it uncalled.
+mkdir -p "$tmp/fake-bin"
+fake_calls=$tmp/fake-bin/calls
+cat > "$tmp/fake-bin/sbatch" <<'FAKE'
+#!/usr/bin/env bash
+echo "$*" >> "$(dirname "$0")/calls"
+echo 1
+FAKE
+chmod +x "$tmp/fake-bin/sbatch"
+# refused COMMAND...: COMMAND fails without calling sbatch (its messages in $tmp/refused.err).
+refused() {
+  rm -f "$fake_calls"
+  if PATH=$tmp/fake-bin:$PATH "$@" >/dev/null 2>"$tmp/refused.err"; then say "not refused: $*" >&2; return 1; fi
+  [ ! -e "$fake_calls" ] || { say "refused but submitted: $*" >&2; return 1; }
+}
+# says TEXT: the last refusal's messages hold TEXT.
+says() { grep -qF -- "$1" "$tmp/refused.err" || { say "the refusal does not say: $1" >&2; return 1; }; }
+
+# Scenes whose images would have the same name in OUT_DIR: from their `output` lines (in two
+# folders; one written `Output renders/dragon.png`, with a comment and CRLF line ends), or a
+# scene's stem against another's `output`. A commented-out `output` line names nothing.
+names=$tmp/names
+mkdir -p "$names/hw 2" "$names/hw3" "$names/x" "$names/y" "$names/z"
+spheres=$root/scenes/spheres.test
+sed 's/^output .*/output dragon.png/' "$spheres" > "$names/hw 2/dragon.test"
+sed -e 's|^output .*|Output renders/dragon.png  # the same name|' -e 's/$/\r/' "$spheres" > "$names/hw3/dragon.test"
+grep -v '^output' "$spheres" > "$names/x/plain.test"
+sed 's/^output .*/output plain.png/' "$spheres" > "$names/y/other.test"
+sed 's/^output .*/# output plain.png/' "$spheres" > "$names/z/commented.test"
+refused "$root/examples/slurm/submit-scenes.sh" --chunks 3 --vkrt "$vkrt" "$names/out" "$names/hw 2/dragon.test" \
+  "$names/hw3/dragon.test" "$names/x/plain.test" "$names/y/other.test" "$names/z/commented.test"
+says "refusing to write the output of $names/hw3/dragon.test '$names/out/dragon.png': it is also the output of $names/hw 2/dragon.test"
+says "refusing to write the output of $names/y/other.test '$names/out/plain.png': it is also the output of $names/x/plain.test"
+says "submit-scenes: nothing submitted"
+! grep -q commented "$tmp/refused.err" || { say "a commented-out output line was read" >&2; exit 1; }
+[ ! -e "$names/out" ] || { say "submit-scenes wrote $names/out although it refused" >&2; exit 1; }
+say "scenes that would write the same file in OUT_DIR: refused, nothing submitted"
+
+# Tile options that make the tiles of one render differ or clash with the script's own.
+for option in "--time 0.05" "--time=0.05" "--crop 0,0,8,8" "-o tile.png" "--output=tile.png" "--watch"; do
+  # shellcheck disable=SC2086
+  refused "$root/examples/slurm/submit-tiles.sh" --tiles 2x1 --vkrt "$vkrt" --work "$names/tiles" \
+    "$root/examples/slurm/cornell.test" "$names/tiled.png" -- --backend cpu $option
+  says "submit-tiles: ${option%% *} is not for"
+done
+[ ! -e "$names/tiles" ] || { say "submit-tiles made $names/tiles although it refused" >&2; exit 1; }
+say "tile options that cannot work in a tile (--time, --crop, -o, --watch): refused, nothing submitted"
+
+# Packages: slurmctld, slurmd, the client commands and munge, from Debian's mirrors.
+if ! command -v slurmctld >/dev/null || ! command -v slurmd >/dev/null || ! command -v sbatch >/dev/null ||
+   ! command -v munged >/dev/null; then
+  bash "$root/.ci/install-deps" --slurm
+fi
 
 mkdir -p "$tmp"/{munge,log,state,spool,jobs,out}
 chmod 755 "$tmp/munge"
@@ -125,29 +177,36 @@ wait_for "node $host to be idle in sinfo" node_idle
 say "cluster up: $(sinfo -h -o '%P %D %T %c CPUs %m MB' | head -n 1) ($(($(date +%s) - start)) s)"
 
 cd "$tmp/jobs"
-scene=$root/scenes/showcase.test
+# The jobs' scenes, work folders and images lie in a folder whose name holds a comma and a
+# blank, and their options include a value that does: each must reach the jobs whole.
+odd="$tmp/jobs/odd, name"
+mkdir -p "$odd"
+probe=(--device "no such, device")   # one word; the CPU backend does not read --device
+scene="$odd/show, case.test"
+cp "$root/scenes/showcase.test" "$scene"
 args=(--backend cpu --size 123x77)   # odd sizes: tiles of unequal widths and heights
 
 # A scene as 3x2 tiles and a dependent merge, against a one-machine render.
 "$vkrt" "${args[@]}" -q -o "$tmp/jobs/single.png" "$scene"
-timeout "$timeout_s" "$root/examples/slurm/submit-tiles.sh" --tiles 3x2 --vkrt "$vkrt" --work "$tmp/jobs/tiles" \
-  --wait "$scene" "$tmp/jobs/merged.png" -- "${args[@]}" ||
+timeout "$timeout_s" "$root/examples/slurm/submit-tiles.sh" --tiles 3x2 --vkrt "$vkrt" --work "$odd/tiles" \
+  --wait "$scene" "$odd/merged.png" -- "${args[@]}" "${probe[@]}" ||
   { say "the tile jobs or the merge failed or timed out" >&2; exit 1; }
-"$vkrt" diff "$tmp/jobs/merged.png" "$tmp/jobs/single.png" >/dev/null ||
+"$vkrt" diff "$odd/merged.png" "$tmp/jobs/single.png" >/dev/null ||
   { say "the merged image differs from the one-machine render" >&2; exit 1; }
-cmp "$tmp/jobs/merged.png" "$tmp/jobs/single.png" ||
+cmp "$odd/merged.png" "$tmp/jobs/single.png" ||
   { say "the merged PNG's bytes differ from the one-machine render's" >&2; exit 1; }
 say "3x2 tiles merged: equal to the one-machine render, bit for bit"
 
 # A path-traced scene as 4 batches of 4 samples (seeds 1-4) and a dependent merge, against a
 # one-machine render of 16 samples of another seed: two independent estimates of the same
 # expected image, so they agree statistically, not bit for bit.
-pt_scene=$root/examples/slurm/cornell.test   # 64x64, path-traced
+pt_scene="$odd/cornell, box.test"   # examples/slurm/cornell.test: 64x64, path-traced
+cp "$root/examples/slurm/cornell.test" "$pt_scene"
 "$vkrt" --backend cpu -q --spp 16 --seed 100 -o "$tmp/jobs/single-16spp.pfm" "$pt_scene"
 timeout "$timeout_s" "$root/examples/slurm/submit-samples.sh" --batches 4 --spp 4 --seed 1 --vkrt "$vkrt" \
-  --work "$tmp/jobs/samples" --wait "$pt_scene" "$tmp/jobs/merged-16spp.pfm" -- --backend cpu ||
+  --work "$odd/samples" --wait "$pt_scene" "$odd/merged-16spp.pfm" -- --backend cpu "${probe[@]}" ||
   { say "the sample batch jobs or the merge failed or timed out" >&2; exit 1; }
-record=$(LC_ALL=C grep -a '^vkrt-samples ' "$tmp/jobs/merged-16spp.pfm" || true)
+record=$(LC_ALL=C grep -a '^vkrt-samples ' "$odd/merged-16spp.pfm" || true)
 [[ $record == "vkrt-samples 16 gamma "*" seeds 1:0+4 2:0+4 3:0+4 4:0+4" ]] ||
   { say "the merged batches' record is not 16 samples of seeds 1-4: '$record'" >&2; exit 1; }
 
@@ -194,24 +253,30 @@ same_expectation() {
     exit($ok ? 0 : 1);
   ' "$1" "$2"
 }
-same_expectation "$tmp/jobs/merged-16spp.pfm" "$tmp/jobs/single-16spp.pfm" ||
+same_expectation "$odd/merged-16spp.pfm" "$tmp/jobs/single-16spp.pfm" ||
   { say "the merged batches and the one-machine render differ beyond noise" >&2; exit 1; }
 # The check can fail: a render of a different expected image (fewer bounces) does.
 "$vkrt" --backend cpu -q --spp 16 --seed 200 --maxdepth 2 -o "$tmp/jobs/maxdepth2.pfm" "$pt_scene"
-if same_expectation "$tmp/jobs/merged-16spp.pfm" "$tmp/jobs/maxdepth2.pfm" >/dev/null; then
+if same_expectation "$odd/merged-16spp.pfm" "$tmp/jobs/maxdepth2.pfm" >/dev/null; then
   say "the statistical check does not tell maxdepth 2 from maxdepth 5" >&2; exit 1
 fi
 say "4 sample batches x 4 spp merged: 16 samples, equal to a one-machine 16-spp render within noise"
 
-# Scenes in chunks, against one run over all of them.
-scenes=("$root"/scenes/*.test)
+# Scenes in chunks, against one run over all of them; two more from the odd folder: one
+# without an `output` line (named after its stem) and one whose `output` line is a comment.
+grep -v '^output' "$spheres" > "$odd/no output, 1.test"
+sed 's/^output .*/# output spheres.png/' "$spheres" > "$odd/commented.test"
+scenes=("$root"/scenes/*.test "$odd/no output, 1.test" "$odd/commented.test")
 mkdir -p "$tmp/out/single"
 "$vkrt" --backend cpu -q -o "$tmp/out/single/" "${scenes[@]}"
-timeout "$timeout_s" "$root/examples/slurm/submit-scenes.sh" --chunks 3 --vkrt "$vkrt" --wait "$tmp/out/chunks" \
-  "${scenes[@]}" -- --backend cpu ||
+chunks="$tmp/out/chunks, 1"
+timeout "$timeout_s" "$root/examples/slurm/submit-scenes.sh" --chunks 3 --vkrt "$vkrt" --wait "$chunks" \
+  "${scenes[@]}" -- --backend cpu "${probe[@]}" ||
   { say "a scene chunk failed or timed out" >&2; exit 1; }
 for f in "$tmp"/out/single/*; do
-  cmp "$f" "$tmp/out/chunks/$(basename "$f")" || { say "$(basename "$f") differs between the chunks and one run" >&2; exit 1; }
+  cmp "$f" "$chunks/$(basename "$f")" || { say "$(basename "$f") differs between the chunks and one run" >&2; exit 1; }
 done
+[ -f "$chunks/no output, 1.png" ] && [ -f "$chunks/commented.png" ] ||
+  { say "the chunks did not name the scenes without an output line after their stems" >&2; exit 1; }
 say "${#scenes[@]} scenes in 3 chunks: the same images as one run"
 say "passed in $(($(date +%s) - start)) s"

@@ -135,6 +135,9 @@ std::string makeUsageText() {
          "  --watch                render, then render again each time the scene file changes (one\n"
          "                         process: the device and compiled shaders kept); a path-traced\n"
          "                         scene refines with more samples until the next change; Ctrl-C ends\n"
+         "  --dry-run              parse each scene and check its output as a render would (the\n"
+         "                         same errors and exit status), print where its image would go;\n"
+         "                         open no device, render and write nothing\n"
          "  --strict               every warning is an error, nothing written: the scene's (exit 2:\n"
          "                         unknown commands, repeated commands and the like, NaN pixels)\n"
          "                         and the command line's (exit 1: --spp for a Whitted scene, an\n" +
@@ -216,7 +219,7 @@ constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert", "grade"
 constexpr std::string_view kLongOptions[] = {
     "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "variant",
     "maxdepth", "spp", "seed", "sampler", "estimator", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
-    "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version", "watch"};
+    "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version", "watch", "dry-run"};
 constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "quiet", "help"};
 constexpr std::string_view kConvertLongOptions[] = {"quiet", "help"};
 constexpr std::string_view kGradeLongOptions[] = {"output", "thresholds", "max-pixels-over", "max-diff", "max-bias",
@@ -612,6 +615,8 @@ Options parseOptions(const std::vector<std::string>& args) {
       o.compare = true;
     } else if (a == "--watch") {
       o.watch = true;
+    } else if (a == "--dry-run") {
+      o.request.dryRun = true;
     } else if (name == "--check") {
       o.checkAgainst = take(name);
     } else if (name == "--max-pixels-over") {
@@ -688,6 +693,12 @@ Options parseOptions(const std::vector<std::string>& args) {
     throw UsageError(std::string("--watch renders and writes the image at each change; ") +
                      (o.compare ? "--compare" : o.checkAgainst ? "--check" : o.json ? "--json" : "--diff") +
                      " does not go with it");
+  if (o.request.dryRun && (o.watch || o.compare || o.checkAgainst))
+    throw UsageError(std::string("--dry-run renders nothing; ") +
+                     (o.watch ? "--watch" : o.compare ? "--compare" : "--check") + " does not go with it");
+  if (o.compare && o.request.timeLimitSeconds > 0)
+    throw UsageError("--compare compares the two backends' renders of the same samples; under --time each would "
+                     "render as many as it can in the time: give --spp instead");
   if (o.watch && o.request.timeLimitSeconds > 0)
     throw UsageError("--watch refines a path-traced image until the next change; --time does not go with it");
   if (!o.help && !o.version && !o.listDevices) {

@@ -474,7 +474,7 @@ struct PreparedRender {
 // render streams when `mayStream` and the scene is the Whitted model's (one batch).
 void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderReport& report, bool checkOutput,
                    bool mayStream, RenderSession& vulkan, PreparedRender& prepared) {
-  if (request.backend == Backend::Vulkan) vulkan.prepare(request);
+  if (request.backend == Backend::Vulkan && !request.dryRun) vulkan.prepare(request);
   auto t0 = std::chrono::steady_clock::now();
   prepared.parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict, request.output.has_value()});
   SceneDesc& scene = prepared.parsed.scene;
@@ -570,6 +570,7 @@ RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress
   RenderSession& vulkan = session ? *session : ownSession;
   PreparedRender prepared;
   prepareRender(request, progress, report, true, image == nullptr, vulkan, prepared);
+  if (request.dryRun) return report;
   if (!prepared.streamed) {
     RadianceImage rendered = renderPrepared(request, prepared, progress, report, vulkan, nullptr);
     rendered.text = imageRecords(request, prepared, report);

@@ -54,6 +54,11 @@ struct RenderRequest {
   ShaderVariant variant = ShaderVariant::Auto;    // Vulkan: the shader variant (gpu/shader_variant.h)
   Cutoff cutoff = Cutoff::Auto;        // Vulkan: the exactness cut-off of the mirror loop
   int maxDepth = -1;                   // overrides the scene's `maxdepth` when >= 0
+  // --dry-run: renderSceneFile parses the scene, applies the overrides and checks what a render
+  // checks first (the output path and its file, the crop, the memory), fills the report's
+  // facts of the scene (output, size, primitives, lights), and returns: no device is opened,
+  // nothing is rendered or written.
+  bool dryRun = false;
   // Path integrators (SceneDesc::path.integrator other than Raytracer): the samples per pixel
   // instead of the scene's `spp` when > 0 (--spp); the random generator's seed (--seed); a
   // time limit in seconds when > 0 (--time): batches of samples until it is up, then the

@@ -9,6 +9,7 @@
 
 using namespace vkrt;
 using namespace vkrt::test;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -112,6 +113,52 @@ TEST(CliBatch, TwoScenesWithOneOutputNameDoNotOverwriteEachOther) {
   EXPECT_TRUE(contains(r.output, "refusing to write the output of " + dir + "/b.test '" + dir +
                                      "/./same.png': it is also the output of " + dir + "/a.test")) << r.output;
   EXPECT_GT(readImage(dir + "/same.png").pixel(20, 15)[1], 50);   // a's green sphere
+}
+
+// --dry-run: each scene parsed and its output checked as a render would, the same messages and
+// exit status, nothing rendered or written, and no device opened (here: no Vulkan driver to
+// find). What a render refuses it refuses: two scenes that would write one file, a scene
+// with an error, an output folder that does not exist.
+TEST(CliBatch, ADryRunChecksWhatARenderWouldAndWritesNothing) {
+  std::string dir = freshDir("cli-batch/dry-run");
+  fs::create_directories(dir + "/out");
+  writeFile(dir + "/a.test", kScene + "output same.png\n");
+  writeFile(dir + "/b.test", kScene + "output other/same.png\n");   // the same name in -o DIR/
+  writeFile(dir + "/c.test", kScene);
+  writeFile(dir + "/bad.test", kScene + "sphere 0 0\n");
+  const std::string noDriver = "VK_DRIVER_FILES=" + dir + "/none.json VK_ICD_FILENAMES=" + dir + "/none.json";
+  RunResult ok = runVkrt("--dry-run -o " + dir + "/out/ " + dir + "/a.test " + dir + "/c.test", noDriver);
+  EXPECT_EQ(ok.exitCode, 0) << ok.output;
+  EXPECT_TRUE(contains(ok.output, dir + "/a.test -> " + dir + "/out/same.png (40x30), not rendered (--dry-run)"))
+      << ok.output;
+  EXPECT_TRUE(contains(ok.output, dir + "/c.test -> " + dir + "/out/c.png (40x30)")) << ok.output;
+  EXPECT_TRUE(contains(ok.output, "2 scenes in")) << ok.output;
+  EXPECT_TRUE(contains(ok.output, "2 checked (--dry-run: nothing rendered), 0 failed")) << ok.output;
+  RunResult one = runVkrt("--dry-run --size 80x60 " + dir + "/c.test -o " + dir + "/out/c.png", noDriver);
+  EXPECT_EQ(one.exitCode, 0) << one.output;
+  EXPECT_TRUE(contains(one.output, dir + "/c.test -> " + dir + "/out/c.png (80x60), not rendered (--dry-run)"))
+      << one.output;
+  RunResult clash = runVkrt("--dry-run -o " + dir + "/out/ " + dir + "/a.test " + dir + "/b.test " + dir +
+                            "/bad.test", noDriver);
+  EXPECT_EQ(clash.exitCode, 2) << clash.output;   // the worst: the scene error
+  EXPECT_TRUE(contains(clash.output, "refusing to write the output of " + dir + "/b.test")) << clash.output;
+  EXPECT_TRUE(contains(clash.output, "it is also the output of " + dir + "/a.test")) << clash.output;
+  EXPECT_TRUE(contains(clash.output, "bad.test:6: error: 'sphere' expects 4 arguments")) << clash.output;
+  RunResult noFolder = runVkrt("--dry-run -o " + dir + "/missing/x.png " + dir + "/c.test", noDriver);
+  EXPECT_EQ(noFolder.exitCode, 4) << noFolder.output;
+  EXPECT_TRUE(fs::is_empty(dir + "/out"));   // nothing written, no temporary file
+  EXPECT_EQ(runVkrt("--dry-run --watch " + dir + "/c.test").exitCode, 1);
+  EXPECT_EQ(runVkrt("--dry-run --compare " + dir + "/c.test").exitCode, 1);
+}
+
+// --compare --time would compare renders of different sample counts: a usage error.
+TEST(CliBatch, CompareRefusesATimeLimit) {
+  std::string dir = freshDir("cli-batch/compare-time");
+  writeFile(dir + "/c.test", kScene);
+  RunResult r = runVkrt("--compare --time 1 " + dir + "/c.test");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_TRUE(contains(r.output, "under --time each would render as many as it can in the time: give --spp"))
+      << r.output;
 }
 
 // Scenes rendered one after another on one Vulkan context give the images of separate runs.
