@@ -3,10 +3,14 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
+
+#include <sys/stat.h>
 
 #include "errors.h"
 #include "grade/grade_inputs.h"
@@ -69,8 +73,14 @@ bool applyThresholdOption(const std::string& name, const std::string& value, Gra
 
 ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds& commandLine,
                                  const std::vector<std::string>& knownKeys) {
+  auto unreadable = [&](int error) {
+    return IoError("cannot read the thresholds file '" + abbreviated(path) + "': " + std::strerror(error));
+  };
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw unreadable(errno);
+  if (S_ISDIR(st.st_mode)) throw unreadable(EISDIR);
   std::ifstream in(path);
-  if (!in) throw IoError("cannot read the thresholds file '" + abbreviated(path) + "'");
+  if (!in) throw unreadable(errno);
   ThresholdTable table;
   table.all = commandLine;
   int lineNumber = 0;
@@ -122,7 +132,7 @@ ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds&
     table.byScene.emplace(key, t);
     table.lineOf[key] = lineNumber;
   }
-  if (in.bad()) throw IoError("cannot read the thresholds file '" + abbreviated(path) + "'");
+  if (in.bad()) throw unreadable(EIO);
   return table;
 }
 

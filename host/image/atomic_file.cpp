@@ -4,6 +4,7 @@
 // which file a path names and whether vkrt may replace it (atomic_file.h).
 #include "image/atomic_file.h"
 
+#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
@@ -110,6 +111,14 @@ OutputFile resolveOutputFile(const std::string& path) {
   std::string file = std::filesystem::path(out.target).filename().string();
   if (file.empty() || file == "." || file == "..")
     throw IoError("output path " + described + " names a directory, not a file");
+  // vkrt's outputs are images and reports, never scenes: an output named as a scene file is
+  // a slip (arguments swapped, a scene named for another), and would replace a scene.
+  std::string extension = std::filesystem::path(file).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".test")
+    throw IoError("cannot write " + described + ": that is a scene file's name (.test), and vkrt writes images, "
+                  "never scenes; name the output as what it holds (" +
+                  std::filesystem::path(file).replace_extension(".png").string() + ")");
   const std::string dir = directoryOf(out.target);
   checkDirectory(dir, name);
   if (out.exists) {

@@ -31,7 +31,8 @@ struct OutputFile {
 
 // Resolves `path` for writing, or throws IoError saying why it cannot be written: a folder
 // on the way that does not exist or is a file, a directory, device, FIFO or socket at the
-// end, several hard links, a loop of symbolic links. Creates nothing.
+// end, several hard links, a loop of symbolic links, a file named as a scene (*.test, any
+// case). Creates nothing.
 OutputFile resolveOutputFile(const std::string& path);
 
 // Throws IoError unless `path` can be created or replaced (resolveOutputFile, and the

@@ -436,8 +436,8 @@ std::string resolveOutput(const SceneDesc& scene, const RenderRequest& request) 
     checkOutputWritable(path);
     return path;
   }
-  if (request.onOutput) request.onOutput(scene.output);
   try {
+    if (request.onOutput) request.onOutput(scene.output);
     checkOutputWritable(scene.output);
   } catch (const IoError& e) {
     if (scene.outputLine == 0) throw;

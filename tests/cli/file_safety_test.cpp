@@ -205,6 +205,39 @@ TEST(FileSafety, DiffAndMergeNeverWriteTheirInputs) {
   EXPECT_TRUE(leftovers(dir).empty());
 }
 
+// An output named as a scene file (*.test, any case) is refused, however it is named (-o, the
+// scene's `output` line, merge -o, convert, diff --diff), and the scene that had that name is
+// as it was: swapped arguments must not turn a scene into a PNG.
+TEST(FileSafety, AnOutputNamedAsASceneIsRefused) {
+  std::string dir = freshDir("file-safety/scene-named-output");
+  writeFile(dir + "/s.test", kScene);
+  writeFile(dir + "/other.test", kScene);
+  writeFile(dir + "/line.test", kScene + "output " + dir + "/out.TEST\n");
+  ASSERT_EQ(runVkrt("-q --backend cpu -o " + dir + "/a.png " + dir + "/s.test").exitCode, 0);
+  const std::string refused = "': that is a scene file's name (.test)";
+  struct Case {
+    std::string args, says;
+  };
+  const std::vector<Case> cases = {
+      {"--backend cpu -o " + dir + "/other.test " + dir + "/s.test", "cannot write '" + dir + "/other.test" + refused},
+      {"--backend cpu " + dir + "/line.test", "cannot write '" + dir + "/out.TEST" + refused},
+      {"merge -o " + dir + "/other.test " + dir + "/a.png", "cannot write '" + dir + "/other.test" + refused},
+      {"diff " + dir + "/a.png " + dir + "/a.png --diff " + dir + "/other.test",
+       "cannot write '" + dir + "/other.test" + refused},
+      // convert's output name must say its format anyway.
+      {"convert " + dir + "/a.png " + dir + "/other.test", "is not named .png, .ppm, .pfm or .exr"},
+  };
+  for (const Case& c : cases) {
+    RunResult r = runVkrt(c.args);
+    EXPECT_NE(r.exitCode, 0) << c.args << "\n" << r.output;
+    EXPECT_TRUE(contains(r.output, c.says)) << r.output;
+  }
+  EXPECT_TRUE(contains(runVkrt("--backend cpu " + dir + "/line.test").output, "line.test:6: error: cannot write"));
+  EXPECT_EQ(readFile(dir + "/other.test"), kScene);
+  EXPECT_FALSE(fileExists(dir + "/out.TEST"));
+  EXPECT_TRUE(leftovers(dir).empty());
+}
+
 // merge reads each input more than once (records, then pixels): an input that can be read
 // only once (a pipe), whose opening waits for a writer (a FIFO), or a folder is an I/O error
 // naming it, before anything is opened. (A pipe crashed merge of float tiles: the second

@@ -2,6 +2,7 @@
 // that uses it: a subcommand, an option, a scene command; an image given as a scene; usage
 // errors in two lines, the usage text only for --help.
 #include <algorithm>
+#include <filesystem>
 #include <set>
 #include <string_view>
 #include <utility>
@@ -20,6 +21,7 @@
 
 using namespace vkrt;
 using namespace vkrt::test;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -84,7 +86,9 @@ TEST(Suggest, ImagesAreKnownByTheirBytesOrElseTheirNames) {
   writeImageAtomic(gradient(4, 3), dir + "/a.ppm");
   RadianceImage pfm(4, 3);
   writePfmAtomic(pfm, dir + "/a.pfm");
-  writeImageAtomic(gradient(4, 3), dir + "/png-named.test");   // a PNG, whatever its name
+  // A PNG, whatever its name (vkrt writes no output named .test: written, then renamed).
+  writeImageAtomic(gradient(4, 3), dir + "/png-named.png");
+  fs::rename(dir + "/png-named.png", dir + "/png-named.test");
   writeFile(dir + "/scene.png", kScene);                      // text: a scene, whatever its name
   writeFile(dir + "/p3.test", "P3\n1 1\n255\n0 0 0\n");
   EXPECT_EQ(imageKind(dir + "/a.png"), "PNG");
@@ -200,7 +204,8 @@ TEST(Suggest, ImageGivenAsASceneIsAUsageError) {
   writeImageAtomic(gradient(4, 3), dir + "/a.png");
   writeImageAtomic(gradient(4, 3), dir + "/b.ppm");
   writePfmAtomic(RadianceImage(4, 3), dir + "/c.pfm");
-  writeImageAtomic(gradient(4, 3), dir + "/png-named.test");
+  writeImageAtomic(gradient(4, 3), dir + "/png-named.png");
+  fs::rename(dir + "/png-named.png", dir + "/png-named.test");
   const std::string tail = " image, not a scene file (to compare images: vkrt diff A B; to merge tiles: "
                            "vkrt merge -o OUT TILE ...)\nsee 'vkrt --help'\n";
   for (auto [file, kind] : {std::pair{"a.png", "PNG"}, std::pair{"b.ppm", "PPM"}, std::pair{"c.pfm", "PFM"},

@@ -152,6 +152,21 @@ TEST(GradeThresholdFile, AByteOrderMarkIsNotPartOfTheFirstScene) {
   EXPECT_EQ(readThresholdFile(dir + "/t.txt", GradeThresholds{}, {"scene6"}).forScene("scene6").text(), "--max-diff 2");
 }
 
+// A thresholds file that cannot be read is an I/O error that says why, as an image's does.
+TEST(GradeThresholdFile, AnUnreadableOneSaysWhy) {
+  std::string dir = freshDir("grade/thresholds-unreadable");
+  auto error = [&](const std::string& path) {
+    try {
+      readThresholdFile(path, GradeThresholds{}, {"scene6"});
+    } catch (const IoError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error(dir + "/none.txt"), "cannot read the thresholds file '" + dir + "/none.txt': No such file or directory");
+  EXPECT_EQ(error(dir), "cannot read the thresholds file '" + dir + "': Is a directory");
+}
+
 TEST(GradeThresholdFile, ASceneNameWithSpacesInQuotes) {
   std::string dir = freshDir("grade/thresholds-quoted");
   writeFile(dir + "/t.txt", "\"my scene 2\"   --max-diff 3\n\"scene6\"--max-diff=1\n");
