@@ -74,7 +74,7 @@ std::string makeUsageText() {
   const std::string floats = imageFormatNamesText(FormatsOf::LinearFloat), standard = imageFormatNames().front();
   return "usage: vkrt [options] SCENE.test [SCENE.test ...]\n"
          "       vkrt diff [comparison options] A" + ext + " B" + ext + "\n"
-         "       vkrt merge [--allow-gaps] -o OUT" + ext + "|OUT" + floatExt + " TILE [TILE ...]   (all " +
+         "       vkrt merge [--allow-gaps] [--strict] -o OUT" + ext + "|OUT" + floatExt + " TILE [TILE ...]   (all " +
          slashed(FormatsOf::Bytes) + " or all " + slashed(FormatsOf::LinearFloat) + ")\n"
          "       vkrt merge -o OUT" + floatExt + "|OUT" + ext + " BATCH" + floatExt + " [BATCH" + floatExt + " ...]\n"
          "       vkrt convert IN OUT   (any of " + imageExtensionsText() + " to any; JPEG in)\n"
@@ -220,7 +220,7 @@ constexpr std::string_view kLongOptions[] = {
     "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "variant",
     "maxdepth", "spp", "seed", "sampler", "estimator", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
     "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version", "watch", "dry-run"};
-constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "quiet", "help"};
+constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "strict", "quiet", "help"};
 constexpr std::string_view kConvertLongOptions[] = {"quiet", "help"};
 constexpr std::string_view kGradeLongOptions[] = {"output", "thresholds", "max-pixels-over", "max-diff", "max-bias",
                                                   "max-variance", "diff-scale", "backend", "device", "spp", "seed",
@@ -346,6 +346,8 @@ Options parseMergeOptions(const std::vector<std::string>& args) {
     } else if (a == "--") {
       endOfOptions = true;
     } else if (a == "-o" || a == "--output" || a.rfind("--output=", 0) == 0) {
+      if (!o.mergeOutput.empty())
+        throw UsageError("-o given twice ('" + abbreviated(o.mergeOutput) + "' and another): merge writes one image");
       if (a.rfind("--output=", 0) == 0) {
         o.mergeOutput = a.substr(9);
       } else {
@@ -356,22 +358,27 @@ Options parseMergeOptions(const std::vector<std::string>& args) {
       refuseStandardOutput("-o", o.mergeOutput);
     } else if (a == "--allow-gaps") {
       o.allowGaps = true;
+    } else if (a == "--strict") {
+      o.request.strict = true;
     } else if (a == "-q" || a == "--quiet") {
       o.quiet = true;
     } else if (a == "-h" || a == "--help") {
       o.help = true;
     } else {
-      throw UsageError(
-          unknownOption("merge option", a, "(merge takes -o OUT" + defaultImageExtension() + ", --allow-gaps, -q)",
-                        kMergeLongOptions));
+      throw UsageError(unknownOption("merge option", a,
+                                     "(merge takes -o OUT" + defaultImageExtension() + ", --allow-gaps, --strict, -q)",
+                                     kMergeLongOptions));
     }
   }
   if (o.help) return o;
   const std::string ext = defaultImageExtension(), example = "vkrt merge -o OUT" + ext + " TILE" + ext + " ...";
   if (o.mergeOutput.empty()) throw UsageError("merge needs the output image: " + example);
   if (o.mergeTiles.empty()) throw UsageError("merge needs at least one tile: " + example);
-  if (!hasImageExtension(o.mergeOutput))
-    o.warnings.push_back(unnamedWarning("output file", o.mergeOutput, FormatsOf::All));
+  if (!hasImageExtension(o.mergeOutput)) {
+    std::string w = unnamedWarning("output file", o.mergeOutput, FormatsOf::All);
+    if (o.request.strict) throw UsageError(w + " [--strict]");
+    o.warnings.push_back(w);
+  }
   return o;
 }
 
@@ -541,6 +548,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     } else if (a == "--") {
       endOfOptions = true;
     } else if (name == "-o" || name == "--output") {
+      if (output) throw UsageError("-o given twice ('" + abbreviated(*output) + "' and another): give it once");
       output = take(name);
       if (output->empty()) throw UsageError("option " + name + " needs a non-empty file name");
       refuseStandardOutput(name, *output);

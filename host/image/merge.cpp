@@ -109,7 +109,11 @@ Tile readTileRecords(const std::string& path, bool floatTiles) {
   }
   std::optional<std::string> value = onlyRecord(tile.text, kCropKeyword, "tile", path);
   if (!value)
-    throw UsageError("tile '" + path + "' has no " + kCropKeyword + " record: it is not an image written with --crop");
+    throw UsageError("tile '" + path + "' has no " + kCropKeyword + " record: it is not an image written with --crop" +
+                     (recordOf(tile.text, kSamplesKeyword)
+                          ? " (it is a whole image of a path-traced render: sample batches merge with batches of the "
+                            "same place, the whole image or one crop, and tiles with tiles)"
+                          : ""));
   std::string why;
   std::optional<CropRecord> record = parseCropRecord(*value, &why);
   if (!record)
@@ -162,9 +166,16 @@ CheckedTiles checkTiles(const std::vector<std::string>& tilePaths, bool allowGap
                        " one");
     for (std::size_t j = 0; j < i; ++j) {
       const PixelRect &a = tiles[j].record.rect, &b = t.record.rect;
-      if (std::max(a.x0, b.x0) < std::min(a.x1, b.x1) && std::max(a.y0, b.y0) < std::min(a.y1, b.y1))
+      if (std::max(a.x0, b.x0) < std::min(a.x1, b.x1) && std::max(a.y0, b.y0) < std::min(a.y1, b.y1)) {
+        // The same crop twice, each holding samples: batches of that crop, given with another's.
+        const bool batches = a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1 &&
+                             recordOf(tiles[j].text, kSamplesKeyword) && recordOf(t.text, kSamplesKeyword);
         throw UsageError("tiles overlap: '" + tiles[j].path + "' (" + formatPixelRect(a) + ") and '" + t.path + "' (" +
-                         formatPixelRect(b) + ")");
+                         formatPixelRect(b) + ")" +
+                         (batches ? "; they are sample batches of one crop: merge each crop's batches first (vkrt "
+                                    "merge -o CROP.pfm BATCH.pfm ...), then the crops"
+                                  : ""));
+      }
     }
     covered += static_cast<std::uint64_t>(t.record.rect.width()) * static_cast<std::uint64_t>(t.record.rect.height());
   }

@@ -42,11 +42,20 @@ TEST(Cli, HelpAndVersion) {
 
 TEST(Cli, UsageErrorsExitWith1) {
   for (const char* args : {"", "--bogus x.test", "--threads 0 x.test", "--threads abc x.test", "--backend gl x.test",
-                           "-o", "-o x.png a.test b.test"}) {
+                           "-o", "-o x.png a.test b.test", "-o a.png -o b.png x.test", "merge -o a.png -o b.png t.png",
+                           "merge --strict -o x.bmp t.png"}) {
     RunResult r = runVkrt(args);
     EXPECT_EQ(r.exitCode, 1) << args << "\n" << r.output;
     EXPECT_NE(r.output.find("vkrt: error: "), std::string::npos) << r.output;
   }
+}
+
+// merge --strict makes its output-name warning an error, as a render's --strict does.
+TEST(Cli, MergeStrictRefusesAnOutputNameOfNoFormat) {
+  RunResult r = runVkrt("merge --strict -o x.bmp t.png");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("output file 'x.bmp' is not named .png, .ppm, .pfm or .exr: vkrt writes PNG, under that "
+                          "name [--strict]"), std::string::npos) << r.output;
 }
 
 TEST(Cli, RendersToTheScenesOutputRelativeToTheCurrentDirectory) {

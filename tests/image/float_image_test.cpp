@@ -469,6 +469,36 @@ TEST(MergeBatches, WeightsAreTheSampleCounts) {
   EXPECT_EQ(mean.text[0], (std::pair<std::string, std::string>("vkrt-crop", "1,1,4,3 of 8 8")));
 }
 
+// Batches of different places, given together, are read as tiles; the refusal says what they
+// are and what to do: a whole image among crops, and batches of two crops at once.
+TEST(MergeBatches, BatchesOfDifferentPlacesSayWhatToDo) {
+  std::string dir = freshDir("float/merge-places");
+  auto crop = [&](const std::string& name, const char* rect, std::uint32_t seed) {
+    RadianceImage img = filled(4, 4, 0.5f, 1);
+    img.text.emplace_back("vkrt-crop", std::string(rect) + " of 8 4");
+    return writeBatch(dir + "/" + name, img, {{{seed, 0, 1}}, 1.0});
+  };
+  const std::string whole = writeBatch(dir + "/whole.pfm", filled(8, 4, 0.5f, 1), {{{9, 0, 1}}, 1.0});
+  const std::string a1 = crop("a1.pfm", "0,0,4,4", 1), a2 = crop("a2.pfm", "0,0,4,4", 2);
+  const std::string b1 = crop("b1.pfm", "4,0,8,4", 1), b2 = crop("b2.pfm", "4,0,8,4", 2);
+  auto refusal = [&](const std::vector<std::string>& paths) {
+    EXPECT_FALSE(areSampleBatches(paths));
+    try {
+      writeMergedCrops(paths, false, dir + "/out.pfm");
+    } catch (const UsageError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(refusal({whole, a2}).find("it is a whole image of a path-traced render: sample batches merge with batches "
+                                      "of the same place"), std::string::npos);
+  EXPECT_NE(refusal({a1, a2, b1, b2}).find("they are sample batches of one crop: merge each crop's batches first"),
+            std::string::npos);
+  EXPECT_FALSE(fileExists(dir + "/out.pfm"));
+  EXPECT_EQ(refusal({a1, b1}), "no error");   // the two crops of one render's samples: tiles
+  EXPECT_TRUE(fileExists(dir + "/out.pfm"));
+}
+
 // Each refusal names the files and the reason.
 TEST(MergeBatches, MismatchedBatchesAreRefusedWithClearMessages) {
   std::string dir = freshDir("float/merge-refused");
