@@ -45,6 +45,8 @@ for option in "${extra[@]}"; do
   case "$option" in
     --seed|--seed=*|--spp|--spp=*|--time|--time=*|-o|--output|--output=*|--crop|--crop=*)
       echo "submit-samples: $option is not for the batches' options: give --seed, --spp, --time to this script (it names the batches; a batch is the whole image)" >&2; exit 1 ;;
+    --watch|--compare|--check|--check=*|--dry-run|--list-devices|-h|--help|--version)
+      echo "submit-samples: $option is not for the batches' options: a render with it writes no batch to merge" >&2; exit 1 ;;
   esac
 done
 case "$output" in

@@ -48,7 +48,7 @@ for ((k = 0; k < ${#extra[@]}; k++)); do
       echo "submit-tiles: ${extra[k]} is not for tiles: each tile would stop at its own number of samples, and tiles of different sample counts do not merge; give --spp" >&2; exit 1 ;;
     --crop|--crop=*|-o|--output|--output=*)
       echo "submit-tiles: ${extra[k]} is not for the tiles' options: this script gives each tile its --crop and -o (OUT.png is the merged image)" >&2; exit 1 ;;
-    --watch|--compare|--check|--check=*|--list-devices|-h|--help|--version)
+    --watch|--compare|--check|--check=*|--dry-run|--list-devices|-h|--help|--version)
       echo "submit-tiles: ${extra[k]} is not for the tiles' options: a tile render with it writes no tile to merge" >&2; exit 1 ;;
   esac
 done

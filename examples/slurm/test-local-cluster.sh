@@ -111,6 +111,14 @@ for option in "--time 0.05" "--time=0.05" "--crop 0,0,8,8" "-o tile.png" "--outp
 done
 [ ! -e "$names/tiles" ] || { say "submit-tiles made $names/tiles although it refused" >&2; exit 1; }
 say "tile options that cannot work in a tile (--time, --crop, -o, --watch): refused, nothing submitted"
+for option in "--seed 3" "--time=1" "-o b.pfm" "--watch" "--dry-run"; do
+  # shellcheck disable=SC2086
+  refused "$root/examples/slurm/submit-samples.sh" --batches 2 --vkrt "$vkrt" --work "$names/batches" \
+    "$root/examples/slurm/cornell.test" "$names/batched.png" -- --backend cpu $option
+  says "submit-samples: ${option%% *} is not for"
+done
+[ ! -e "$names/batches" ] || { say "submit-samples made $names/batches although it refused" >&2; exit 1; }
+say "batch options that cannot work in a batch (--seed, --time, -o, --watch, --dry-run): refused, nothing submitted"
 
 # Packages: slurmctld, slurmd, the client commands and munge, from Debian's mirrors.
 if ! command -v slurmctld >/dev/null || ! command -v slurmd >/dev/null || ! command -v sbatch >/dev/null ||
