@@ -2,6 +2,7 @@
 #include "cli/options.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <charconv>
 #include <cmath>
 #include <functional>
@@ -334,6 +335,13 @@ std::string unnamedWarning(const std::string& what, const std::string& path, For
          std::string(imageFormats().front().name) + ", under that name";
 }
 
+// An output path that names a folder (ends in '/', or is one): the write's error says so,
+// without a warning about its name first.
+bool namesAFolder(const std::string& path) {
+  std::error_code ec;
+  return path.back() == '/' || std::filesystem::is_directory(path, ec);
+}
+
 // vkrt merge [--allow-gaps] -o OUT.png TILE.png ...
 Options parseMergeOptions(const std::vector<std::string>& args) {
   Options o;
@@ -374,7 +382,7 @@ Options parseMergeOptions(const std::vector<std::string>& args) {
   const std::string ext = defaultImageExtension(), example = "vkrt merge -o OUT" + ext + " TILE" + ext + " ...";
   if (o.mergeOutput.empty()) throw UsageError("merge needs the output image: " + example);
   if (o.mergeTiles.empty()) throw UsageError("merge needs at least one tile: " + example);
-  if (!hasImageExtension(o.mergeOutput)) {
+  if (!hasImageExtension(o.mergeOutput) && !namesAFolder(o.mergeOutput)) {   // a folder: its error alone
     std::string w = unnamedWarning("output file", o.mergeOutput, FormatsOf::All);
     if (o.request.strict) throw UsageError(w + " [--strict]");
     o.warnings.push_back(w);
@@ -688,7 +696,7 @@ Options parseOptions(const std::vector<std::string>& args) {
       throw UsageError("-o " + abbreviated(*output) + " names one file, for " + std::to_string(scenes.size()) +
                        " scenes: give a folder (-o DIR/, with the '/') or leave -o out");
     o.request.output = *output;
-    if (!hasImageExtension(*output)) {
+    if (!hasImageExtension(*output) && !namesAFolder(*output)) {   // a folder: its error alone
       std::string w = unnamedWarning("output file", *output, FormatsOf::All);
       if (o.request.strict) throw UsageError(w + " [--strict]");
       o.warnings.push_back(w);

@@ -93,6 +93,14 @@ TEST(Cli, UnwritableOutputOptionIsAnIoErrorBeforeRendering) {
   EXPECT_EQ(r.exitCode, 4) << r.output;
   EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("wrote"), std::string::npos);
+  // A folder as the output: its error alone, no warning about the name first.
+  for (const std::string& args : {"-o " + dir + " " + dir + "/s.test", "merge -o " + dir + " " + dir + "/t.png",
+                                  "merge -o " + dir + "/ " + dir + "/t.png"}) {
+    RunResult folder = runVkrt(args);
+    EXPECT_EQ(folder.exitCode, 4) << args << "\n" << folder.output;
+    EXPECT_NE(folder.output.find("directory"), std::string::npos) << folder.output;
+    EXPECT_EQ(folder.output.find("warning"), std::string::npos) << folder.output;
+  }
 }
 
 TEST(Cli, NonTerminalGetsAPlainFinalLineAndNoProgressBar) {
