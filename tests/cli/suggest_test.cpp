@@ -139,7 +139,7 @@ TEST(Suggest, UnknownOptionNamesTheNearestLongOption) {
   EXPECT_TRUE(contains(diff.output, "unknown option '--max-dif'; did you mean '--max-diff'?")) << diff.output;
   RunResult merge = runVkrt("merge --alow-gaps -o m.png t.png");
   EXPECT_EQ(merge.exitCode, 1) << merge.output;
-  EXPECT_TRUE(contains(merge.output, "unknown merge option '--alow-gaps' (merge takes -o OUT.png, --allow-gaps, -q); "
+  EXPECT_TRUE(contains(merge.output, "unknown merge option '--alow-gaps' (merge takes -o OUT.png, --allow-gaps, --strict, -q); "
                                      "did you mean '--allow-gaps'?"))
       << merge.output;
 }
