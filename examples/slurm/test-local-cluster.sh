@@ -102,22 +102,25 @@ says "submit-scenes: nothing submitted"
 [ ! -e "$names/out" ] || { say "submit-scenes wrote $names/out although it refused" >&2; exit 1; }
 say "scenes that would write the same file in OUT_DIR: refused, nothing submitted"
 
+# refuses_options SCRIPT WORK OUT "COUNT OPTION" OPTION...: SCRIPT (submit-tiles or
+# submit-samples) refuses each of the vkrt options, submitting nothing and making no WORK.
+refuses_options() {
+  local script=$1 work=$2 out=$3 count=$4 option
+  shift 4
+  for option in "$@"; do
+    # shellcheck disable=SC2086
+    refused "$root/examples/slurm/$script.sh" $count --vkrt "$vkrt" --work "$work" \
+      "$root/examples/slurm/cornell.test" "$out" -- --backend cpu $option
+    says "$script: ${option%% *} is not for"
+  done
+  [ ! -e "$work" ] || { say "$script made $work although it refused" >&2; exit 1; }
+}
 # Tile options that make the tiles of one render differ or clash with the script's own.
-for option in "--time 0.05" "--time=0.05" "--crop 0,0,8,8" "-o tile.png" "--output=tile.png" "--watch"; do
-  # shellcheck disable=SC2086
-  refused "$root/examples/slurm/submit-tiles.sh" --tiles 2x1 --vkrt "$vkrt" --work "$names/tiles" \
-    "$root/examples/slurm/cornell.test" "$names/tiled.png" -- --backend cpu $option
-  says "submit-tiles: ${option%% *} is not for"
-done
-[ ! -e "$names/tiles" ] || { say "submit-tiles made $names/tiles although it refused" >&2; exit 1; }
+refuses_options submit-tiles "$names/tiles" "$names/tiled.png" "--tiles 2x1" \
+  "--time 0.05" "--time=0.05" "--crop 0,0,8,8" "-o tile.png" "--output=tile.png" "--watch"
 say "tile options that cannot work in a tile (--time, --crop, -o, --watch): refused, nothing submitted"
-for option in "--seed 3" "--time=1" "-o b.pfm" "--watch" "--dry-run"; do
-  # shellcheck disable=SC2086
-  refused "$root/examples/slurm/submit-samples.sh" --batches 2 --vkrt "$vkrt" --work "$names/batches" \
-    "$root/examples/slurm/cornell.test" "$names/batched.png" -- --backend cpu $option
-  says "submit-samples: ${option%% *} is not for"
-done
-[ ! -e "$names/batches" ] || { say "submit-samples made $names/batches although it refused" >&2; exit 1; }
+refuses_options submit-samples "$names/batches" "$names/batched.png" "--batches 2" \
+  "--seed 3" "--time=1" "-o b.pfm" "--watch" "--dry-run"
 say "batch options that cannot work in a batch (--seed, --time, -o, --watch, --dry-run): refused, nothing submitted"
 
 # Packages: slurmctld, slurmd, the client commands and munge, from Debian's mirrors.

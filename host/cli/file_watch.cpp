@@ -32,13 +32,10 @@ std::pair<std::string, std::string> split(const std::string& path) {
 FileWatch::FileWatch(const std::string& path) : path_(path) {
   fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
   if (fd_ < 0) throw IoError(std::string("cannot watch '") + path + "': " + std::strerror(errno));
-  const std::string folder = split(path).first;
-  if (::inotify_add_watch(fd_, folder.c_str(), IN_CLOSE_WRITE | IN_MOVED_TO | IN_ATTRIB) < 0) {
-    const int e = errno;
+  if (const int e = watchFolders(); e != 0) {
     ::close(fd_);
-    throw IoError("cannot watch the folder '" + folder + "' of '" + path + "': " + std::strerror(e));
+    throw IoError("cannot watch the folder '" + split(path).first + "' of '" + path + "': " + std::strerror(e));
   }
-  watchFolders();
   identity_ = identity();
 }
 
@@ -46,17 +43,20 @@ FileWatch::~FileWatch() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-void FileWatch::watchFolders() {
+int FileWatch::watchFolders() {
   for (const Watched& w : watched_) ::inotify_rm_watch(fd_, w.wd);   // a watch of a removed folder is gone already
   watched_.clear();
   std::vector<std::string> paths = {path_};
   std::unique_ptr<char, decltype(&std::free)> target(::realpath(path_.c_str(), nullptr), &std::free);
   if (target && split(target.get()) != split(path_)) paths.push_back(target.get());
+  int pathFolderError = 0;
   for (const std::string& p : paths) {
     auto [folder, name] = split(p);
     const int wd = ::inotify_add_watch(fd_, folder.c_str(), IN_CLOSE_WRITE | IN_MOVED_TO | IN_ATTRIB | IN_DELETE);
     if (wd >= 0) watched_.push_back({wd, name});
+    else if (&p == &paths.front()) pathFolderError = errno;
   }
+  return pathFolderError;
 }
 
 std::string FileWatch::identity() const {

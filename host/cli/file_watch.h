@@ -42,8 +42,9 @@ class FileWatch {
   };
   // (Re)creates the inotify watches: the folder of the path, and that of its target when the
   // path is a symbolic link. A folder that does not exist (now) is left out: the identity
-  // check sees the file come back, and the watches are made again then.
-  void watchFolders();
+  // check sees the file come back, and the watches are made again then. Returns the errno of
+  // the path's own folder's watch, 0 when it was made.
+  int watchFolders();
   // Reads the pending events; true when one names the file.
   bool drainEvents();
   // The file's identity now ("" when stat() fails: missing, or a dangling link).

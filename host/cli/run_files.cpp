@@ -34,7 +34,7 @@ bool RunFiles::same(const File& a, const File& b) {
   return a.canonical == b.canonical;
 }
 
-void RunFiles::addInput(const std::string& path, const std::string& role) {
+RunFiles::File RunFiles::fileNamed(const std::string& path, const std::string& role) {
   File f{path, role, canonicalName(path)};
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0) {
@@ -42,8 +42,10 @@ void RunFiles::addInput(const std::string& path, const std::string& role) {
     f.device = static_cast<std::uint64_t>(st.st_dev);
     f.inode = static_cast<std::uint64_t>(st.st_ino);
   }
-  inputs_.push_back(std::move(f));
+  return f;
 }
+
+void RunFiles::addInput(const std::string& path, const std::string& role) { inputs_.push_back(fileNamed(path, role)); }
 
 RunFiles::File RunFiles::resolvedOutput(const std::string& path, const std::string& role) const {
   OutputFile out = resolveOutputFile(path);
@@ -60,13 +62,9 @@ void RunFiles::checkOutput(const std::string& path, const std::string& role) con
   };
   // An input first, by what the file is: resolveOutputFile refuses some existing files (a hard
   // link among them) with an I/O error, and an input should be told as one.
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0) {
-    const File existing{path, role, canonicalName(path), true, static_cast<std::uint64_t>(st.st_dev),
-                        static_cast<std::uint64_t>(st.st_ino)};
+  if (const File existing = fileNamed(path, role); existing.exists)
     for (const File& in : inputs_)
       if (same(existing, in)) refuseInput(existing, in);
-  }
   File out = resolvedOutput(path, role);
   for (const File& in : inputs_)
     if (same(out, in)) refuseInput(out, in);

@@ -40,6 +40,8 @@ class RunFiles {
     std::uint64_t device = 0, inode = 0;
   };
   static bool same(const File& a, const File& b);
+  // `path` as it is now: what stat() finds there (device and inode), else its canonical name.
+  static File fileNamed(const std::string& path, const std::string& role);
   File resolvedOutput(const std::string& path, const std::string& role) const;
   std::vector<File> inputs_, outputs_;
 };

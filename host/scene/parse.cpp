@@ -61,6 +61,14 @@ double largestMagnitude(const dvec3& lo, const dvec3& hi) {
   return m;
 }
 
+// The largest magnitude among the coordinates of a shape's box.
+template <class Shape>
+double shapeMagnitude(const Shape& shape) {
+  dvec3 lo, hi;
+  shapes::bounds(shape, lo, hi);
+  return largestMagnitude(lo, hi);
+}
+
 // The shapes' own commands (shapes/shape_list.h): each reads its shape in the shape's file
 // and adds it to its array, and returns the largest magnitude of the shape's box (0 when it
 // added none).
@@ -73,9 +81,7 @@ struct ShapeCommandRow {
     auto shape = read(c);                                                  \
     if (!shape) return 0.0;                                                \
     s.member.push_back(*shape);                                            \
-    dvec3 lo, hi;                                                          \
-    shapes::bounds(*shape, lo, hi);                                        \
-    return largestMagnitude(lo, hi);                                       \
+    return shapeMagnitude(*shape);                                         \
   }},
 constexpr ShapeCommandRow kShapeCommands[] = {VKRT_SHAPE_COMMANDS(VKRT_SHAPE_COMMAND)};
 #undef VKRT_SHAPE_COMMAND
@@ -405,9 +411,7 @@ class Parser {
 
   void addTriangle(Triangle& t, std::string_view cmd) {
     t.material = currentMaterial();
-    dvec3 lo, hi;
-    shapes::bounds(t, lo, hi);
-    warnBeyondExactRange(cmd, largestMagnitude(lo, hi));
+    warnBeyondExactRange(cmd, shapeMagnitude(t));
     scene_.triangles.push_back(t);
   }
 
