@@ -52,6 +52,12 @@ constexpr std::string_view kOnOffNames[] = {"on", "off"};
 // camera and a scene scaled up render as they should up to 1e154 and are wrong from 2e154
 // (the CPU backend first); a margin of 10 leaves room for differences and sums of squares.
 constexpr double kMaxExactMagnitude = 1e153;
+// The other end: a shape less than this across has squares of lengths below the smallest
+// normal double (2.2e-308, the square of 1.5e-154), which lose their bits and then vanish.
+// Measured: a sphere of radius 1e-161 around the camera renders right on the CPU backend, one
+// of 1e-162 wrong (its squares below the smallest double); the Vulkan backend's float frame
+// is scaled to the scene and renders both right.
+constexpr double kMinExactSize = 1e-153;
 
 // The largest magnitude among the coordinates of box (lo, hi): infinite when one is not finite.
 double largestMagnitude(const dvec3& lo, const dvec3& hi) {
@@ -61,27 +67,31 @@ double largestMagnitude(const dvec3& lo, const dvec3& hi) {
   return m;
 }
 
-// The largest magnitude among the coordinates of a shape's box.
+// What a shape's box says of its precision: the largest magnitude among its coordinates, and
+// its largest side.
+struct ShapeExtent {
+  double magnitude = 0.0, size = 0.0;
+};
 template <class Shape>
-double shapeMagnitude(const Shape& shape) {
+ShapeExtent shapeExtent(const Shape& shape) {
   dvec3 lo, hi;
   shapes::bounds(shape, lo, hi);
-  return largestMagnitude(lo, hi);
+  const dvec3 side = hi - lo;
+  return {largestMagnitude(lo, hi), std::max({side.x, side.y, side.z})};
 }
 
 // The shapes' own commands (shapes/shape_list.h): each reads its shape in the shape's file
-// and adds it to its array, and returns the largest magnitude of the shape's box (0 when it
-// added none).
+// and adds it to its array, and returns the extent of the shape's box (0 when it added none).
 struct ShapeCommandRow {
   std::string_view name;
-  double (*read)(const ShapeCommand&, SceneDesc&);
+  ShapeExtent (*read)(const ShapeCommand&, SceneDesc&);
 };
-#define VKRT_SHAPE_COMMAND(name, read, member)                            \
-  ShapeCommandRow{name, [](const ShapeCommand& c, SceneDesc& s) -> double { \
-    auto shape = read(c);                                                  \
-    if (!shape) return 0.0;                                                \
-    s.member.push_back(*shape);                                            \
-    return shapeMagnitude(*shape);                                         \
+#define VKRT_SHAPE_COMMAND(name, read, member)                                 \
+  ShapeCommandRow{name, [](const ShapeCommand& c, SceneDesc& s) -> ShapeExtent { \
+    auto shape = read(c);                                                       \
+    if (!shape) return {};                                                      \
+    s.member.push_back(*shape);                                                 \
+    return shapeExtent(*shape);                                                 \
   }},
 constexpr ShapeCommandRow kShapeCommands[] = {VKRT_SHAPE_COMMANDS(VKRT_SHAPE_COMMAND)};
 #undef VKRT_SHAPE_COMMAND
@@ -346,7 +356,19 @@ class Parser {
   void readShape(const ShapeCommandRow& row) {
     const ShapeCommand command{args_, [this](std::string message) { error(std::move(message)); }, transform_,
                                [this] { return currentMaterial(); }};
-    warnBeyondExactRange(row.name, row.read(command, scene_));
+    warnOutsideExactRange(row.name, row.read(command, scene_));
+  }
+
+  // A shape beyond kMaxExactMagnitude or smaller than kMinExactSize (a point, of size 0, is
+  // another matter): rendered, with a warning.
+  void warnOutsideExactRange(std::string_view what, const ShapeExtent& extent) {
+    warnBeyondExactRange(what, extent.magnitude);
+    if (!(extent.size > 0.0 && extent.size < kMinExactSize)) return;
+    char m[32];
+    std::snprintf(m, sizeof m, "%.3g", extent.size);
+    warn(WarningKind::Magnitude, "'" + std::string(what) + "' is " + m +
+                                     " across, below 1e-153, where squares of lengths fall below the smallest normal "
+                                     "double: the picture may not show it; scale the scene up");
   }
 
   // A shape or camera whose coordinates lie beyond kMaxExactMagnitude: rendered, with a warning.
@@ -411,7 +433,7 @@ class Parser {
 
   void addTriangle(Triangle& t, std::string_view cmd) {
     t.material = currentMaterial();
-    warnBeyondExactRange(cmd, shapeMagnitude(t));
+    warnOutsideExactRange(cmd, shapeExtent(t));
     scene_.triangles.push_back(t);
   }
 

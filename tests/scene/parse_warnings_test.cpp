@@ -165,6 +165,15 @@ std::vector<Accepted> acceptedInputs() {
       {"CameraBeyondTheExactRange", "size 64 48\ncamera 0 0 -5e155 0 0 0 0 1 0 45\n", 2,
        "'camera' reaches coordinates of 5e+155, beyond 1e153",
        [](const SceneDesc& s) { EXPECT_EQ(s.camera.from.z, -5e155); }},
+      // Shapes less than 1e-153 across: squares of lengths below the smallest normal double (a
+      // sphere of radius 1e-162 around the camera renders wrong on the CPU backend).
+      {"SphereBelowTheExactSize", kOk + "sphere 0 0 0 1e-200\n", 3,
+       "'sphere' is 2e-200 across, below 1e-153, where squares of lengths fall below the smallest normal double",
+       [](const SceneDesc& s) { EXPECT_EQ(s.spheres.size(), 1u); }},
+      {"TriangleScaledBelowTheExactSize",
+       kOk + "vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nscale 1e-160 1e-160 1e-160\ntri 0 1 2\n", 7,
+       "'tri' is 1e-160 across, below 1e-153",
+       [](const SceneDesc& s) { EXPECT_EQ(s.triangles.size(), 1u); }},
       {"ExtraArgumentsToIntegrator", kOk + "integrator direct fast\n", 3,
        "'integrator' takes 1 argument (raytracer, analyticdirect, direct or pathtracer), got 2: the extra one is ignored",
        [](const SceneDesc& s) { EXPECT_EQ(s.path.integrator, Integrator::Direct); }},
@@ -308,9 +317,10 @@ TEST(ParseWarnings, CleanFilesHaveNone) {
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "maxdepth 2\noutput x.PNG\nsphere 0 0 0 1\n", "ok.test").warnings.empty());
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "output render.ppm\n", "ok.test").warnings.empty());   // written as PPM
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "output RENDER.PPM\n", "ok.test").warnings.empty());
-  // Up to 1e153, and tiny: the picture follows the scene (doc/robustness.md).
+  // Up to 1e153, and down to 1e-153 across: the picture follows the scene (doc/robustness.md);
+  // a point (a sphere of radius 0) is no shape of lost precision.
   EXPECT_TRUE(parseSceneWithWarnings("size 64 48\ncamera 0 0 1e153 0 0 0 0 1 0 45\nsphere 0 0 0 1e153\n"
-                                     "sphere 0 0 0 1e-200\n", "ok.test").warnings.empty());
+                                     "sphere 0 0 0 1e-153\nsphere 1e-200 0 0 0\n", "ok.test").warnings.empty());
   for (const std::string& name : projectSceneNames()) {
     ParsedScene p = parseSceneFileWithWarnings(sourcePath("scenes/" + name + ".test"));
     EXPECT_TRUE(p.warnings.empty()) << name << ": " << p.warnings.front().format();
