@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 
 #include "cli/exit_status.h"
 #include "cli/file_watch.h"
@@ -35,10 +34,7 @@ class Watcher {
     // An output named on the command line that cannot be written (a folder that does not
     // exist): no edit of the scene fixes it, so it is an error now, not a wait (IoError).
     if (o_.request.output) checkOutputWritable(*o_.request.output);
-    if (o_.request.outputDir)
-      checkOutputWritable((std::filesystem::path(*o_.request.outputDir) /
-                           std::filesystem::path(o_.request.scenePath).stem().concat(defaultImageExtension()))
-                              .string());
+    if (o_.request.outputDir) checkOutputWritable(defaultOutputIn(*o_.request.outputDir, o_.request.scenePath));
     for (int round = 1;; ++round) {
       bool changed = false;
       try {

@@ -390,13 +390,15 @@ void applySizeOverride(const RenderRequest& request, SceneDesc& scene) {
 // -o DIR/: the file name of the scene's `output` line, or the scene file's stem + the default
 // format's extension.
 std::string pathInOutputDir(const SceneDesc& scene, const std::string& dir) {
-  std::filesystem::path name = scene.outputLine > 0 ? std::filesystem::path(scene.output).filename()
-                                                    : std::filesystem::path(scene.sourcePath).stem();
-  if (scene.outputLine == 0) name += defaultImageExtension();
-  return (std::filesystem::path(dir) / name).string();
+  if (scene.outputLine == 0) return defaultOutputIn(dir, scene.sourcePath);
+  return (std::filesystem::path(dir) / std::filesystem::path(scene.output).filename()).string();
 }
 
 }  // namespace
+
+std::string defaultOutputIn(const std::string& dir, const std::string& scenePath) {
+  return (std::filesystem::path(dir) / std::filesystem::path(scenePath).stem().concat(defaultImageExtension())).string();
+}
 
 RenderSession::RenderSession() = default;
 RenderSession::~RenderSession() = default;

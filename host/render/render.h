@@ -181,6 +181,11 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
 // The memory the machine has available now (MemAvailable), or 0 when unknown.
 unsigned long long availableMemoryBytes();
 
+// Where a scene without an `output` line writes under `-o DIR/`: DIR/STEM.png, STEM the
+// scene file's name without its extension (resolveOutput; --watch checks that folder before
+// the scene parses).
+std::string defaultOutputIn(const std::string& dir, const std::string& scenePath);
+
 // The output path for a parsed scene, checked before rendering: first by request.onOutput,
 // then for writing. A bad `output` line in the scene is a SceneError at that line; a bad
 // override (`output` or `outputDir`) is an IoError.
