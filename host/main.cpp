@@ -44,11 +44,19 @@ std::exception_ptr failure() {
   return std::current_exception();
 }
 
-// " (N samples)" after a path integrator's output, with "time up" when --time ended it.
+// " (N samples)" after a path integrator's output, with "time up" when --time ended it, and
+// how far past it the first batch ran when that alone took longer.
 std::string samplesNote(const vkrt::RenderReport& r) {
   if (!r.pathIntegrator) return "";
+  std::string past;
+  if (r.firstBatchPastLimit >= 0.05) {   // (under --time the first batch is one sample)
+    char s[128];
+    std::snprintf(s, sizeof s, "; the first sample per pixel, which every render takes, ended %.1f s past --time",
+                  r.firstBatchPastLimit);
+    past = s;
+  }
   return ", " + vkrt::counted(r.samples, "sample", "samples") + " per pixel" +
-         (r.timeUp ? " when the time was up" : "");
+         (r.timeUp ? " when the time was up" : "") + past;
 }
 
 // The heatmap of --diff, when asked for, in the 8-bit format of its name.

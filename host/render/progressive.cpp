@@ -69,6 +69,7 @@ RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOp
     accumulateMean(mean, std::move(batch));
     r.samples += count;
     ++r.batches;
+    if (timed && r.batches == 1) r.firstBatchPastLimit = std::max(now() - start - options.timeLimitSeconds, 0.0);
     if (options.spp != 0 && r.samples >= options.spp) break;
     // The next batch: toward targetBatchSeconds, at most twice this one; under a time limit
     // nine tenths of what fits in the time left (the tenth for the estimate's error; the next

@@ -51,6 +51,9 @@ struct ProgressiveReport {
   bool timeUp = false;         // stopped by the time limit before spp
   bool stopped = false;        // stopped by `stop`
   double seconds = 0;
+  // Under a time limit, how far its first batch ran past it (0 when within): one sample per
+  // pixel, the least a render takes, took longer than the limit.
+  double firstBatchPastLimit = 0;
 };
 
 // Renders batches until spp samples are done, the time limit leaves no room for another

@@ -100,6 +100,7 @@ RadianceImage renderBatches(const BatchRenderer& batches, const SamplePlan& plan
   report.samples = done.samples;
   report.batches = done.batches;
   report.timeUp = done.timeUp;
+  report.firstBatchPastLimit = done.firstBatchPastLimit;
   return image;
 }
 

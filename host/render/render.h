@@ -130,6 +130,7 @@ struct RenderReport {
   std::uint64_t samples = 1;
   std::uint32_t batches = 1;
   bool timeUp = false;
+  double firstBatchPastLimit = 0;   // ProgressiveReport's: --time shorter than the first batch
   double gamma = 1.0;
   // The path tracer's estimator as rendered: "nexteventestimation mis, importancesampling
   // brdf, ..." (empty for the other integrators).

@@ -317,6 +317,28 @@ TEST(Progressive, TimeLimitStopsWhenNoSampleFitsAnyMore) {
   EXPECT_FALSE(report.timeUp);
 }
 
+// A time limit shorter than one sample per pixel, the least a render takes: that sample is
+// rendered, and the report says how far past the limit it ran (vkrt's output line prints it).
+TEST(Progressive, AFirstBatchLongerThanTheLimitIsReported) {
+  FakeIntegrator fake;
+  fake.secondsPerSample = 5.0;
+  ProgressiveOptions o;
+  o.spp = 0;
+  o.timeLimitSeconds = 1.0;
+  o.now = [&fake] { return fake.clock; };
+  ProgressiveReport report;
+  renderProgressive([&fake](const SampleBatch& b, const auto&) { return fake(b); }, o, &report);
+  EXPECT_EQ(report.samples, 1u);
+  EXPECT_TRUE(report.timeUp);
+  EXPECT_DOUBLE_EQ(report.firstBatchPastLimit, 4.0);
+  // Within the limit: 0, however the later batches end.
+  fake = FakeIntegrator{};
+  fake.secondsPerSample = 0.125;
+  renderProgressive([&fake](const SampleBatch& b, const auto&) { return fake(b); }, o, &report);
+  EXPECT_EQ(report.samples, 8u);
+  EXPECT_EQ(report.firstBatchPastLimit, 0.0);
+}
+
 // A timed render loses at most 5% of the throughput of the same samples in one batch, on a
 // fake clock whose batches cost about what lavapipe's do (scenes/gi/box.test): a setup, a
 // warm-up in the first, and per sample 0.1 s, more in small batches (lanes with few samples
