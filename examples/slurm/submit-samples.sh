@@ -56,18 +56,21 @@ esac
 
 work=$(realpath -m "${work:-$output.batches}")
 mkdir -p "$work"
+# sbatch expands %-patterns (%a, %j, ...) anywhere in --output's path, so a % in the folder's
+# name would send the logs elsewhere: each is doubled (%% is a literal %), the script's own %a kept.
+logs=${work//\%/%%}
 here=$(dirname "$(realpath "$0")")
 # The jobs' variables go through the environment (--export=ALL), not in --export's
 # comma-separated list, which would cut a value that holds a comma; VKRT_ARGS as shell words.
 vkrt_args=""
 [ ${#extra[@]} -eq 0 ] || vkrt_args=$(printf '%q ' "${extra[@]}")
 array=$(VKRT=$vkrt BATCH_DIR=$work SCENE=$scene SEED_BASE=$seed SPP=$spp TIME=$time VKRT_ARGS=$vkrt_args \
-  sbatch --parsable --export=ALL --array=0-$((batches - 1)) --output="$work/batch-%a.log" \
+  sbatch --parsable --export=ALL --array=0-$((batches - 1)) --output="$logs/batch-%a.log" \
   "$here/samples-job.sh")
 array=${array%%;*}   # (a cluster name may follow)
 merge=$(VKRT=$vkrt PART_DIR=$work PART_NAME=batch PART_EXT=pfm PARTS=$batches OUTPUT=$output \
   sbatch --parsable $wait --export=ALL --dependency="afterok:$array" --kill-on-invalid-dep=yes \
-  --output="$work/merge.log" "$here/merge-job.sh") || {
+  --output="$logs/merge.log" "$here/merge-job.sh") || {
   echo "submit-samples: the merge job failed (see $work/merge.log and $work/batch-*.log)" >&2; exit 1; }
 # (sbatch --wait may report success for a merge cancelled because a batch failed.)
 if [ -n "$wait" ] && [ ! -f "$output" ]; then

@@ -46,12 +46,15 @@ fi
 
 [ "$chunks" -le "${#scenes[@]}" ] || chunks=${#scenes[@]}
 printf '%s\n' "${scenes[@]}" > "$out/scenes.list"
+# sbatch expands %-patterns (%a, %j, ...) anywhere in --output's path, so a % in OUT_DIR's name
+# would send the logs elsewhere: each is doubled (%% is a literal %), the script's own %a kept.
+logs=${out//\%/%%}
 # The job's variables go through the environment (--export=ALL), not in --export's
 # comma-separated list, which would cut a value that holds a comma; VKRT_ARGS as shell words.
 vkrt_args=""
 [ ${#extra[@]} -eq 0 ] || vkrt_args=$(printf '%q ' "${extra[@]}")
 job=$(VKRT=$(realpath "$vkrt") LIST=$out/scenes.list OUT_DIR=$out CHUNKS=$chunks VKRT_ARGS=$vkrt_args \
-  sbatch --parsable $wait --export=ALL --array=0-$((chunks - 1)) --output="$out/chunk-%a.log" \
+  sbatch --parsable $wait --export=ALL --array=0-$((chunks - 1)) --output="$logs/chunk-%a.log" \
   "$(dirname "$(realpath "$0")")/scenes-job.sh") || {
   echo "submit-scenes: a chunk failed (see $out/chunk-*.log)" >&2; exit 1; }
 echo "scenes: job ${job%%;*} (${#scenes[@]} scenes in $chunks array tasks) -> $out/"

@@ -6,10 +6,11 @@
 # slurmctld and slurmd under a temporary folder (no systemd, nothing under /etc changed),
 # renders a scene as a 3x2 tile array plus a dependent merge, a path-traced scene as 4 sample
 # batches plus a dependent merge, and a list of scenes in chunks, with paths and an option
-# value that hold commas and blanks; checks that the merged tiles and the chunks' images equal
-# one-machine renders bit for bit, and the merged batches a one-machine render of other
-# samples statistically; and stops what it started. Needs perl (Debian's perl-base) to read
-# the float images.
+# value that hold commas and blanks, and paths that hold a % sbatch would expand (%a, %j);
+# checks that the merged tiles (at a --size and at a --scale) and the chunks' images equal
+# one-machine renders bit for bit, the merged batches a one-machine render of other samples
+# statistically, and every job's log in its work folder; and stops what it started. Needs
+# perl (Debian's perl-base) to read the float images.
 #
 #   examples/slurm/test-local-cluster.sh [path/to/vkrt]      (default: build/vkrt)
 #
@@ -27,7 +28,7 @@ tmp=$(realpath "$(mktemp -d -t vkrt-slurm.XXXXXX)")
 chmod 755 "$tmp"   # munged wants its socket's folders searchable by all
 pids=()
 dump_logs() {
-  for f in "$tmp"/log/* "$tmp"/refused.err "$tmp"/jobs/*/tiles/*.log "$tmp"/jobs/*/samples/*.log "$tmp"/out/*/*.log; do
+  for f in "$tmp"/log/* "$tmp"/refused.err "$tmp"/jobs/*/tiles*/*.log "$tmp"/jobs/*/samples/*.log "$tmp"/out/*/*.log; do
     [ -f "$f" ] || continue
     echo "----- $f (last 40 lines)"; tail -n 40 "$f"
   done
@@ -189,13 +190,23 @@ say "cluster up: $(sinfo -h -o '%P %D %T %c CPUs %m MB' | head -n 1) ($(($(date 
 
 cd "$tmp/jobs"
 # The jobs' scenes, work folders and images lie in a folder whose name holds a comma and a
-# blank, and their options include a value that does: each must reach the jobs whole.
-odd="$tmp/jobs/odd, name"
+# blank, and their options include a value that does: each must reach the jobs whole. The name
+# holds a %a too, which sbatch expands in --output's path (to the array index): unless the
+# scripts write it %%a there, the logs go to folders `odd, 500 name` and so on, which do not
+# exist, and the jobs fail.
+odd="$tmp/jobs/odd, 50%a name"
 mkdir -p "$odd"
 probe=(--device "no such, device")   # one word; the CPU backend does not read --device
 scene="$odd/show, case.test"
 cp "$root/scenes/showcase.test" "$scene"
 args=(--backend cpu --size 123x77)   # odd sizes: tiles of unequal widths and heights
+# logs_in DIR LOG...: each job's log is in DIR (where the script's --output put it).
+logs_in() {
+  local dir=$1 log; shift
+  for log in "$@"; do
+    [ -f "$dir/$log" ] || { say "no log $dir/$log: sbatch wrote it elsewhere (under an expanded %?)" >&2; return 1; }
+  done
+}
 
 # A scene as 3x2 tiles and a dependent merge, against a one-machine render.
 "$vkrt" "${args[@]}" -q -o "$tmp/jobs/single.png" "$scene"
@@ -206,7 +217,22 @@ timeout "$timeout_s" "$root/examples/slurm/submit-tiles.sh" --tiles 3x2 --vkrt "
   { say "the merged image differs from the one-machine render" >&2; exit 1; }
 cmp "$odd/merged.png" "$tmp/jobs/single.png" ||
   { say "the merged PNG's bytes differ from the one-machine render's" >&2; exit 1; }
+logs_in "$odd/tiles" tile-{0..5}.log merge.log
 say "3x2 tiles merged: equal to the one-machine render, bit for bit"
+
+# The full size comes from vkrt (--dry-run), so --scale places the tiles too: 800x500 x 0.37 is
+# 296x185 (the scene's `size` would put every tile's crop off the smaller image). -q must not
+# hide the size from the script.
+scaled=(--backend cpu --scale 0.37)
+"$vkrt" "${scaled[@]}" -q -o "$tmp/jobs/single-scaled.png" "$scene"
+summary=$(timeout "$timeout_s" "$root/examples/slurm/submit-tiles.sh" --tiles 3x2 --vkrt "$vkrt" \
+  --work "$odd/tiles, scaled" --wait "$scene" "$odd/merged-scaled.png" -- "${scaled[@]}" -q "${probe[@]}") ||
+  { say "the tile jobs or the merge at --scale 0.37 failed or timed out" >&2; exit 1; }
+[[ $summary == *"3x2 of 296x185)"* ]] || { say "the tiles at --scale 0.37 are not of 296x185: $summary" >&2; exit 1; }
+cmp "$odd/merged-scaled.png" "$tmp/jobs/single-scaled.png" ||
+  { say "the merged image at --scale 0.37 differs from the one-machine render's" >&2; exit 1; }
+logs_in "$odd/tiles, scaled" tile-{0..5}.log merge.log
+say "3x2 tiles at --scale 0.37 (296x185) merged: equal to the one-machine render, bit for bit"
 
 # A path-traced scene as 4 batches of 4 samples (seeds 1-4) and a dependent merge, against a
 # one-machine render of 16 samples of another seed: two independent estimates of the same
@@ -220,6 +246,7 @@ timeout "$timeout_s" "$root/examples/slurm/submit-samples.sh" --batches 4 --spp 
 record=$(LC_ALL=C grep -a '^vkrt-samples ' "$odd/merged-16spp.pfm" || true)
 [[ $record == "vkrt-samples 16 gamma "*" seeds 1:0+4 2:0+4 3:0+4 4:0+4" ]] ||
   { say "the merged batches' record is not 16 samples of seeds 1-4: '$record'" >&2; exit 1; }
+logs_in "$odd/samples" batch-{0..3}.log merge.log
 
 # same_expectation A.pfm B.pfm: whether two independent renders estimate the same expected
 # image. For each pixel and channel d = A - B has mean 0 (both unbiased for the same pixel)
@@ -280,7 +307,7 @@ sed 's/^output .*/# output spheres.png/' "$spheres" > "$odd/commented.test"
 scenes=("$root"/scenes/*.test "$odd/no output, 1.test" "$odd/commented.test")
 mkdir -p "$tmp/out/single"
 "$vkrt" --backend cpu -q -o "$tmp/out/single/" "${scenes[@]}"
-chunks="$tmp/out/chunks, 1"
+chunks="$tmp/out/chunks, 1%j"   # (%j: the job's id in --output, unless written %%j)
 timeout "$timeout_s" "$root/examples/slurm/submit-scenes.sh" --chunks 3 --vkrt "$vkrt" --wait "$chunks" \
   "${scenes[@]}" -- --backend cpu "${probe[@]}" ||
   { say "a scene chunk failed or timed out" >&2; exit 1; }
@@ -289,5 +316,6 @@ for f in "$tmp"/out/single/*; do
 done
 [ -f "$chunks/no output, 1.png" ] && [ -f "$chunks/commented.png" ] ||
   { say "the chunks did not name the scenes without an output line after their stems" >&2; exit 1; }
+logs_in "$chunks" chunk-{0..2}.log
 say "${#scenes[@]} scenes in 3 chunks: the same images as one run"
 say "passed in $(($(date +%s) - start)) s"
