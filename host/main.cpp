@@ -49,9 +49,9 @@ std::exception_ptr failure() {
 std::string samplesNote(const vkrt::RenderReport& r) {
   if (!r.pathIntegrator) return "";
   std::string past;
-  if (r.firstBatchPastLimit >= 0.05) {   // (under --time the first batch is one sample)
+  if (r.firstBatchPastLimit > 0) {   // (under --time the first batch is one sample)
     char s[128];
-    std::snprintf(s, sizeof s, "; the first sample per pixel, which every render takes, ended %.1f s past --time",
+    std::snprintf(s, sizeof s, "; the first sample per pixel, which every render takes, ended %.2g s past --time",
                   r.firstBatchPastLimit);
     past = s;
   }

@@ -144,7 +144,7 @@ std::string makeUsageText() {
          "                         and the command line's (exit 1: --spp for a Whitted scene, an\n" +
          filled(kHelpIndent, kHelpIndent, "output name not " + imageExtensionsText() + ")") +
          "\n"
-         "comparison options (diff and --check):\n"
+         "comparison options (diff, --check and --compare):\n"
          "  --max-pixels-over S:L  fail when more than L pixels (a count, or a share with %,\n"
          "                         e.g. 2:0.1%) differ by more than S/255; may be repeated\n"
          "  --max-diff N           fail when any channel differs by more than N/255\n"
@@ -190,14 +190,14 @@ std::string makeUsageText() {
          "exit status:\n"
          "  0    ok (warnings, if any, on stderr)\n"
          "  1    usage error: the command line (with --strict: its warnings too), or an output\n"
-         "       that is a file the run reads or writes already (nothing rendered or written)\n"
+         "       that is a file the run reads or writes already (that scene not rendered)\n"
          "  2    scene error: the scene file cannot be rendered as meant (with --strict: any of\n"
          "       its warnings); a line over 1 MiB, a file over 1 GiB, a byte that is not text\n"
          "  3    device error: the Vulkan backend cannot render here (no driver or device, a failed\n"
          "       call, a scene beyond its limits); --backend cpu may\n"
          "  4    I/O error: a file cannot be read or written (also an output refused by what it\n"
          "       is: a directory, device, FIFO, a file with several hard links)\n"
-         "  5    images differ beyond the thresholds (diff, --check, --compare)\n"
+         "  5    images differ beyond the thresholds (diff, --check, --compare, grade)\n"
          "  6    out of memory (host or device), also when found before allocating\n"
          "  70   internal error: a bug in vkrt\n"
          "  128+N  stopped by signal N (130: Ctrl-C, 143: SIGTERM, 129: SIGHUP); nothing written,\n"
@@ -262,7 +262,7 @@ void refuseMistypedSubcommand(const std::vector<std::string>& args) {
 void refuseImagesAsScenes(const std::vector<std::string>& scenes) {
   for (const std::string& scene : scenes)
     if (std::optional<std::string> kind = imageKind(scene))
-      throw UsageError(abbreviated(scene) + " is a " + *kind +
+      throw UsageError(abbreviated(scene) + " is " + withArticle(*kind) +
                        " image, not a scene file (to compare images: vkrt diff A B; to merge tiles: "
                        "vkrt merge -o OUT TILE ...)");
 }
@@ -335,11 +335,12 @@ std::string unnamedWarning(const std::string& what, const std::string& path, For
          std::string(imageFormats().front().name) + ", under that name";
 }
 
-// An output path that names a folder (ends in '/', or is one): the write's error says so,
-// without a warning about its name first.
-bool namesAFolder(const std::string& path) {
+// Whether an output path gets unnamedWarning: named as no image format, and not a folder
+// (ends in '/', or is one) or a scene file, whose refusal by the write says so alone.
+bool warnsOfItsName(const std::string& path) {
   std::error_code ec;
-  return path.back() == '/' || std::filesystem::is_directory(path, ec);
+  return !hasImageExtension(path) && path.back() != '/' && !std::filesystem::is_directory(path, ec) &&
+         !namedAsSceneFile(path);
 }
 
 // vkrt merge [--allow-gaps] -o OUT.png TILE.png ...
@@ -382,7 +383,7 @@ Options parseMergeOptions(const std::vector<std::string>& args) {
   const std::string ext = defaultImageExtension(), example = "vkrt merge -o OUT" + ext + " TILE" + ext + " ...";
   if (o.mergeOutput.empty()) throw UsageError("merge needs the output image: " + example);
   if (o.mergeTiles.empty()) throw UsageError("merge needs at least one tile: " + example);
-  if (!hasImageExtension(o.mergeOutput) && !namesAFolder(o.mergeOutput)) {   // a folder: its error alone
+  if (warnsOfItsName(o.mergeOutput)) {
     std::string w = unnamedWarning("output file", o.mergeOutput, FormatsOf::All);
     if (o.request.strict) throw UsageError(w + " [--strict]");
     o.warnings.push_back(w);
@@ -509,7 +510,7 @@ Options parseGradeOptions(const std::vector<std::string>& args) {
   o.gradeInputs.assign(operands.begin() + 1, operands.end());
   for (const std::string& in : o.gradeInputs)
     if (std::optional<std::string> kind = imageKind(in); kind && !isDirectory(in))
-      throw UsageError("grade: " + abbreviated(in) + " is a " + *kind +
+      throw UsageError("grade: " + abbreviated(in) + " is " + withArticle(*kind) +
                        " image; give the folder that holds the submission's images (or a scene file to render)");
   return o;
 }
@@ -666,7 +667,7 @@ Options parseOptions(const std::vector<std::string>& args) {
     if (holdsLinearFloat(*o.heatmapPath))
       throw UsageError("--diff " + abbreviated(*o.heatmapPath) + ": the heatmap is an 8-bit image; name it " +
                        imageExtensionsText(FormatsOf::Bytes));
-    if (!hasImageExtension(*o.heatmapPath)) {
+    if (warnsOfItsName(*o.heatmapPath)) {
       std::string w = unnamedWarning("heatmap file", *o.heatmapPath, FormatsOf::Bytes);
       if (o.request.strict) throw UsageError(w + " [--strict]");
       o.warnings.push_back(w);
@@ -696,7 +697,7 @@ Options parseOptions(const std::vector<std::string>& args) {
       throw UsageError("-o " + abbreviated(*output) + " names one file, for " + std::to_string(scenes.size()) +
                        " scenes: give a folder (-o DIR/, with the '/') or leave -o out");
     o.request.output = *output;
-    if (!hasImageExtension(*output) && !namesAFolder(*output)) {   // a folder: its error alone
+    if (warnsOfItsName(*output)) {
       std::string w = unnamedWarning("output file", *output, FormatsOf::All);
       if (o.request.strict) throw UsageError(w + " [--strict]");
       o.warnings.push_back(w);

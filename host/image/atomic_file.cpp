@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "errors.h"
+#include "image/image_file.h"
 #include "interrupt.h"
 #include "scene/diagnostic.h"   // abbreviated
 
@@ -113,9 +114,7 @@ OutputFile resolveOutputFile(const std::string& path) {
     throw IoError("output path " + described + " names a directory, not a file");
   // vkrt's outputs are images and reports, never scenes: an output named as a scene file is
   // a slip (arguments swapped, a scene named for another), and would replace a scene.
-  std::string extension = std::filesystem::path(file).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".test")
+  if (namedAsSceneFile(file))
     throw IoError("cannot write " + described + ": that is a scene file's name (.test), and vkrt writes images, "
                   "never scenes; name the output as what it holds (" +
                   std::filesystem::path(file).replace_extension(".png").string() + ")");

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <string_view>
 
 #include "errors.h"
 #include "image/atomic_file.h"
@@ -125,6 +126,17 @@ const ImageFormat& imageFormatFor(const std::string& path) {
 }
 
 bool hasImageExtension(const std::string& path) { return formatNamed(path) != nullptr; }
+
+std::string withArticle(const std::string& formatName) {
+  const bool vowel = !formatName.empty() && std::string_view("AEIOU").find(formatName[0]) != std::string_view::npos;
+  return (vowel ? "an " : "a ") + formatName;
+}
+
+bool namedAsSceneFile(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".test";
+}
 
 std::optional<std::string> imageKindByName(const std::string& path) {
   if (const ImageFormat* format = formatNamed(path)) return std::string(format->name);

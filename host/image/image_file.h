@@ -69,6 +69,13 @@ const ImageFormat& imageFormatFor(const std::string& path);
 // extension says. Any other name gets the default format, and a warning.
 bool hasImageExtension(const std::string& path);
 
+// True when `path` ends in `.test` (any case), a scene file's name: never an output's
+// (checkOutputWritable refuses it, and no warning about its format comes before that).
+bool namedAsSceneFile(const std::string& path);
+
+// "a PNG", "an EXR": a format's name (PNG, PPM, PFM, EXR, JPEG) after its article.
+std::string withArticle(const std::string& formatName);
+
 // The format vkrt reads `path` as, by its name alone (any case): the table's for one of its
 // extensions, "JPEG" for .jpg or .jpeg (read, never written); nothing for any other name.
 std::optional<std::string> imageKindByName(const std::string& path);

@@ -294,7 +294,7 @@ std::string mixedTiles(const std::string& why) {
 Image mergeCrops(const std::vector<std::string>& tilePaths, bool allowGaps, MergeReport* report) {
   for (const std::string& path : tilePaths)
     if (isFloatImageFile(path))
-      throw UsageError(mixedTiles("tile '" + path + "' is a " + floatFormatName(path) + " file"));
+      throw UsageError(mixedTiles("tile '" + path + "' is " + withArticle(floatFormatName(path)) + " file"));
   return placeTiles<Image>(tilePaths, allowGaps, report);
 }
 
@@ -313,7 +313,7 @@ void writeMergedCrops(const std::vector<std::string>& tilePaths, bool allowGaps,
   const bool floatTiles = !tilePaths.empty() && std::all_of(tilePaths.begin(), tilePaths.end(), isFloatImageFile);
   for (const std::string& path : tilePaths)
     if (!floatTiles && isFloatImageFile(path))
-      throw UsageError(mixedTiles("tile '" + path + "' is a " + floatFormatName(path) + " file"));
+      throw UsageError(mixedTiles("tile '" + path + "' is " + withArticle(floatFormatName(path)) + " file"));
   CheckedTiles checked = checkTiles(tilePaths, allowGaps, floatTiles);
   if (floatTiles) {
     const double gamma = checked.samples ? checked.samples->gamma : 1.0;

@@ -305,7 +305,8 @@ class Parser {
     }
     args_.ignoreExtra("output", 1, usage);
     std::string_view name = args_[0];
-    if (!outputOverridden_ && !hasImageExtension(std::string(name)))
+    // (A scene file's name is an error at this line when the output is checked, and alone.)
+    if (!outputOverridden_ && !hasImageExtension(std::string(name)) && !namedAsSceneFile(std::string(name)))
       warn(WarningKind::OutputName, "output file " + quoted(name) + " is not named " + imageExtensionsText() +
                                         ": vkrt writes " + std::string(imageFormats().front().name) +
                                         ", under that name");

@@ -231,8 +231,16 @@ TEST(FileSafety, AnOutputNamedAsASceneIsRefused) {
     RunResult r = runVkrt(c.args);
     EXPECT_NE(r.exitCode, 0) << c.args << "\n" << r.output;
     EXPECT_TRUE(contains(r.output, c.says)) << r.output;
+    // The refusal alone: no warning first that the name will be written as PNG.
+    if (c.args.rfind("convert", 0) != 0) {
+      EXPECT_FALSE(contains(r.output, "vkrt writes PNG")) << r.output;
+    }
   }
-  EXPECT_TRUE(contains(runVkrt("--backend cpu " + dir + "/line.test").output, "line.test:6: error: cannot write"));
+  // -o: an I/O error; the scene's `output` line: a scene error at that line.
+  EXPECT_EQ(runVkrt("--backend cpu -o " + dir + "/other.test " + dir + "/s.test").exitCode, 4);
+  RunResult line = runVkrt("--backend cpu " + dir + "/line.test");
+  EXPECT_EQ(line.exitCode, 2);
+  EXPECT_TRUE(contains(line.output, "line.test:6: error: cannot write")) << line.output;
   EXPECT_EQ(readFile(dir + "/other.test"), kScene);
   EXPECT_FALSE(fileExists(dir + "/out.TEST"));
   EXPECT_TRUE(leftovers(dir).empty());

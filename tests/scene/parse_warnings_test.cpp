@@ -174,6 +174,13 @@ std::vector<Accepted> acceptedInputs() {
        kOk + "vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nscale 1e-160 1e-160 1e-160\ntri 0 1 2\n", 7,
        "'tri' is 1e-160 across, below 1e-153",
        [](const SceneDesc& s) { EXPECT_EQ(s.triangles.size(), 1u); }},
+      // A sphere scaled to those sizes: its box without squares that overflow or underflow.
+      {"SphereScaledBeyondTheExactRange", kOk + "scale 1e160 1 1\nsphere 0 0 0 1\n", 4,
+       "'sphere' reaches coordinates of 1e+160, beyond 1e153",
+       [](const SceneDesc& s) { EXPECT_EQ(s.spheres.size(), 1u); }},
+      {"SphereScaledBelowTheExactSize", kOk + "scale 1e-160 1e-160 1e-160\nsphere 0 0 0 1\n", 4,
+       "'sphere' is 2e-160 across, below 1e-153",
+       [](const SceneDesc& s) { EXPECT_EQ(s.spheres.size(), 1u); }},
       {"ExtraArgumentsToIntegrator", kOk + "integrator direct fast\n", 3,
        "'integrator' takes 1 argument (raytracer, analyticdirect, direct or pathtracer), got 2: the extra one is ignored",
        [](const SceneDesc& s) { EXPECT_EQ(s.path.integrator, Integrator::Direct); }},

@@ -70,7 +70,8 @@ void bounds(const Sphere& s, dvec3& lo, dvec3& hi) {
   dvec3 c = dvec3(s.worldFromObject * glm::dvec4(s.center, 1.0));
   const dmat4& m = s.worldFromObject;
   for (int row = 0; row < 3; ++row) {
-    double e = s.radius * std::sqrt(m[0][row] * m[0][row] + m[1][row] * m[1][row] + m[2][row] * m[2][row]);
+    // (hypot: no square overflows or underflows, so a sphere scaled by 1e160 or 1e-160 gets its box)
+    double e = s.radius * std::hypot(m[0][row], m[1][row], m[2][row]);
     lo[row] = c[row] - e;
     hi[row] = c[row] + e;
   }
