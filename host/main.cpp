@@ -50,10 +50,9 @@ std::string samplesNote(const vkrt::RenderReport& r) {
   if (!r.pathIntegrator) return "";
   std::string past;
   if (r.firstBatchPastLimit > 0) {   // (under --time the first batch is one sample)
-    char s[128];
-    std::snprintf(s, sizeof s, "; the first sample per pixel, which every render takes, ended %.2g s past --time",
-                  r.firstBatchPastLimit);
-    past = s;
+    char s[32];
+    std::snprintf(s, sizeof s, r.firstBatchPastLimit >= 1 ? "%.1f" : "%.2g", r.firstBatchPastLimit);
+    past = std::string("; the first sample per pixel, which every render takes, ended ") + s + " s past --time";
   }
   return ", " + vkrt::counted(r.samples, "sample", "samples") + " per pixel" +
          (r.timeUp ? " when the time was up" : "") + past;

@@ -36,6 +36,9 @@ done
 # vkrt itself names each image and refuses two scenes that would write one file, as one run
 # of `vkrt -o OUT_DIR/` does (--dry-run: each scene parsed and its output checked, nothing
 # rendered): in separate chunks one would overwrite the other. The options are checked too.
+# A backslash anywhere in --output's path makes sbatch expand none of its %-patterns: every
+# task would write the one log named %a. Refused rather than worked around.
+case $out in *\\*) echo "submit-scenes: the output folder '$out' has a backslash in its name, which stops sbatch from naming each task's log (%a); choose one without" >&2; exit 1 ;; esac
 made_out=""
 [ -d "$out" ] || { mkdir -p "$out" && made_out=1; }
 if ! "$vkrt" --dry-run -q -o "$out/" "${extra[@]}" "${scenes[@]}"; then

@@ -80,6 +80,9 @@ if [ "$cols" -gt "$width" ] || [ "$rows" -gt "$height" ]; then
 fi
 
 work=$(realpath -m "${work:-$output.tiles}")
+# A backslash anywhere in --output's path makes sbatch expand none of its %-patterns: every
+# task would write the one log named %a. Refused rather than worked around.
+case $work in *\\*) echo "submit-tiles: the work folder '$work' has a backslash in its name, which stops sbatch from naming each task's log (%a); choose one without (--work DIR)" >&2; exit 1 ;; esac
 mkdir -p "$work"
 # sbatch expands %-patterns (%a, %j, ...) anywhere in --output's path, so a % in the folder's
 # name would send the logs elsewhere: each is doubled (%% is a literal %), the script's own %a kept.

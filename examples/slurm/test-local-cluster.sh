@@ -124,6 +124,20 @@ refuses_options submit-samples "$names/batches" "$names/batched.png" "--batches 
   "--seed 3" "--time=1" "-o b.pfm" "--watch" "--dry-run"
 say "batch options that cannot work in a batch (--seed, --time, -o, --watch, --dry-run): refused, nothing submitted"
 
+# A backslash in a folder's name stops sbatch from expanding %a in the logs' names (every task
+# would write one log): each script refuses it, submitting nothing and making no folder.
+bs="$names/back\\slash"
+refused "$root/examples/slurm/submit-tiles.sh" --tiles 2x1 --vkrt "$vkrt" --work "$bs" \
+  "$root/examples/slurm/cornell.test" "$names/bs-tiled.png" -- --backend cpu
+says "submit-tiles: the work folder '$bs' has a backslash in its name"
+refused "$root/examples/slurm/submit-samples.sh" --batches 2 --vkrt "$vkrt" --work "$bs" \
+  "$root/examples/slurm/cornell.test" "$names/bs-batched.pfm" -- --backend cpu
+says "submit-samples: the work folder '$bs' has a backslash in its name"
+refused "$root/examples/slurm/submit-scenes.sh" --chunks 2 --vkrt "$vkrt" "$bs" "$names/x/plain.test"
+says "submit-scenes: the output folder '$bs' has a backslash in its name"
+[ ! -e "$bs" ] || { say "a script made $bs although it refused" >&2; exit 1; }
+say "a folder with a backslash in its name (sbatch would name no task's log): refused, nothing submitted"
+
 # Packages: slurmctld, slurmd, the client commands and munge, from Debian's mirrors.
 if ! command -v slurmctld >/dev/null || ! command -v slurmd >/dev/null || ! command -v sbatch >/dev/null ||
    ! command -v munged >/dev/null; then
