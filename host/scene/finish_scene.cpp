@@ -76,7 +76,7 @@ void keepDefaults(SceneDesc& scene, CommandSet ignored) {
 void clampShininess(SceneDesc& scene, const Deferred& deferred, const std::string& which, DiagnosticLog& log) {
   for (int line : deferred.steepShininessLines)
     log.warn(line, WarningKind::Clamped,
-             "shininess clamped to 1e9 for " + which +
+             "shininess clamped to 1e7 for " + which +
                  " (a lobe narrower than float32 resolves: the same picture, and finite)");
   for (Material& m : scene.materials) m.shininess = std::min(m.shininess, kMaxPathShininess);
 }

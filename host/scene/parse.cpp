@@ -35,10 +35,16 @@ namespace {
 // Values that render finite on both backends (doc/robustness.md, "Numerical robustness"): a colour or
 // radiance channel beyond float32 (the Vulkan backend's precision) is clamped to the largest
 // float; a GGX roughness above kMaxRoughness (alpha^4 would overflow float32; the lobe is as
-// flat at 1e4 as beyond) is clamped to that, and so, for the path integrators, is a Phong
-// exponent above kMaxPathShininess (finish_scene.h). Each with a warning at its line.
+// flat at 1e4 as beyond) is clamped to that, one above 0 but below kMinRoughness raised to it,
+// and so, for the path integrators, is a Phong exponent above kMaxPathShininess
+// (finish_scene.h) clamped. Each with a warning at its line.
 constexpr double kMaxColour = 3.4028234663852886e38;   // the largest float
 constexpr double kMaxRoughness = 1e4;
+// Below this a GGX lobe is narrower than float32 resolves: the Vulkan backend's D overflowed
+// to NaN pixels (1e-22 to 1e-12) or drew the lobe dark (1e-6; measured: the two backends agree
+// to 0/255 at 1e-5 with BRDF sampling). At 1e-4 the lobe is already narrower than a pixel
+// of any usual view (0 stays 0: no lobe, doc/path-tracing.md).
+constexpr double kMinRoughness = 1e-4;
 
 // The keyword values of doc/path-tracing.md, "Commands", in the order of their enums (those of
 // `integrator`: kIntegratorNames, integrator_table.h; kNextEventNames, kSamplingNames:
@@ -615,6 +621,11 @@ class Parser {
       warn(WarningKind::Clamped, "roughness " + quoted(args_[0]) +
                                      " clamped to 1e4 (GGX is as flat there as beyond, and float32 would overflow)");
       material_.roughness = kMaxRoughness;
+    } else if (a[0] > 0.0 && a[0] < kMinRoughness) {
+      warn(WarningKind::Clamped, "roughness " + quoted(args_[0]) +
+                                     " clamped to 1e-4 (a lobe narrower than float32 resolves: the same picture, "
+                                     "and finite)");
+      material_.roughness = kMinRoughness;
     }
   }
 
