@@ -5,6 +5,7 @@
 // files before anything is read, rendered or written.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <functional>
@@ -102,9 +103,14 @@ int reportComparison(const vkrt::Options& o, const vkrt::Image& actual, const vk
     writeHeatmap(o, diff);
     std::string json = vkrt::diffReportJson(diff, failures);
     if (linear) {
-      char extra[96];
-      std::snprintf(extra, sizeof extra, ",\"linear_max_diff\":%.9g,\"linear_rmse\":%.9g}", linear->maxDiff, linear->rmse);
-      json = json.substr(0, json.size() - 1) + extra;
+      // JSON has no infinity: a difference without bound (a NaN or infinite channel) is null.
+      auto number = [](double v) {
+        char s[32];
+        std::snprintf(s, sizeof s, "%.9g", v);
+        return std::isfinite(v) ? std::string(s) : std::string("null");
+      };
+      json = json.substr(0, json.size() - 1) + ",\"linear_max_diff\":" + number(linear->maxDiff) +
+             ",\"linear_rmse\":" + number(linear->rmse) + "}";
     }
     std::printf("%s\n", json.c_str());
   } else {

@@ -63,8 +63,13 @@ std::optional<LinearDifference> linearDifference(const RadianceImage& a, const R
   LinearDifference d;
   double sum = 0.0;
   for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-    const double diff = std::abs(static_cast<double>(a.rgb[i]) - static_cast<double>(b.rgb[i]));
-    d.maxDiff = std::max(d.maxDiff, diff);   // NaN (a NaN pixel) is left out here, and poisons the RMSE
+    const double x = a.rgb[i], y = b.rgb[i];
+    // The same value (two NaNs, the same infinity) differs by 0; a NaN or an infinity against
+    // anything else, without bound.
+    const bool same = x == y || (std::isnan(x) && std::isnan(y));
+    double diff = same ? 0.0 : std::abs(x - y);
+    if (std::isnan(diff)) diff = HUGE_VAL;
+    d.maxDiff = std::max(d.maxDiff, diff);
     sum += diff * diff;
   }
   d.rmse = a.rgb.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(a.rgb.size()));

@@ -40,6 +40,8 @@ Image readImageAsBytes(const std::string& path);
 
 // What two linear-float images differ by, in their own (radiance) units: the largest channel
 // difference and the root mean square over all channels; nothing when their sizes differ.
+// Channels of the same value (two NaNs, the same infinity) differ by 0; a NaN or an infinity
+// against any other value, by infinity.
 struct LinearDifference {
   double maxDiff = 0.0, rmse = 0.0;
 };

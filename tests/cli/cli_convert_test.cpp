@@ -103,6 +103,21 @@ TEST(CliConvert, DiffReadsEveryFormatAndReportsTheLinearDifferenceOfFloats) {
   RunResult differs = runVkrt("diff --json " + r.dir + "/render.pfm " + r.dir + "/changed.exr");
   EXPECT_EQ(differs.exitCode, 5) << differs.output;
   EXPECT_NE(differs.output.find("\"linear_max_diff\":0.25"), std::string::npos) << differs.output;
+  // A NaN or an infinity against a finite value differs without bound: "inf" in the text,
+  // null in the JSON (which has no infinity or NaN); the same NaN in both, by nothing.
+  for (float odd : {std::nanf(""), HUGE_VALF}) {
+    RadianceImage bad = readFloatImage(r.dir + "/render.pfm");
+    bad.pixel(1, 1)[0] = odd;
+    writeImageAtomic(bad, r.dir + "/odd.pfm", 2.2);
+    RunResult text = runVkrt("diff " + r.dir + "/render.pfm " + r.dir + "/odd.pfm");
+    EXPECT_NE(text.output.find("linear      max diff inf, RMSE inf"), std::string::npos) << text.output;
+    RunResult json = runVkrt("diff --json " + r.dir + "/render.pfm " + r.dir + "/odd.pfm");
+    EXPECT_NE(json.output.find("\"linear_max_diff\":null,\"linear_rmse\":null"), std::string::npos) << json.output;
+    EXPECT_EQ(json.output.find("nan"), std::string::npos) << json.output;
+    EXPECT_EQ(json.output.find("inf"), std::string::npos) << json.output;
+    RunResult self = runVkrt("diff --json " + r.dir + "/odd.pfm " + r.dir + "/odd.pfm");
+    EXPECT_NE(self.output.find("\"linear_max_diff\":0,\"linear_rmse\":0"), std::string::npos) << self.output;
+  }
   RunResult check = runVkrt("--backend cpu --seed 5 -o " + r.dir + "/checked.png --check " + r.dir + "/render.exr " +
                             r.dir + "/s.test");
   EXPECT_EQ(check.exitCode, 0) << check.output;
