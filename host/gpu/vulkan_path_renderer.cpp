@@ -78,22 +78,26 @@ PathModule pathModule(bool texelReads, bool quadLightsOnly) {
 
 // Throws DeviceError for lightSlotsProblem (the render's caller says where in the scene first).
 void checkLightSlots(const GpuScene& scene) {
-  if (std::string problem = lightSlotsProblem(scene); !problem.empty()) throw DeviceError(problem);
+  if (std::string problem = lightSlotsProblem(scene.path, !scene.emitters.empty()); !problem.empty())
+    throw DeviceError(problem);
 }
 
 }  // namespace
 
 // Two per quad-light sample, and with emitters two more and a pick per light sample.
-std::string lightSlotsProblem(const GpuScene& scene) {
-  const std::uint64_t lightSlots = std::uint64_t{scene.path.quadLightCount} * scene.path.lightSamples * 2 +
-                                   (scene.emitters.empty() ? 0u : std::uint64_t{scene.path.lightSamples} * 3);
+std::string lightSlotsProblem(const gpu::GpuPathParams& path, bool emitters) {
+  const bool nextEvent = path.integrator == gpu::kIntegratorPathTracer && path.nextEvent != gpu::kNextEventOff;
+  const bool quads = nextEvent || path.integrator == gpu::kIntegratorDirect;
+  emitters = emitters && nextEvent;
+  const std::uint64_t n = path.lightSamples;
+  const std::uint64_t lightSlots = (quads ? std::uint64_t{path.quadLightCount} * n * 2 : 0) + (emitters ? n * 3 : 0);
   if (gpu::kRngSlotLightBase + lightSlots <= gpu::kRngBounceStride) return "";
+  std::string parts;
+  if (quads) parts = counted(path.quadLightCount, "quad light", "quad lights") + " x " + std::to_string(n) + " lightsamples x 2";
+  if (emitters) parts += std::string(quads ? ", and " : "") + std::to_string(n) + " lightsamples x 3 for the emitting surfaces";
   return "the Vulkan backend draws at most " + std::to_string(gpu::kRngBounceStride - gpu::kRngSlotLightBase) +
          " random numbers for the light samples of a path vertex; this scene needs " + std::to_string(lightSlots) +
-         " (" + counted(scene.path.quadLightCount, "quad light", "quad lights") + " x " +
-         std::to_string(scene.path.lightSamples) + " lightsamples x 2" +
-         (scene.emitters.empty() ? "" : ", and 3 a light sample for the emitters") +
-         "): use fewer quad lights or lightsamples, or --backend cpu";
+         " (" + parts + "): use fewer quad lights or lightsamples, or --backend cpu";
 }
 
 namespace {

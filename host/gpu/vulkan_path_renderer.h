@@ -94,10 +94,12 @@ class VulkanPathRender {
 RadianceImage renderVulkanPath(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
                                RayCounts* rays, VulkanTimings* timings);
 
-// Why the path shader cannot draw the light samples of a vertex of `scene` ("" when it can): each
+// Why the path shader cannot draw the light samples of a vertex ("" when it can): each
 // vertex's random numbers lie within its stride of the generator's dimensions (gpu_types.h),
-// two per quad-light sample, and with emitters three more per light sample.
-std::string lightSlotsProblem(const GpuScene& scene);
+// two per quad-light sample where the integrator samples quad lights (direct, and pathtracer
+// with next-event estimation), and three more per light sample where it samples `emitters`
+// (pathtracer with next-event estimation).
+std::string lightSlotsProblem(const gpu::GpuPathParams& path, bool emitters);
 
 // Makes, in the context's PipelineCache, the pipeline that a batch of `options` will take,
 // from `scene` before its BVH is built (flatten's arraysMade), as prepareVulkanPipeline does

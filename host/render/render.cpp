@@ -194,10 +194,6 @@ RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, P
   });
   report.buildSeconds = secondsSince(t0);
   report.pipelineAheadSeconds = ahead;
-  if (!whitted) {   // a limit of the shader's random numbers: said at the scene's line, not the device's
-    if (std::string problem = lightSlotsProblem(gpuScene); !problem.empty())
-      throw SceneError({Diagnostic{scene.sourcePath, scene.path.lightSamplesLine, problem}});
-  }
   report.bvhNodes = gpuScene.bvh.nodes.size();
 #define VKRT_SHAPE_FREE(Type, member, name, kind, GpuType, binding) std::vector<Type>().swap(scene.member);
   VKRT_SHAPES(VKRT_SHAPE_FREE)
@@ -486,6 +482,13 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   if (request.maxDepth >= 0) scene.maxDepth = request.maxDepth;
   applySizeOverride(request, scene);
   report.estimator = applyEstimator(request, scene);
+  // A limit of the Vulkan shader's random numbers: said at the scene's line, not the device's,
+  // and before anything is rendered (also by --dry-run).
+  if (request.backend == Backend::Vulkan && scene.path.integrator != Integrator::Raytracer) {
+    if (std::string problem = lightSlotsProblem(pathParams(scene), !collectEmitters(scene).prims.empty());
+        !problem.empty())
+      throw SceneError({Diagnostic{scene.sourcePath, scene.path.lightSamplesLine, problem}});
+  }
   if (checkOutput) {
     report.outputPath = resolveOutput(scene, request);
   }

@@ -85,27 +85,6 @@ gpu::GpuCutoff cutoffConstants(const SceneDesc& scene) {
   return p;
 }
 
-// The settings of doc/path-tracing.md, "Commands" in the shader's terms, and the camera.
-gpu::GpuPathParams pathParams(const SceneDesc& scene, const gpu::GpuCamera& camera) {
-  const PathSettings& s = scene.path;
-  gpu::GpuPathParams p{};
-  p.camera = camera;
-  p.integrator = static_cast<gpu::uint>(s.integrator);   // the GPU id (integrator_table.h)
-  p.nextEvent = s.nextEvent == NextEvent::On ? gpu::kNextEventOn
-                : s.nextEvent == NextEvent::Mis ? gpu::kNextEventMis
-                                                : gpu::kNextEventOff;
-  p.sampling = s.sampling == Sampling::Brdf ? gpu::kSamplingBrdf
-               : s.sampling == Sampling::Cosine ? gpu::kSamplingCosine
-                                                : gpu::kSamplingHemisphere;
-  p.russianRoulette = s.russianRoulette ? 1u : 0u;
-  p.maxDepth = scene.maxDepth < 0 ? gpu::kUnlimitedDepth : static_cast<gpu::uint>(scene.maxDepth);
-  p.lightSamples = static_cast<gpu::uint>(std::max(s.lightSamples, 1));
-  // The parser accepts `lightstratify on` only with a perfect square.
-  p.lightStrata = s.lightStratify ? static_cast<gpu::uint>(std::lround(std::sqrt(double(p.lightSamples)))) : 0u;
-  p.quadLightCount = static_cast<gpu::uint>(scene.quadLights.size());
-  p.lightCount = static_cast<gpu::uint>(scene.lights.size());
-  return p;
-}
 
 // Triangles [begin, end) into their GPU layout at the same indices; the normals of smooth
 // ones are appended to `normals`, their normalsIndex counted from its size.
@@ -209,6 +188,28 @@ void makeArrays(const SceneDesc& scene, GpuScene& g) {
 }
 
 }  // namespace
+
+// The settings of doc/path-tracing.md, "Commands" in the shader's terms, and the camera.
+gpu::GpuPathParams pathParams(const SceneDesc& scene, const gpu::GpuCamera& camera) {
+  const PathSettings& s = scene.path;
+  gpu::GpuPathParams p{};
+  p.camera = camera;
+  p.integrator = static_cast<gpu::uint>(s.integrator);   // the GPU id (integrator_table.h)
+  p.nextEvent = s.nextEvent == NextEvent::On ? gpu::kNextEventOn
+                : s.nextEvent == NextEvent::Mis ? gpu::kNextEventMis
+                                                : gpu::kNextEventOff;
+  p.sampling = s.sampling == Sampling::Brdf ? gpu::kSamplingBrdf
+               : s.sampling == Sampling::Cosine ? gpu::kSamplingCosine
+                                                : gpu::kSamplingHemisphere;
+  p.russianRoulette = s.russianRoulette ? 1u : 0u;
+  p.maxDepth = scene.maxDepth < 0 ? gpu::kUnlimitedDepth : static_cast<gpu::uint>(scene.maxDepth);
+  p.lightSamples = static_cast<gpu::uint>(std::max(s.lightSamples, 1));
+  // The parser accepts `lightstratify on` only with a perfect square.
+  p.lightStrata = s.lightStratify ? static_cast<gpu::uint>(std::lround(std::sqrt(double(p.lightSamples)))) : 0u;
+  p.quadLightCount = static_cast<gpu::uint>(scene.quadLights.size());
+  p.lightCount = static_cast<gpu::uint>(scene.lights.size());
+  return p;
+}
 
 GpuScene flatten(const SceneDesc& scene, const std::function<void(const GpuScene&)>& arraysMade) {
   GpuScene g;

@@ -44,6 +44,10 @@ struct GpuScene {
 // backend makes its pipeline there).
 GpuScene flatten(const SceneDesc& scene, const std::function<void(const GpuScene&)>& arraysMade = {});
 
+// The settings of doc/path-tracing.md, "Commands" in the shader's terms, and the camera
+// (flatten's GpuScene::path; the render checks the shader's limits with it before flattening).
+gpu::GpuPathParams pathParams(const SceneDesc& scene, const gpu::GpuCamera& camera = {});
+
 // How many primitives the scene holds, of every kind.
 inline std::size_t primitiveCount(const GpuScene& scene) {
   std::size_t n = 0;

@@ -176,4 +176,27 @@ TEST(Messages, TooManyLightSamplesForTheVulkanBackendNameTheirLine) {
   RunResult fits = runIn(dir, "-q -o most.png most.test");
   EXPECT_EQ(fits.exitCode, 0) << fits.output;
   EXPECT_TRUE(fs::exists(dir + "/most.png"));
+  // --dry-run says what the render would: the same error and status, nothing written.
+  RunResult dry = runIn(dir, "--dry-run -o over.png over.test");
+  EXPECT_EQ(dry.exitCode, 2) << dry.output;
+  EXPECT_TRUE(contains(dry.output, "over.test:4: error: the Vulkan backend draws at most")) << dry.output;
+  // Only light samples that are drawn count: none under pathtracer without next-event
+  // estimation; the emitting surfaces' only under pathtracer with it (not under direct).
+  std::string text = scene(most + 1);
+  text.replace(text.find("integrator direct"), 17, "integrator pathtracer\nnexteventestimation off\nmaxdepth 1");
+  writeFile(dir + "/off.test", text + "emission 1 1 1\nsphere 0 3 0 0.2\n");
+  RunResult off = runIn(dir, "-q -o off.png off.test");
+  EXPECT_EQ(off.exitCode, 0) << off.output;
+  writeFile(dir + "/direct.test", scene(most) + "emission 1 1 1\nsphere 0 3 0 0.2\n");
+  RunResult direct = runIn(dir, "-q -o direct.png direct.test");
+  EXPECT_EQ(direct.exitCode, 0) << direct.output;
+  // 1 quad light x 13107 x 2 and 13107 x 3 for the emitting sphere: 65535, over the limit.
+  writeFile(dir + "/nee.test", "size 8 6\nintegrator pathtracer\nnexteventestimation on\nmaxdepth 1\n"
+                               "lightsamples 13107\ncamera 0 1 3 0 0 0 0 1 0 45\n"
+                               "quadLight -0.5 2 -0.5 1 0 0 0 0 1 5 5 5\nemission 1 1 1\nsphere 0 3 0 0.2\n");
+  RunResult nee = runIn(dir, "--dry-run -o nee.png nee.test");
+  EXPECT_EQ(nee.exitCode, 2) << nee.output;
+  EXPECT_TRUE(contains(nee.output, "nee.test:5: error:")) << nee.output;
+  EXPECT_TRUE(contains(nee.output, "(1 quad light x 13107 lightsamples x 2, and 13107 lightsamples x 3 for the "
+                                   "emitting surfaces)")) << nee.output;
 }
