@@ -199,6 +199,17 @@ std::string reportJson(const vkrt::RenderReport& r) {
   return buf;
 }
 
+// The warning for pixels whose colour was NaN or infinite (with --strict: an error already);
+// under --compare, which writes nothing, named by the backend that rendered them.
+void warnNonFinite(const vkrt::Options& o, const vkrt::RenderReport& report, const std::string& backend = "") {
+  if (report.rays.nonFinite > 0 && !o.quiet)
+    std::fprintf(stderr, "vkrt: warning: %s%s a NaN or infinite colour (%s); the scene has extreme values\n",
+                 backend.empty() ? "" : (backend + ": ").c_str(),
+                 vkrt::counted(report.rays.nonFinite, "pixel had", "pixels had").c_str(),
+                 backend.empty() ? "NaN written as 0, +infinity as 255 in PNG and PPM, as the largest float in PFM and EXR"
+                                 : "compared as 8-bit: NaN as 0, +infinity as 255");
+}
+
 // --compare: both backends in turn, nothing written; the total time of each and their
 // difference (stdout), each one's breakdown (stderr) only with --stats. Exit 5 when a
 // threshold is exceeded.
@@ -217,6 +228,7 @@ int compareBackends(const vkrt::Options& o) {
     vkrt::ProgressBar progress(!o.quiet && !o.json);
     images[i] = vkrt::encodeImage(vkrt::renderSceneInMemory(request, progress, reports[i], false), reports[i].gamma);
     if (o.stats && !o.json && !o.quiet) printStats(request, reports[i]);
+    warnNonFinite(o, reports[i], i == 0 ? "vulkan" : "cpu");
   }
   vkrt::ImageDiff diff = vkrt::compare(images[0], images[1]);
   std::vector<std::string> failures = vkrt::failedThresholds(diff, o.thresholds);
@@ -234,16 +246,6 @@ int compareBackends(const vkrt::Options& o) {
     printComparisonText(o, diff, failures);
   }
   return failures.empty() ? kExitOk : kExitDiffers;
-}
-
-// The warning for pixels whose colour was NaN or infinite (with --strict: an error already).
-void warnNonFinite(const vkrt::Options& o, const vkrt::RenderReport& report) {
-  if (report.rays.nonFinite > 0 && !o.quiet)
-    std::fprintf(stderr,
-                 "vkrt: warning: %s a NaN or infinite colour (NaN written as 0, +infinity as 255 in PNG "
-                 "and PPM, as the largest float in PFM and EXR); "
-                 "the scene has extreme values\n",
-                 vkrt::counted(report.rays.nonFinite, "pixel had", "pixels had").c_str());
 }
 
 double totalSeconds(const vkrt::RenderReport& r) {

@@ -317,7 +317,8 @@ double timeValue(const std::string& v) {
   double f = 0;
   auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
   if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || !(f > 0) || f > 31536000.0)
-    throw UsageError("--time expects seconds, a number greater than 0 (e.g. 2.5), got '" + echoed(v) + "'");
+    throw UsageError("--time expects seconds, a number greater than 0 and at most a year, 31536000 (e.g. 2.5), got '" +
+                     echoed(v) + "'");
   return f;
 }
 

@@ -28,9 +28,10 @@ TEST(CliFloat, SampleOptionsAreValidated) {
       {"--spp many x.test", "--spp expects an integer from 1 to 1073741824, got 'many'"},
       {"--seed -1 x.test", "--seed expects a whole number from 0 to 4294967295, got '-1'"},
       {"--seed 4294967296 x.test", "--seed expects a whole number from 0 to 4294967295, got '4294967296'"},
-      {"--time 0 x.test", "--time expects seconds, a number greater than 0 (e.g. 2.5), got '0'"},
-      {"--time nan x.test", "--time expects seconds, a number greater than 0 (e.g. 2.5), got 'nan'"},
-      {"--time=-3 x.test", "--time expects seconds, a number greater than 0 (e.g. 2.5), got '-3'"},
+      {"--time 0 x.test", "--time expects seconds, a number greater than 0 and at most a year, 31536000 (e.g. 2.5), got '0'"},
+      {"--time nan x.test", "--time expects seconds, a number greater than 0 and at most a year, 31536000 (e.g. 2.5), got 'nan'"},
+      {"--time=-3 x.test", "--time expects seconds, a number greater than 0 and at most a year, 31536000 (e.g. 2.5), got '-3'"},
+      {"--time 1e8 x.test", "at most a year, 31536000 (e.g. 2.5), got '1e8'"},
       {"--time", "option --time needs a value"},
   };
   for (const auto& [args, message] : cases) {

@@ -200,3 +200,17 @@ TEST(Messages, TooManyLightSamplesForTheVulkanBackendNameTheirLine) {
   EXPECT_TRUE(contains(nee.output, "(1 quad light x 13107 lightsamples x 2, and 13107 lightsamples x 3 for the "
                                    "emitting surfaces)")) << nee.output;
 }
+
+// --compare writes nothing, but says, for each backend, how many pixels were NaN or infinite
+// (two quad lights at the largest float over a white sphere), as a render would.
+TEST(Messages, CompareWarnsOfNonFinitePixels) {
+  if (!gpuContextOrSkip()) return;
+  const std::string dir = freshDir("messages/compare-non-finite");
+  writeFile(dir + "/nf.test", "size 8 8\nintegrator pathtracer\nspp 2\nnexteventestimation on\n"
+                              "camera 0 0 4 0 0 0 0 1 0 40\nquadLight -3 1.01 -3 0 0 6 6 0 0 3e38 3e38 3e38\n"
+                              "quadLight -3 1.02 -3 0 0 6 6 0 0 3e38 3e38 3e38\ndiffuse 1 1 1\nsphere 0 0 0 1\n");
+  RunResult r = runIn(dir, "--compare nf.test");
+  EXPECT_TRUE(contains(r.output, "vkrt: warning: vulkan: ")) << r.output;
+  EXPECT_TRUE(contains(r.output, "vkrt: warning: cpu: ")) << r.output;
+  EXPECT_TRUE(contains(r.output, "a NaN or infinite colour (compared as 8-bit: NaN as 0, +infinity as 255)")) << r.output;
+}
