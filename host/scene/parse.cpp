@@ -46,6 +46,12 @@ constexpr double kMaxRoughness = 1e4;
 // of any usual view (0 stays 0: no lobe, doc/path-tracing.md).
 constexpr double kMinRoughness = 1e-4;
 
+// The path integrators' settings that hold for the whole scene, whose last line counts (the
+// material commands `brdf` and `roughness` are state, and `quadLight` adds a light each time).
+constexpr CommandSet kSceneSettings = commandSet({Command::Spp, Command::LightSamples, Command::LightStratify,
+                                                  Command::NextEventEstimation, Command::RussianRoulette,
+                                                  Command::ImportanceSampling, Command::Gamma});
+
 // The keyword values of doc/path-tracing.md, "Commands", in the order of their enums (those of
 // `integrator`: kIntegratorNames, integrator_table.h; kNextEventNames, kSamplingNames:
 // scene_desc.h).
@@ -221,6 +227,11 @@ class Parser {
     if (shape) return readShape(shapeCommandAt(*known));
     const Command cmd = commandAt(*known);
     if (contains(kIntegratorSettings, cmd)) deferred_.settings.push_back({cmd, line_});
+    if (contains(kSceneSettings, cmd)) {
+      int& previous = settingLines_[static_cast<std::size_t>(cmd)];
+      noteRepeat(nameOf(cmd), previous);
+      previous = line_;
+    }
     switch (cmd) {
       case Command::Vertex: return cmdVertex();
       case Command::Tri: return cmdTri();
@@ -266,8 +277,8 @@ class Parser {
     }
   }
 
-  // A repeated `size`, `camera`, `maxdepth`, `output` or `integrator`: the last one counts. `previousLine`
-  // is the line of the one before (0: none).
+  // A repeated `size`, `camera`, `maxdepth`, `output`, `integrator` or scene-wide path setting
+  // (kSceneSettings): the last one counts. `previousLine` is the line of the one before (0: none).
   void noteRepeat(std::string_view cmd, int previousLine) {
     if (previousLine > 0)
       warn(WarningKind::Repeated, "'" + std::string(cmd) + "' given again (before at line " +
@@ -654,6 +665,8 @@ class Parser {
     deferred_.quadLights.push_back(q);
   }
 
+  // The line of each scene-wide setting's last command (0: none yet), for noteRepeat.
+  std::array<int, static_cast<std::size_t>(Command::Count)> settingLines_{};
   std::string_view text_;
   Tokenizer tokenizer_;
   DiagnosticLog log_;

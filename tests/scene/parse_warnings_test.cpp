@@ -144,6 +144,13 @@ std::vector<Accepted> acceptedInputs() {
       {"KeywordCaseQuadLight", kOk + "integrator direct\nquadlight 0 0 0 1 0 0 0 1 0 1 1 1\n", 4,
        "'quadlight' read as 'quadLight'",
        [](const SceneDesc& s) { EXPECT_EQ(s.quadLights.size(), 1u); }},
+      // A scene-wide path setting given again: the last one counts, as for size or camera.
+      {"RepeatedSpp", kOk + "integrator pathtracer\nspp 4\nspp 16\n", 5,
+       "'spp' given again (before at line 4): the last one counts",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.spp, 16); }},
+      {"RepeatedNextEventEstimation", kOk + "integrator pathtracer\nnexteventestimation on\ngamma 2\nnexteventestimation mis\n",
+       6, "'nexteventestimation' given again (before at line 4)",
+       [](const SceneDesc& s) { EXPECT_EQ(s.path.nextEvent, NextEvent::Mis); }},
       {"RepeatedIntegrator", kOk + "integrator direct\nintegrator pathtracer\n", 4,
        "'integrator' given again (before at line 3): the last one counts",
        [](const SceneDesc& s) { EXPECT_EQ(s.path.integrator, Integrator::PathTracer); }},
@@ -151,7 +158,7 @@ std::vector<Accepted> acceptedInputs() {
       {"UnlimitedDepthWithoutRoulette", kOk + "integrator pathtracer\nmaxdepth -1\n", 4,
        "'maxdepth -1' (no limit) with 'russianroulette off': a path ends only when it leaves the scene",
        [](const SceneDesc& s) { EXPECT_EQ(s.maxDepth, -1); }},
-      {"UnlimitedDepthRouletteTurnedOff", kOk + "maxdepth -1\nrussianroulette on\nintegrator pathtracer\nrussianroulette off\n", 3,
+      {"UnlimitedDepthRouletteOff", kOk + "maxdepth -1\nintegrator pathtracer\nrussianroulette off\n", 3,
        "'maxdepth -1' (no limit) with 'russianroulette off'",
        [](const SceneDesc& s) { EXPECT_FALSE(s.path.russianRoulette); }},
       // Coordinates beyond 1e153: squares of lengths near the largest double (a sphere of
@@ -324,6 +331,11 @@ TEST(ParseWarnings, CleanFilesHaveNone) {
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "maxdepth 2\noutput x.PNG\nsphere 0 0 0 1\n", "ok.test").warnings.empty());
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "output render.ppm\n", "ok.test").warnings.empty());   // written as PPM
   EXPECT_TRUE(parseSceneWithWarnings(kOk + "output RENDER.PPM\n", "ok.test").warnings.empty());
+  // Material state and lights repeat without a warning: each shape takes the current one.
+  EXPECT_TRUE(parseSceneWithWarnings(kOk + "integrator pathtracer\nbrdf ggx\nroughness 0.3\nsphere 0 0 0 1\n"
+                                           "brdf phong\nroughness 0.5\nsphere 2 0 0 1\n"
+                                           "quadLight 0 3 0 1 0 0 0 0 1 5 5 5\nquadLight 2 3 0 1 0 0 0 0 1 5 5 5\n",
+                                     "ok.test").warnings.empty());
   // Up to 1e153, and down to 1e-153 across: the picture follows the scene (doc/robustness.md);
   // a point (a sphere of radius 0) is no shape of lost precision.
   EXPECT_TRUE(parseSceneWithWarnings("size 64 48\ncamera 0 0 1e153 0 0 0 0 1 0 45\nsphere 0 0 0 1e153\n"
