@@ -484,10 +484,13 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   report.estimator = applyEstimator(request, scene);
   // A limit of the Vulkan shader's random numbers: said at the scene's line, not the device's,
   // and before anything is rendered (also by --dry-run).
+  // (The emitters, a pass over every primitive, are looked for only when they would pass it.)
   if (request.backend == Backend::Vulkan && scene.path.integrator != Integrator::Raytracer) {
-    if (std::string problem = lightSlotsProblem(pathParams(scene), !collectEmitters(scene).prims.empty());
-        !problem.empty())
-      throw SceneError({Diagnostic{scene.sourcePath, scene.path.lightSamplesLine, problem}});
+    const gpu::GpuPathParams path = pathParams(scene);
+    std::string problem = lightSlotsProblem(path, false);
+    if (problem.empty() && !lightSlotsProblem(path, true).empty() && !collectEmitters(scene).prims.empty())
+      problem = lightSlotsProblem(path, true);
+    if (!problem.empty()) throw SceneError({Diagnostic{scene.sourcePath, scene.path.lightSamplesLine, problem}});
   }
   if (checkOutput) {
     report.outputPath = resolveOutput(scene, request);

@@ -85,7 +85,6 @@ gpu::GpuCutoff cutoffConstants(const SceneDesc& scene) {
   return p;
 }
 
-
 // Triangles [begin, end) into their GPU layout at the same indices; the normals of smooth
 // ones are appended to `normals`, their normalsIndex counted from its size.
 void convertTriangles(const std::vector<Triangle>& triangles, const dvec3& origin, double scale,

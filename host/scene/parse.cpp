@@ -47,10 +47,12 @@ constexpr double kMaxRoughness = 1e4;
 constexpr double kMinRoughness = 1e-4;
 
 // The path integrators' settings that hold for the whole scene, whose last line counts (the
-// material commands `brdf` and `roughness` are state, and `quadLight` adds a light each time).
+// material commands `brdf` and `roughness` are state, and `quadLight` adds a light each time);
+// all are among kIntegratorSettings, whose lines the parser keeps.
 constexpr CommandSet kSceneSettings = commandSet({Command::Spp, Command::LightSamples, Command::LightStratify,
                                                   Command::NextEventEstimation, Command::RussianRoulette,
                                                   Command::ImportanceSampling, Command::Gamma});
+static_assert((kSceneSettings & ~kIntegratorSettings) == 0, "a scene setting whose lines the parser keeps");
 
 // The keyword values of doc/path-tracing.md, "Commands", in the order of their enums (those of
 // `integrator`: kIntegratorNames, integrator_table.h; kNextEventNames, kSamplingNames:
@@ -226,12 +228,8 @@ class Parser {
     }
     if (shape) return readShape(shapeCommandAt(*known));
     const Command cmd = commandAt(*known);
+    if (contains(kSceneSettings, cmd)) noteRepeat(nameOf(cmd), lastSettingLine(cmd));
     if (contains(kIntegratorSettings, cmd)) deferred_.settings.push_back({cmd, line_});
-    if (contains(kSceneSettings, cmd)) {
-      int& previous = settingLines_[static_cast<std::size_t>(cmd)];
-      noteRepeat(nameOf(cmd), previous);
-      previous = line_;
-    }
     switch (cmd) {
       case Command::Vertex: return cmdVertex();
       case Command::Tri: return cmdTri();
@@ -283,6 +281,13 @@ class Parser {
     if (previousLine > 0)
       warn(WarningKind::Repeated, "'" + std::string(cmd) + "' given again (before at line " +
                                       std::to_string(previousLine) + "): the last one counts");
+  }
+
+  // The line of the last settings command `cmd` so far (deferred_.settings), or 0.
+  int lastSettingLine(Command cmd) const {
+    for (auto s = deferred_.settings.rbegin(); s != deferred_.settings.rend(); ++s)
+      if (s->command == cmd) return s->line;
+    return 0;
   }
 
   // ---- commands ---------------------------------------------------------------------------
@@ -665,8 +670,6 @@ class Parser {
     deferred_.quadLights.push_back(q);
   }
 
-  // The line of each scene-wide setting's last command (0: none yet), for noteRepeat.
-  std::array<int, static_cast<std::size_t>(Command::Count)> settingLines_{};
   std::string_view text_;
   Tokenizer tokenizer_;
   DiagnosticLog log_;

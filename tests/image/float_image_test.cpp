@@ -229,6 +229,11 @@ struct FakeIntegrator {
     for (std::uint64_t s = b.firstSample; s < b.firstSample + b.count; ++s) sum += static_cast<double>(s);
     return filled(4, 3, static_cast<float>(sum / b.count), b.count);
   }
+  // renderProgressive with these batches, on this clock.
+  RadianceImage render(ProgressiveOptions o, ProgressiveReport* report = nullptr) {
+    o.now = [this] { return clock; };
+    return renderProgressive([this](const SampleBatch& b, const auto&) { return (*this)(b); }, o, report);
+  }
 };
 
 TEST(Progressive, BatchesCoverEverySampleOnceAndAverageByCount) {
@@ -237,9 +242,8 @@ TEST(Progressive, BatchesCoverEverySampleOnceAndAverageByCount) {
   ProgressiveOptions o;
   o.spp = 100;
   o.targetBatchSeconds = 0.016;
-  o.now = [&fake] { return fake.clock; };
   ProgressiveReport report;
-  RadianceImage img = renderProgressive([&fake](const SampleBatch& b, const auto&) { return fake(b); }, o, &report);
+  RadianceImage img = fake.render(o, &report);
   EXPECT_EQ(report.samples, 100u);
   EXPECT_EQ(img.samples, 100u);
   EXPECT_GT(report.batches, 3u);   // 1, 2, 4, 8, 16, 16, ...
@@ -273,8 +277,7 @@ TEST(Progressive, FirstBatchIsTheOneRenderedFirst) {
     o.firstBatchSamples = c.firstBatchSamples;
     o.maxBatchSamples = c.maxBatchSamples;
     o.timeLimitSeconds = c.timeLimit;
-    o.now = [&fake] { return fake.clock; };
-    renderProgressive([&fake](const SampleBatch& b, const auto&) { return fake(b); }, o);
+    fake.render(o);
     ASSERT_FALSE(fake.batches.empty());
     const SampleBatch first = firstBatch(o);
     EXPECT_EQ(first.firstSample, fake.batches[0].firstSample) << c.spp;
@@ -298,9 +301,8 @@ TEST(Progressive, TimeLimitStopsWhenNoSampleFitsAnyMore) {
   ProgressiveOptions o;
   o.spp = 0;   // the time alone decides
   o.timeLimitSeconds = 1.0;
-  o.now = [&fake] { return fake.clock; };
   ProgressiveReport report;
-  RadianceImage img = renderProgressive([&fake](const SampleBatch& b, const auto&) { return fake(b); }, o, &report);
+  RadianceImage img = fake.render(o, &report);
   EXPECT_TRUE(report.timeUp);
   EXPECT_EQ(report.samples, 8u);
   EXPECT_LE(fake.clock, 1.0);
@@ -311,8 +313,7 @@ TEST(Progressive, TimeLimitStopsWhenNoSampleFitsAnyMore) {
   // With spp as well: whichever comes first.
   FakeIntegrator fast;
   o.spp = 5;
-  o.now = [&fast] { return fast.clock; };
-  renderProgressive([&fast](const SampleBatch& b, const auto&) { return fast(b); }, o, &report);
+  fast.render(o, &report);
   EXPECT_EQ(report.samples, 5u);
   EXPECT_FALSE(report.timeUp);
 }
@@ -325,16 +326,15 @@ TEST(Progressive, AFirstBatchLongerThanTheLimitIsReported) {
   ProgressiveOptions o;
   o.spp = 0;
   o.timeLimitSeconds = 1.0;
-  o.now = [&fake] { return fake.clock; };
   ProgressiveReport report;
-  renderProgressive([&fake](const SampleBatch& b, const auto&) { return fake(b); }, o, &report);
+  fake.render(o, &report);
   EXPECT_EQ(report.samples, 1u);
   EXPECT_TRUE(report.timeUp);
   EXPECT_DOUBLE_EQ(report.firstBatchPastLimit, 4.0);
   // Within the limit: 0, however the later batches end.
   fake = FakeIntegrator{};
   fake.secondsPerSample = 0.125;
-  renderProgressive([&fake](const SampleBatch& b, const auto&) { return fake(b); }, o, &report);
+  fake.render(o, &report);
   EXPECT_EQ(report.samples, 8u);
   EXPECT_EQ(report.firstBatchPastLimit, 0.0);
 }
