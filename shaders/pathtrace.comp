@@ -21,8 +21,6 @@
 
 #include "gpu_types.h"
 
-layout(local_size_x = kWorkgroupSize, local_size_y = kWorkgroupSize) in;
-
 // Specialization constants: what the scene contains, and the integrator settings (gpu_path.h,
 // kPathSpec*).
 #include "scene_features.glsl"
@@ -37,25 +35,17 @@ layout(constant_id = kPathSpecJitter) const uint kSpecJitter = kPathSpecFromPara
 layout(constant_id = kPathSpecHasEmitters) const bool kHasEmitters = true;
 layout(constant_id = kPathSpecSampler) const uint kSpecSampler = kPathSpecFromParams;
 
-// rgb: the sum of the pixel's finished samples; w: 1 once all are done, 0 while suspended.
-layout(std430, binding = kBindingPixels) buffer Accumulation { vec4 accumulation[]; };
-layout(std430, binding = kBindingPathStates) buffer PathStates { GpuPathTracerState states[]; };
-
-#include "params.glsl"
-// The path's settings and camera, the same way (params.glsl): a storage buffer, copied into
-// the private `path` by main's first lines.
-layout(std430, binding = kBindingPathParams) readonly buffer PathParams { GpuPathParams pathStored; };
-GpuPathParams path;
 layout(push_constant) uniform Push { GpuPathPush pc; };
 
-#include "counters.glsl"
-#include "scene_reads.glsl"
-#include "intersect.glsl"
-#include "traverse.glsl"
-#include "camera.glsl"
-#include "lights.glsl"
+#define TechniqueState GpuPathTracerState
+#include "technique.glsl"   // pixels[] (rgb the sum of the pixel's finished samples), states[], the scene, traversal, tiles
 #include "mis_weight.glsl"
-#include "tile_run.glsl"   // tile, runEnd, bandRows
+
+// The path's settings and camera, the way params.glsl takes the render's: a storage buffer,
+// copied into the private `path` by main's first lines.
+layout(std430, binding = kBindingPathParams) readonly buffer PathParams { GpuPathParams pathStored; };
+GpuPathParams path;
+void copyTechniqueParams() { path = pathStored; }
 
 #ifdef VKRT_TEXEL_READS
 SCENE_TEXELS(kBindingQuadLights) quadLightWords;   // kQuadLightTexels each
@@ -97,7 +87,7 @@ float lastPdf;         // solid-angle pdf of the scatter that made the current r
 vec3 pending;          // what the current shadow ray adds when nothing blocks it
 uint bounce, sampleIndex;
 uint pixelX, pixelY, pixelIndex;   // in the full image; pixelIndex = y * fullWidth + x
-uint pixelSlot;        // the pixel's place in the band's accumulation[]
+uint pixelSlot;        // the pixel's place in the band's pixels[]
 
 // ---- random numbers (gpu_rng.h: the generator and how each number is used) ------------------
 
@@ -204,9 +194,9 @@ void startCamera() {
   startRay(path.camera.origin.xyz, dir, 0.0);
 }
 
-// The sample is over. The steps that end it only say so, and the main loop calls endSample
+// The sample is over. The steps that end it only say so, and the main loop calls endPath
 // once per iteration: lavapipe would run an inlined copy at each call site.
-void finishSample() { phase = kPhaseSampleEnd; }
+void finishSample() { phase = kPhaseEnd; }
 
 // The lane's pixel in `tile` (its place in the tile is the lane's): whether it lies inside
 // the band (the last tiles of a row or of the band may stick out). Sets the pixel's
@@ -222,6 +212,7 @@ bool setPixel() {
   pixelIndex = pixelY * params.fullWidth + pixelX;
   return true;
 }
+uint bandSlot() { return pixelSlot; }
 
 // Adds the sample to the pixel (a NaN or infinite one is counted and left out), then starts
 // the next; after the pixel's last, writes the pixel and starts the same place in the next
@@ -229,7 +220,7 @@ bool setPixel() {
 // that its vector's lanes, whose paths end at different lengths, stay busy. (One call of
 // startCamera: lavapipe would inline a copy at each.) A pixel of no samples comes here
 // before any and is written at once.
-void endSample() {
+void endPath() {
   if (sampleIndex < path.sampleCount) {
     if (any(isnan(radiance)) || any(isinf(radiance)))
       ++nonFinite;
@@ -239,7 +230,7 @@ void endSample() {
     ++finished;
   }
   if (sampleIndex >= path.sampleCount) {
-    accumulation[pixelSlot] = vec4(pixelSum, 1.0);
+    pixels[pixelSlot] = vec4(pixelSum, 1.0);
     bool found = false;
     while (!found && ++tile < runEnd) found = setPixel();
     if (!found) {
@@ -319,17 +310,22 @@ void startShadowRay(vec3 dir, float tMax, float cosine, vec3 contribution) {
   startShadowTraversal(dir, tMax, cosine);
 }
 
+// The (s, t) of light sample k of a light, from the numbers of `slot` and the one after it:
+// with lightstratify, in cell k of an m x m grid (gpu_rng.h, the sampling rules).
+vec2 lightSamplePoint(uint k, uint slot) {
+  vec2 st = vec2(randomAt(slot), randomAt(slot + 1u));
+  if (stratified()) {
+    float cells = float(path.lightStrata);
+    st = (vec2(float(k % path.lightStrata), float(k / path.lightStrata)) + st) / cells;
+  }
+  return st;
+}
+
 // Sample k of quad light j by next-event estimation.
 void quadLightSample(uint j, uint k, GpuMaterial m) {
   GpuQuadLight q = loadQuadLight(j);
-  uint slot = kRngSlotLightBase + 2u * (j * path.lightSamples + k);
-  float s = randomAt(slot), t = randomAt(slot + 1u);
-  if (stratified()) {   // one sample in each cell of an m x m grid
-    float cells = float(path.lightStrata);
-    s = (float(k % path.lightStrata) + s) / cells;
-    t = (float(k / path.lightStrata) + t) / cells;
-  }
-  vec3 onLight = q.corner.xyz + s * q.edgeAB.xyz + t * q.edgeAC.xyz;
+  vec2 st = lightSamplePoint(k, kRngSlotLightBase + 2u * (j * path.lightSamples + k));
+  vec3 onLight = q.corner.xyz + st.x * q.edgeAB.xyz + st.y * q.edgeAC.xyz;
   vec3 d = onLight - hitPoint;
   float distance2 = dot(d, d);
   float distance = sqrt(distance2);
@@ -369,13 +365,7 @@ void pointLightSample(uint i, GpuMaterial m, bool analytic) {
 // table's binary search is a step of the budget.
 void emitterSample(uint k, GpuMaterial m, inout uint step) {
   uint n = path.lightSamples;
-  uint slot = rngEmitterPointSlot(path.quadLightCount, n, k);
-  float s = randomAt(slot), t = randomAt(slot + 1u);
-  if (stratified()) {
-    float cells = float(path.lightStrata);
-    s = (float(k % path.lightStrata) + s) / cells;
-    t = (float(k / path.lightStrata) + t) / cells;
-  }
+  vec2 st = lightSamplePoint(k, rngEmitterPointSlot(path.quadLightCount, n, k));
   float u = randomAt(rngEmitterPickSlot(path.quadLightCount, n, k));
   uint lo = 0u, hi = path.emitterCount;   // the first entry whose cdf exceeds u
   while (lo < hi) {
@@ -390,7 +380,7 @@ void emitterSample(uint k, GpuMaterial m, inout uint step) {
   vec3 x, normal;
   float factor, primitiveOffset;
   uint material;
-  samplePoint(prim, s, t, x, normal, factor, material, primitiveOffset);
+  samplePoint(prim, st.x, st.y, x, normal, factor, material, primitiveOffset);
   GpuMaterial light = loadMaterial(material);
   vec3 d = x - hitPoint;
   float distance2 = dot(d, d);
@@ -469,38 +459,24 @@ void lightStep(inout uint step) {
     finishSample();
 }
 
-// The traversal of the current ray (kPhaseTrace: nearest hit) or shadow ray (kPhaseShadow:
-// any hit), as far as the step budget goes (traceRay). Then what follows.
-void traversalStep(inout uint step) {
-  TracedRay r = tracedRay();
-  bool blocked = traceRay(r, step);
-  if (sp > 0u) return;   // out of steps: the next dispatch goes on from here
-  ++step;                // what follows the traversal is a step of its own
-  if (r.shadow) {
-    if (!blocked) radiance += pending;   // nothing in the way
-    phase = kPhaseLight;
-  } else if (hitPrim != kNoHit) {
-    beginShading();
-  } else {
-    finishSample();   // a miss is black
-  }
+// The shadow ray's answer: the light sample's contribution when nothing is in the way.
+void onShadowResult(bool blocked) {
+  if (!blocked) radiance += pending;
+  phase = kPhaseLight;
 }
 
 // ---- suspension ----------------------------------------------------------------------------------
 
-void saveState(uint slot) {
-  saveTrace(slot);
+void saveTechniqueState(uint slot) {
   states[slot].throughput = vec4(throughput, 0.0);
   states[slot].radiance = vec4(radiance, 0.0);
   states[slot].pixelSum = vec4(pixelSum, lastPdf);
   states[slot].pending = vec4(pending, 0.0);
   states[slot].bounce = bounce;
   states[slot].sampleIndex = sampleIndex;
-  states[slot].tile = tile;
 }
 
-void loadState(uint slot) {
-  loadTrace(slot);
+void loadTechniqueState(uint slot) {
   throughput = states[slot].throughput.rgb;
   radiance = states[slot].radiance.rgb;
   pixelSum = states[slot].pixelSum.rgb;
@@ -508,50 +484,26 @@ void loadState(uint slot) {
   pending = states[slot].pending.rgb;
   bounce = states[slot].bounce;
   sampleIndex = states[slot].sampleIndex;
-  tile = states[slot].tile;
 }
 
-void main() {
-  loadParams();
-  path = pathStored;
-  // The lanes share out the band's tiles in runs (tile_run.glsl).
-  uint runStart = startRun();
-  uint invocation = gl_WorkGroupID.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
+// ---- the lane's pixels ------------------------------------------------------------------------
 
-  // The lane's last pixel's w says whether the invocation is done: 1 once that pixel is
-  // written, 0 from a suspension on (so that only suspended invocations touch the state buffer).
-  if (!lastPixelOfRun(runStart)) return;   // no pixel of the band in this lane's tiles
-  uint lastSlot = pixelSlot;
-  if (pc.resume != 0u) {
-    if (accumulation[lastSlot].w != 0.0) return;   // finished in an earlier round
-    loadState(invocation);
-    setPixel();
-    keySample();
-    stratifyVertex();
-  } else {
-    firstPixelOfRun(runStart);
-    pixelSum = vec3(0.0);
-    sampleIndex = 0u;
-    if (path.sampleCount > 0u)
-      startCamera();
-    else
-      phase = kPhaseSampleEnd;
-  }
-
-  // A ray's traversal and the light step after it share an iteration (lavapipe runs both
-  // bodies for the vector whenever any lane needs either), and so do the end of a sample and
-  // the start of the next.
-  uint step = 0u;
-  for (; step < params.stepBudget && phase != kPhaseDone; ++step) {
-    if (phase == kPhaseTrace || phase == kPhaseShadow) traversalStep(step);
-    if (phase == kPhaseLight) lightStep(step);
-    if (phase == kPhaseSampleEnd) endSample();
-  }
-
-  steps = step;
-  addCounts(phase != kPhaseDone);
-  if (phase != kPhaseDone) {
-    saveState(invocation);
-    accumulation[lastSlot].w = 0.0;   // (stale from an earlier band, or 0 already)
-  }
+// The lane's first pixel of its run: its first sample's camera ray (a pixel of no samples
+// goes to endPath at once, which writes it).
+void startFirstPixel() {
+  pixelSum = vec3(0.0);
+  sampleIndex = 0u;
+  if (path.sampleCount > 0u)
+    startCamera();
+  else
+    phase = kPhaseEnd;
 }
+
+// A suspended lane goes on (its state loaded, its pixel set): the sample's keys and the
+// vertex's strata, which are not saved.
+void resumePixel() {
+  keySample();
+  stratifyVertex();
+}
+
+#include "driver.glsl"   // main(): the step loop, suspension, the done marker, the counters

@@ -14,30 +14,20 @@
 
 #include "gpu_types.h"
 
-layout(local_size_x = kWorkgroupSize, local_size_y = kWorkgroupSize) in;
-
 // Specialization constants: only what changes the code: what the scene contains, and the
 // exactness cut-off (gpu_whitted.h, kSpec*).
 #include "scene_features.glsl"
 layout(constant_id = kSpecHasSpecular) const bool kHasSpecular = true;
 layout(constant_id = kSpecCutoff) const bool kCutoff = true;
 
-layout(std430, binding = kBindingPixels) buffer Pixels { vec4 pixels[]; };   // rgb radiance, w 1 once the pixel is done (see main)
-layout(std430, binding = kBindingPathStates) buffer PathStates { GpuWhittedState states[]; };   // one per invocation
-
-#include "params.glsl"
-// The push constants too are copied, into the private `pc` (fewer instructions than reads
-// where used: scene6's crop 30.8 M against 31.3 M JIT instructions).
+// The push constants are copied, into the private `pc` (fewer instructions than reads where
+// used: bench/README.md, "Parameters in storage buffers").
 layout(push_constant) uniform Push { GpuPushConstants pcStored; };
 GpuPushConstants pc;
+void copyTechniqueParams() { pc = pcStored; }
 
-#include "counters.glsl"
-#include "scene_reads.glsl"
-#include "intersect.glsl"
-#include "traverse.glsl"
-#include "camera.glsl"
-#include "lights.glsl"
-#include "tile_run.glsl"   // tile, runEnd, bandRows
+#define TechniqueState GpuWhittedState
+#include "technique.glsl"   // pixels[] (rgb radiance), states[], the scene, traversal, tiles
 
 // ---- per-invocation state (registers; saved to states[] only on suspension) -----------------
 // (the ray, its hit, the shadow ray and the traversal stack: traverse.glsl)
@@ -89,7 +79,7 @@ void reflectOrFinish() {
     vec3 mirror = normalize(rayDir - 2.0 * dot(rayDir, hitNormal) * hitNormal);
     startRay(hitPoint, mirror, secondaryTMin(abs(dot(mirror, hitNormal))));
   } else {
-    phase = kPhaseDone;
+    phase = kPhaseEnd;
   }
 }
 
@@ -131,43 +121,27 @@ void addLightContribution() {
   radiance += throughput * lightColor * lit;
 }
 
-// The traversal of the current ray (kPhaseTrace: nearest hit) or of a shadow ray
-// (kPhaseShadow: any hit), as far as the step budget goes (traceRay); one function for both
-// kinds, so that lanes of a SIMD vector in different phases run it once. Then what follows.
-void traversalStep(inout uint step) {
-  TracedRay r = tracedRay();
-  bool blocked = traceRay(r, step);
-  if (sp > 0u) return;   // out of steps: the next dispatch goes on from here
-  ++step;                // what follows the traversal is a step of its own
-  if (r.shadow) {
-    if (!blocked) addLightContribution();   // nothing in the way
-    ++lightIndex;
-    phase = kPhaseLight;
-  } else if (hitPrim != kNoHit) {
-    beginShading();
-  } else {
-    phase = kPhaseDone;   // a miss is black
-  }
+// The shadow ray's answer: the light's contribution when nothing is in the way.
+void onShadowResult(bool blocked) {
+  if (!blocked) addLightContribution();
+  ++lightIndex;
+  phase = kPhaseLight;
 }
 
 // ---- suspension ----------------------------------------------------------------------------------
 
-void saveState(uint slot) {
-  saveTrace(slot);
+void saveTechniqueState(uint slot) {
   states[slot].throughput = vec4(throughput, 0.0);
   states[slot].radiance = vec4(radiance, 0.0);
   states[slot].lightColor = vec4(lightColor, 0.0);
   states[slot].depth = depth;
-  states[slot].tile = tile;
 }
 
-void loadState(uint slot) {
-  loadTrace(slot);
+void loadTechniqueState(uint slot) {
   throughput = states[slot].throughput.rgb;
   radiance = states[slot].radiance.rgb;
   lightColor = states[slot].lightColor.rgb;
   depth = states[slot].depth;
-  tile = states[slot].tile;
 }
 
 // ---- pixels ----------------------------------------------------------------------------------
@@ -189,13 +163,14 @@ bool setPixel() {
   pixelY = (tile / params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
   return pixelX < params.width && pixelY < bandRows;
 }
+uint bandSlot() { return pixelY * params.width + pixelX; }
 
 // The pixel is done: its radiance is written (a NaN or infinite one is counted, so that none
 // reaches the image unseen: the output encodes NaN as 0 and an infinity as 0 or 1), and the
 // invocation's next pixel starts: the same place in the next tile of its run, if any.
 // (The column and row are stepped, not divided out: a vector's integer division is a
 // division per lane on the CPU.)
-void endPixel() {
+void endPath() {
   if (any(isnan(radiance)) || any(isinf(radiance))) ++nonFinite;
   pixels[pixelY * params.width + pixelX] = vec4(radiance, 1.0);
   ++finished;
@@ -207,41 +182,14 @@ void endPixel() {
       pixelY += kWorkgroupSize;
     }
   } while (tile < runEnd && (pixelX >= params.width || pixelY >= bandRows));
-  if (tile < runEnd) startPixel();
-}
-
-void main() {
-  loadParams();
-  pc = pcStored;
-  // The lanes share out the band's tiles in runs (tile_run.glsl).
-  uint runStart = startRun();
-  uint invocation = gl_WorkGroupID.x * gl_WorkGroupSize.x * gl_WorkGroupSize.y + gl_LocalInvocationIndex;
-
-  // The lane's last pixel's w says whether the invocation is done: 1 once that pixel is
-  // written, 0 from a suspension on (so that only suspended invocations touch the state buffer).
-  if (!lastPixelOfRun(runStart)) return;   // no pixel of the band in this lane's tiles
-  uint lastPixel = pixelY * params.width + pixelX;
-  if (pc.resume != 0u) {
-    if (pixels[lastPixel].w != 0.0) return;   // finished in an earlier round
-    loadState(invocation);
-    setPixel();
-  } else {
-    firstPixelOfRun(runStart);
+  if (tile < runEnd)
     startPixel();
-  }
-
-  // A ray's traversal and the light step after it share an iteration (lavapipe runs both
-  // bodies for the vector whenever any lane needs either), and so do the end of a pixel and
-  // the start of the next.
-  for (uint step = 0u; step < params.stepBudget && phase != kPhaseDone; ++step) {
-    if (phase == kPhaseTrace || phase == kPhaseShadow) traversalStep(step);
-    if (phase == kPhaseLight) lightStep(step);
-    if (phase == kPhaseDone) endPixel();
-  }
-
-  addCounts(phase != kPhaseDone);
-  if (phase != kPhaseDone) {
-    saveState(invocation);
-    pixels[lastPixel].w = 0.0;   // (stale from an earlier band, or 0 already)
-  }
+  else
+    phase = kPhaseDone;
 }
+
+// The lane's first pixel of its run, and how a suspended one goes on (its pixel is set).
+void startFirstPixel() { startPixel(); }
+void resumePixel() {}
+
+#include "driver.glsl"   // main(): the step loop, suspension, the done marker, the counters

@@ -10,14 +10,14 @@
 
 #include "counted.h"
 #include "errors.h"
-#include "gpu/band_buffers.h"
 #include "gpu/band_dispatch.h"
 #include "gpu/band_layout.h"
-#include "gpu/compute_pipeline.h"
+#include "gpu/buffer.h"
 #include "gpu/device_error.h"
 #include "gpu/scene_features.h"
 #include "gpu/scene_upload.h"
 #include "gpu/shader_variant.h"
+#include "gpu/technique_bands.h"
 #include "pathtrace.comp.h"         // kPathtraceSpirv: the shader, compiled at build time
 #include "pathtrace_texel.comp.h"   // kPathtraceTexelSpirv: the same with VKRT_TEXEL_READS
 #include "pathtrace_quad.comp.h"         // kPathtraceQuadSpirv: VKRT_QUAD_LIGHTS_ONLY
@@ -102,17 +102,10 @@ std::string lightSlotsProblem(const gpu::GpuPathParams& path, bool emitters) {
 
 namespace {
 
-// The shader a path render runs, decided before its buffers are made: its parameters, whether
-// rays test every primitive, the module and variant with its specialization constants, and
-// what --stats says of them.
+// The shader a path render runs, decided before its buffers are made, and its parameters.
 struct PathShader {
+  TechniqueShader shader;
   gpu::GpuPathParams path{};   // the scene's, with the batch's seed, samples and sampler
-  bool testAll = false, texelReads = false, general = false;
-  PathModule module{};
-  std::vector<std::uint32_t> spec;
-  std::uint64_t specializedKey = 0;   // the specialised variant's, general or not
-  double estimatedRays = 0;
-  std::string leftOut;
 };
 
 // `texelsFit`: SceneUpload::texelsFit; `eachPrimitiveOnce`: the BVH holds every primitive
@@ -122,6 +115,7 @@ struct PathShader {
 PathShader pathShader(const Context& context, const GpuScene& scene, const VulkanPathOptions& options,
                       const BandLayout& layout, std::uint32_t samples, bool texelsFit, bool eachPrimitiveOnce) {
   PathShader p;
+  TechniqueShader& s = p.shader;
   const bool cpuDevice = context.isCpuDevice();
   const std::uint32_t renderSpp = options.renderSpp ? options.renderSpp : scene.spp;
   gpu::GpuPathParams& path = p.path;
@@ -131,8 +125,8 @@ PathShader pathShader(const Context& context, const GpuScene& scene, const Vulka
   path.sampleCount = samples;
   path.jitter = renderSpp == 1 ? 0u : 1u;
   path.strataSide = options.stratified ? gpu::rngStrataSide(renderSpp) : 0u;
-  p.testAll = testsEveryPrimitive(scene, options.testAll, eachPrimitiveOnce);
-  p.texelReads = chooseTexelReads(options.reads, SceneArrays::Path, texelsFit, context.properties().limits);
+  s.testAll = testsEveryPrimitive(scene, options.testAll, eachPrimitiveOnce);
+  s.texelReads = chooseTexelReads(options.reads, SceneArrays::Path, texelsFit, context.properties().limits);
   // The rays, about (what ShaderVariant::Auto goes by): per sample a camera ray; direct: a
   // shadow ray per light sample of each quad light; pathtracer: per vertex (4 where only
   // Russian roulette ends the path) a scattered ray and, with next-event estimation, a shadow
@@ -144,23 +138,25 @@ PathShader pathShader(const Context& context, const GpuScene& scene, const Vulka
   else if (scene.path.integrator == gpu::kIntegratorPathTracer)
     perSample += (scene.path.maxDepth == gpu::kUnlimitedDepth ? 4.0 : std::min(scene.path.maxDepth, 8u)) *
                  (1.0 + (scene.path.nextEvent != gpu::kNextEventOff ? lightRays : 0.0));
-  p.estimatedRays = static_cast<double>(layout.width) * layout.height * samples * perSample;
+  s.estimatedRays = static_cast<double>(layout.width) * layout.height * samples * perSample;
   std::string leftOut;
-  const std::vector<std::uint32_t> specialized = pathFeatures(scene, path, true, p.testAll, leftOut);
+  const std::vector<std::uint32_t> specialized = pathFeatures(scene, path, true, s.testAll, leftOut);
   // A scene whose lights are all quad lights, rendered by direct or pathtracer, takes the module
   // without the code of the other lights and of analyticdirect, specialised or general (whose
   // pipeline lavapipe then creates in 65-90 ms instead of 110-135 for cornellNEE).
   const bool quadLightsOnly = !specialized[gpu::kSpecHasPointLights] && !specialized[gpu::kSpecHasDirectionalLights] &&
                               !specialized[gpu::kPathSpecHasEmitters] &&
                               specialized[gpu::kPathSpecIntegrator] != gpu::kIntegratorAnalyticDirect;
-  p.module = pathModule(p.texelReads, quadLightsOnly);
-  p.specializedKey = variantKey(context.properties(), p.module.words, p.module.bytes, specialized);
-  p.general = options.variant == ShaderVariant::General ||
+  const PathModule module = pathModule(s.texelReads, quadLightsOnly);
+  s.words = module.words;
+  s.bytes = module.bytes;
+  s.specializedKey = variantKey(context.properties(), s.words, s.bytes, specialized);
+  s.general = options.variant == ShaderVariant::General ||
               (options.variant == ShaderVariant::Auto &&
-               !autoTakesSpecialised(cpuDevice, p.estimatedRays, true, p.specializedKey));
+               !autoTakesSpecialised(cpuDevice, s.estimatedRays, true, s.specializedKey));
   // The general variant: every feature on, in the same module.
-  p.spec = p.general ? pathFeatures(scene, path, false, p.testAll, p.leftOut) : specialized;
-  if (!p.general) p.leftOut = leftOut;
+  s.spec = s.general ? pathFeatures(scene, path, false, s.testAll, s.leftOut) : specialized;
+  if (!s.general) s.leftOut = leftOut;
   return p;
 }
 
@@ -194,8 +190,7 @@ void prepareVulkanPathPipeline(const Context& context, const GpuScene& scene, co
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const PathShader p = pathShader(context, scene, options, pathLayout(context, scene, options, samples), samples,
                                   texelsFitBeforeBvh(scene, SceneArrays::Path, maxTexels), eachPrimitiveOnce);
-  ComputePipeline::prepare(context, p.module.words, p.module.bytes, ShaderBindings(SceneArrays::Path, p.texelReads).types,
-                           p.spec, sizeof(gpu::GpuPathPush));
+  prepareTechnique(context, p.shader, SceneArrays::Path, sizeof(gpu::GpuPathPush));
 }
 
 VulkanPathRender::VulkanPathRender(const Context& context, const GpuScene& scene) : context_(context), scene_(scene) {}
@@ -213,8 +208,8 @@ RadianceImage VulkanPathRender::render(const VulkanPathOptions& options, RayCoun
   if (scene.path.integrator == gpu::kIntegratorRaytracer)
     throw InternalError("renderVulkanPath called for the raytracer integrator (renderVulkan renders it)");
   const std::uint32_t samples = options.sampleCount ? options.sampleCount : scene.spp;
-  const BandLayout layout = pathLayout(context, scene, options, samples);
-  const std::uint32_t width = layout.width, height = layout.height;
+  TechniqueBatch batch;
+  batch.layout = pathLayout(context, scene, options, samples);
   checkShaderLimits(scene);
   checkLightSlots(scene);
 
@@ -223,45 +218,30 @@ RadianceImage VulkanPathRender::render(const VulkanPathOptions& options, RayCoun
     upload_ = std::make_unique<SceneUpload>(context, scene, SceneArrays::Path);
     ++uploads_;
   }
-  const SceneUpload& upload = *upload_;
-  BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuPathTracerState),
-                   renderParams(scene, layout, scene.path.maxDepth), options.stepBudget, kPathFirstDispatchSteps,
-                   true);
   t.uploadSeconds = secondsSince(t0);
-
   t0 = std::chrono::steady_clock::now();
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
-  const PathShader shader = pathShader(context, scene, options, layout, samples, upload.texelsFit(maxTexels),
-                                       bvhHoldsEachPrimitiveOnce(scene));
-  t.testedAll = shader.testAll;
-  t.texelReads = shader.texelReads;
-  t.estimatedRays = shader.estimatedRays;
-  t.general = shader.general;
-  t.leftOut = shader.leftOut;
-  Buffer pathBuffer(context, sizeof shader.path);
-  std::memcpy(pathBuffer.mapped(), &shader.path, sizeof shader.path);
-  ShaderBindings bindings(SceneArrays::Path, t.texelReads);
-  upload.bind(bindings);
-  band.bind(bindings);
-  bindings.set(gpu::kBindingPathParams, pathBuffer);
-  ComputePipeline pipeline(context, shader.module.words, shader.module.bytes, bindings.types, shader.spec,
-                           sizeof(gpu::GpuPathPush));
-  bindings.bindTo(pipeline);
+  const PathShader p = pathShader(context, scene, options, batch.layout, samples, upload_->texelsFit(maxTexels),
+                                  bvhHoldsEachPrimitiveOnce(scene));
+  Buffer pathBuffer(context, sizeof p.path);
+  std::memcpy(pathBuffer.mapped(), &p.path, sizeof p.path);
   t.pipelineSeconds = secondsSince(t0);
 
-  RadianceImage image(static_cast<int>(width), static_cast<int>(height));
-  image.samples = samples;
+  batch.arrays = SceneArrays::Path;
+  batch.stateBytes = sizeof(gpu::GpuPathTracerState);
+  batch.params = renderParams(scene, batch.layout, scene.path.maxDepth);
+  batch.stepBudget = options.stepBudget;
+  batch.firstDispatchSteps = kPathFirstDispatchSteps;
+  batch.timedBands = true;
+  batch.samples = samples;
+  batch.imageSamples = samples;
+  batch.readScale = samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f;   // the sums' mean
   gpu::GpuPathPush push{};
-  const float scale = samples > 0 ? 1.0f / static_cast<float>(samples) : 0.0f;
-  BandHooks hooks{options.stop, options.progress,
-                  [&](std::uint32_t y0, std::uint32_t rows) { band.readRows(rows, scale, image, static_cast<int>(y0)); },
-                  {}};
-  RayCounts counted;
-  if (!band.run(pipeline, &push, push.bandY0, push.resume, layout, samples, hooks, t, counted)) return image;
-  if (!t.general) recordVariantCompiled(shader.specializedKey);
-  if (rays) *rays = counted;
-  if (timings) *timings = t;
-  return image;
+  batch.push = techniquePush(push);
+  batch.bindOwn = [&](ShaderBindings& bindings) { bindings.set(gpu::kBindingPathParams, pathBuffer); };
+  batch.stop = options.stop;
+  batch.progress = options.progress;
+  return renderTechniqueBands(context, *upload_, p.shader, batch, rays, timings, t);
 }
 
 }  // namespace vkrt

@@ -8,13 +8,12 @@
 #include <limits>
 #include <numeric>
 
-#include "gpu/band_buffers.h"
 #include "gpu/band_dispatch.h"
 #include "gpu/band_layout.h"
-#include "gpu/compute_pipeline.h"
 #include "gpu/scene_features.h"
 #include "gpu/scene_upload.h"
 #include "gpu/shader_variant.h"
+#include "gpu/technique_bands.h"
 #include "timing.h"
 #include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
 #include "raytrace_texel.comp.h"   // kRaytraceTexelSpirv: the same with VKRT_TEXEL_READS
@@ -71,19 +70,13 @@ BandLayout whittedLayout(const Context& context, const GpuScene& scene, const Vu
                     perInvocation);
 }
 
-// The shader a Whitted render runs, decided before its buffers are made: the module (texel or
-// storage reads), the variant and its specialization constants, and what --stats says of them.
+// The shader a Whitted render runs, decided before its buffers are made, and what it says of
+// the render: whether the exactness cut-off cuts (compiled in, or told so at run time) and
+// whether mirror rays are traced (the features' specular).
 struct WhittedShader {
-  bool cutoff = false;     // the exactness cut-off cuts (compiled in, or told so at run time)
-  bool specular = true;    // mirror rays are traced (the features' specular)
-  bool testAll = false;    // rays test every primitive (testsEveryPrimitive), specialised or general
-  bool texelReads = false, general = false;
-  const std::uint32_t* spirv = nullptr;
-  std::size_t spirvBytes = 0;
-  std::vector<std::uint32_t> spec;
-  std::uint64_t specializedKey = 0;   // the specialised variant's, general or not
-  double estimatedRays = 0;
-  std::string leftOut;
+  TechniqueShader shader;
+  bool cutoff = false;
+  bool specular = true;
 };
 
 // `texelsFit`: SceneUpload::texelsFit, or texelsFitBeforeBvh for a pipeline made ahead;
@@ -92,7 +85,8 @@ struct WhittedShader {
 WhittedShader whittedShader(const Context& context, const GpuScene& scene, const VulkanOptions& options,
                             const BandLayout& layout, bool texelsFit, bool eachPrimitiveOnce) {
   WhittedShader w;
-  w.testAll = testsEveryPrimitive(scene, options.testAll, eachPrimitiveOnce);
+  TechniqueShader& s = w.shader;
+  s.testAll = testsEveryPrimitive(scene, options.testAll, eachPrimitiveOnce);
   const bool cpuDevice = context.isCpuDevice();
   const bool specular = usesSpecular(scene);
   // The exactness cut-off: forced, or where it pays. The general variant has it compiled in
@@ -102,7 +96,7 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
              (options.cutoff == Cutoff::Auto && specular && cutoffPays(scene.cutoff, scene.maxDepth));
   // The rays this render will trace, about: a camera ray a pixel, a shadow ray a light, and
   // again for each mirror bounce (what ShaderVariant::Auto goes by).
-  w.estimatedRays = static_cast<double>(layout.width) * layout.height *
+  s.estimatedRays = static_cast<double>(layout.width) * layout.height *
                     (1.0 + static_cast<double>(scene.lights.size())) *
                     (1.0 + (specular ? std::min(scene.maxDepth, 4u) : 0u));
   // Bools as 0/1 (SPIR-V bool spec constants are 32 bits); every feature on in the general variant.
@@ -113,22 +107,22 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
       spec[gpu::kSpecHasSpecular] = specular;
     }
     spec[gpu::kSpecCutoff] = general || w.cutoff;
-    spec[gpu::kSpecTestAll] = w.testAll;   // in the general variant too: a second general variant
+    spec[gpu::kSpecTestAll] = s.testAll;   // in the general variant too: a second general variant
     return spec;
   };
   // Texel reads where every scene buffer fits the device's texel-count limit and the device
   // allows the shader that many storage texel buffers.
-  w.texelReads = chooseTexelReads(options.reads, SceneArrays::Whitted, texelsFit, context.properties().limits);
-  w.spirv = w.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv;
-  w.spirvBytes = w.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv);
-  w.specializedKey = variantKey(context.properties(), w.spirv, w.spirvBytes, specConstants(false));
-  w.general = options.variant == ShaderVariant::General ||
+  s.texelReads = chooseTexelReads(options.reads, SceneArrays::Whitted, texelsFit, context.properties().limits);
+  s.words = s.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv;
+  s.bytes = s.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv);
+  s.specializedKey = variantKey(context.properties(), s.words, s.bytes, specConstants(false));
+  s.general = options.variant == ShaderVariant::General ||
               (options.variant == ShaderVariant::Auto &&
-               !autoTakesSpecialised(cpuDevice, w.estimatedRays, false, w.specializedKey));
-  w.spec = specConstants(w.general);
-  w.leftOut = leftOutNames(w.spec, {{gpu::kSpecHasSpecular, "specular (maxdepth 0)"}});
-  if (!w.cutoff && !w.general) w.leftOut += std::string(w.leftOut.empty() ? "" : ", ") + "exactness cut-off";
-  w.specular = w.spec[gpu::kSpecHasSpecular] != 0u;
+               !autoTakesSpecialised(cpuDevice, s.estimatedRays, false, s.specializedKey));
+  s.spec = specConstants(s.general);
+  s.leftOut = leftOutNames(s.spec, {{gpu::kSpecHasSpecular, "specular (maxdepth 0)"}});
+  if (!w.cutoff && !s.general) s.leftOut += std::string(s.leftOut.empty() ? "" : ", ") + "exactness cut-off";
+  w.specular = s.spec[gpu::kSpecHasSpecular] != 0u;
   return w;
 }
 
@@ -139,67 +133,40 @@ void prepareVulkanPipeline(const Context& context, const GpuScene& scene, const 
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const WhittedShader w = whittedShader(context, scene, options, whittedLayout(context, scene, options),
                                         texelsFitBeforeBvh(scene, SceneArrays::Whitted, maxTexels), eachPrimitiveOnce);
-  ComputePipeline::prepare(context, w.spirv, w.spirvBytes, ShaderBindings(SceneArrays::Whitted, w.texelReads).types,
-                           w.spec, sizeof(gpu::GpuPushConstants));
+  prepareTechnique(context, w.shader, SceneArrays::Whitted, sizeof(gpu::GpuPushConstants));
 }
 
 RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const VulkanOptions& options,
                            RayCounts* rays, VulkanTimings* timings) {
   VulkanTimings t;
-  const BandLayout layout = whittedLayout(context, scene, options);
-  const std::uint32_t width = layout.width, height = layout.height;
+  TechniqueBatch batch;
+  batch.layout = whittedLayout(context, scene, options);
   checkShaderLimits(scene);
 
   auto t0 = std::chrono::steady_clock::now();
   const SceneUpload upload(context, scene, SceneArrays::Whitted);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
-  const WhittedShader shader = whittedShader(context, scene, options, layout, upload.texelsFit(maxTexels),
-                                             bvhHoldsEachPrimitiveOnce(scene));
-  t.testedAll = shader.testAll;
-  t.texelReads = shader.texelReads;
-  t.general = shader.general;
-  t.estimatedRays = shader.estimatedRays;
-  t.leftOut = shader.leftOut;
-  // Without a specular surface no mirror ray is ever traced.
-  const gpu::GpuRenderParams params = renderParams(scene, layout, shader.specular ? scene.maxDepth : 0);
-  BandBuffers band(context, layout, layout.invocations() * sizeof(gpu::GpuWhittedState), params, options.stepBudget,
-                   kWhittedFirstDispatchSteps);
+  const WhittedShader w = whittedShader(context, scene, options, batch.layout, upload.texelsFit(maxTexels),
+                                        bvhHoldsEachPrimitiveOnce(scene));
   t.uploadSeconds = secondsSince(t0);
 
-  t0 = std::chrono::steady_clock::now();
-  ShaderBindings bindings(SceneArrays::Whitted, t.texelReads);
-  upload.bind(bindings);
-  band.bind(bindings);
-  ComputePipeline pipeline(context, shader.spirv, shader.spirvBytes, bindings.types, shader.spec,
-                           sizeof(gpu::GpuPushConstants));
-  bindings.bindTo(pipeline);
-  t.pipelineSeconds = secondsSince(t0);
-
-  // The whole image, or (streaming to options.rows) one band's rows at a time.
-  RadianceImage image =
-      options.rows ? RadianceImage() : RadianceImage(static_cast<int>(width), static_cast<int>(height));
-  image.samples = options.sampleCount;   // the Whitted model: the mean of identical samples
-  RadianceImage rowsImage;
-  rowsImage.samples = options.sampleCount;
+  batch.arrays = SceneArrays::Whitted;
+  batch.stateBytes = sizeof(gpu::GpuWhittedState);
+  // Without a specular surface no mirror ray is ever traced.
+  batch.params = renderParams(scene, batch.layout, w.specular ? scene.maxDepth : 0);
+  batch.stepBudget = options.stepBudget;
+  batch.firstDispatchSteps = kWhittedFirstDispatchSteps;
+  batch.samples = 1;
+  batch.imageSamples = options.sampleCount;   // the Whitted model: the mean of identical samples
   gpu::GpuPushConstants push{};
   push.camera = scene.camera;
   // A cut-off compiled in but not wanted is told never to cut (GpuCutoff: no bound).
-  push.cutoff = shader.cutoff ? scene.cutoff : neverCut();
-  BandHooks hooks{options.stop, options.progress,
-                  [&](std::uint32_t y0, std::uint32_t rows) {
-                    if (!options.rows) return band.readRows(rows, 1.0f, image, static_cast<int>(y0));
-                    if (rowsImage.height != static_cast<int>(rows))
-                      rowsImage = RadianceImage(static_cast<int>(width), static_cast<int>(rows));
-                    band.readRows(rows, 1.0f, rowsImage, 0);
-                  },
-                  {}};
-  if (options.rows) hooks.after = [&](std::uint32_t y0, std::uint32_t) { options.rows(static_cast<int>(y0), rowsImage); };
-  RayCounts counted;
-  if (!band.run(pipeline, &push, push.bandY0, push.resume, layout, 1, hooks, t, counted)) return image;
-  if (!t.general) recordVariantCompiled(shader.specializedKey);
-  if (rays) *rays = counted;
-  if (timings) *timings = t;
-  return image;
+  push.cutoff = w.cutoff ? scene.cutoff : neverCut();
+  batch.push = techniquePush(push);
+  batch.stop = options.stop;
+  batch.progress = options.progress;
+  batch.rows = options.rows;
+  return renderTechniqueBands(context, upload, w.shader, batch, rays, timings, t);
 }
 
 }  // namespace vkrt

@@ -18,10 +18,7 @@
 #include "counted.h"
 #include "errors.h"
 #include "gpu_types.h"
-#include "cpu/path_reference.h"
-#include "cpu/reference.h"
-#include "gpu/vulkan_path_renderer.h"
-#include "gpu/vulkan_renderer.h"
+#include "gpu/context.h"
 #include "image/atomic_file.h"
 #include "image/encode.h"
 #include "image/image_file.h"
@@ -29,6 +26,7 @@
 #include "image/row_sink.h"
 #include "image/samples.h"
 #include "interrupt.h"
+#include "render/backend.h"
 #include "render/progressive.h"
 #include "scene/emitters.h"
 #include "scene/flatten.h"
@@ -46,52 +44,6 @@ namespace {
 // The sample count a render without --spp limit (--time alone) is planned as.
 constexpr int kMaxSamplesPerPixel = 1 << 30;
 
-// What both backends are asked for: the render's samples, as batches (render/progressive.h).
-struct SamplePlan {
-  ProgressiveOptions progressive;
-  std::uint32_t seed = 0;
-};
-
-// One batch's pixel progress on the bar: a Whitted render (one batch) shows pixels, a
-// progressive one samples (renderProgressive maps pixels into them).
-std::function<void(std::uint64_t, std::uint64_t)> batchProgress(
-    const SamplePlan& plan, ProgressBar& bar, const std::function<void(std::uint64_t, std::uint64_t)>& pixelProgress) {
-  const bool samples = plan.progressive.progress != nullptr;
-  return [samples, &bar, pixelProgress](std::uint64_t done, std::uint64_t total) {
-    if (samples && pixelProgress)
-      pixelProgress(done, total);
-    else if (!samples)
-      bar.update(done, total);
-    waitForSignalIfTesting("render");
-  };
-}
-
-// The settings every renderer's options share (CpuOptions, PathOptions, VulkanOptions,
-// VulkanPathOptions), set for one batch: its samples, the seed, the crop, progress and Ctrl-C.
-template <class Options>
-void setBatch(Options& o, const RenderRequest& request, const SamplePlan& plan, const SampleBatch& batch,
-              std::function<void(std::uint64_t, std::uint64_t)> progress) {
-  o.seed = plan.seed;
-  o.firstSample = static_cast<decltype(o.firstSample)>(batch.firstSample);
-  o.sampleCount = batch.count;
-  o.crop = request.crop;
-  o.progress = std::move(progress);
-  o.stop = [] { return pendingInterrupt() != 0; };
-}
-
-// The settings both Vulkan renderers' options share (VulkanOptions, VulkanPathOptions), for one
-// batch: the request's step budget, reads and variant, and setBatch's.
-template <class Options>
-Options vulkanOptions(const RenderRequest& request, const SamplePlan& plan, const SampleBatch& batch,
-                      std::function<void(std::uint64_t, std::uint64_t)> progress) {
-  Options o;
-  o.stepBudget = request.stepBudget;
-  o.reads = request.reads;
-  o.variant = request.variant;
-  setBatch(o, request, plan, batch, std::move(progress));
-  return o;
-}
-
 // Renders the plan's samples in batches (render/progressive) and reports them. (Only the
 // Whitted model streams its rows: it is one batch; a progressive mean is held whole.)
 RadianceImage renderBatches(const BatchRenderer& batches, const SamplePlan& plan, RenderReport& report) {
@@ -101,121 +53,6 @@ RadianceImage renderBatches(const BatchRenderer& batches, const SamplePlan& plan
   report.batches = done.batches;
   report.timeUp = done.timeUp;
   report.firstBatchPastLimit = done.firstBatchPastLimit;
-  return image;
-}
-
-// The seam between the pipeline and the integrators, per backend: a BatchRenderer for the
-// scene's integrator. The Whitted model is renderReference / renderVulkan; the path
-// integrators (scene.path.integrator != Integrator::Raytracer) are renderPathReference /
-// renderVulkanPath, each taking the batch's samples and the seed.
-RadianceImage renderWithCpu(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress,
-                            RenderReport& report, const SamplePlan& plan, const RowSink* rows) {
-  auto t0 = std::chrono::steady_clock::now();
-  Bvh bvh = buildBvh(scene);
-  report.buildSeconds = secondsSince(t0);
-  report.bvhNodes = bvh.nodes.size();
-
-  t0 = std::chrono::steady_clock::now();
-  report.backend = "cpu";
-  report.threads = request.threads > 0 ? request.threads : static_cast<int>(std::thread::hardware_concurrency());
-  BatchRenderer batches = [&](const SampleBatch& batch, const std::function<void(std::uint64_t, std::uint64_t)>& px) {
-    RayCounts rays;
-    RadianceImage image;
-    if (scene.path.integrator == Integrator::Raytracer) {
-      CpuOptions o;
-      o.threads = request.threads;
-      if (rows) o.rows = *rows;
-      setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
-      image = renderReference(scene, bvh, o, &rays);
-    } else {
-      PathOptions o;
-      o.threads = request.threads;
-      o.stratified = request.stratified;
-      setBatch(o, request, plan, batch, batchProgress(plan, progress, px));
-      image = renderPathReference(scene, bvh, o, &rays);
-    }
-    report.rays += rays;
-    return image;
-  };
-  RadianceImage image = renderBatches(batches, plan, report);
-  report.renderSeconds = secondsSince(t0);
-  return image;
-}
-
-// Frees the scene's shapes once they are flattened: nothing after that reads them (152 bytes
-// a triangle, 150 MB for a million, held through the upload and render otherwise).
-RadianceImage renderWithVulkan(const RenderRequest& request, SceneDesc& scene, ProgressBar& progress,
-                               RenderReport& report, RenderSession& session, const SamplePlan& plan,
-                               const RowSink* rows) {
-  auto t0 = std::chrono::steady_clock::now();
-  // The device first: without one there is nothing to build for.
-  bool made = false;
-  const Context& context = session.context(request, made);
-  if (made) {
-    report.instanceSeconds = context.instanceSeconds();
-    report.deviceSeconds = context.deviceSeconds();
-  }
-  report.backend = std::string("vulkan (") + context.properties().deviceName + ")";
-  double setup = secondsSince(t0);
-
-  // Each batch's renderer options.
-  auto whittedOptions = [&](const SampleBatch& batch, std::function<void(std::uint64_t, std::uint64_t)> pixels) {
-    VulkanOptions o = vulkanOptions<VulkanOptions>(request, plan, batch, std::move(pixels));
-    o.cutoff = request.cutoff;
-    if (rows) o.rows = *rows;
-    return o;
-  };
-  auto pathOptions = [&](const SampleBatch& batch, std::function<void(std::uint64_t, std::uint64_t)> pixels) {
-    VulkanPathOptions o = vulkanOptions<VulkanPathOptions>(request, plan, batch, std::move(pixels));
-    o.stratified = request.stratified;
-    return o;
-  };
-  const bool whitted = scene.path.integrator == Integrator::Raytracer;
-  const std::size_t pipelinesBefore = context.pipelines().made();
-
-  t0 = std::chrono::steady_clock::now();
-  // The first batch's pipeline is made while the BVH builds (lavapipe takes 20-90 ms on one
-  // core), from the scene's arrays (and the scene, which both threads only read); the batch
-  // takes it then. A failure there is the batch's to meet again, in its place.
-  double ahead = 0;
-  GpuScene gpuScene = flatten(scene, [&](const GpuScene& arrays) {
-    const auto start = std::chrono::steady_clock::now();
-    const SampleBatch first = firstBatch(plan.progressive);
-    try {
-      // (whether every primitive is in the BVH matters only to a scene small enough to test all)
-      const bool eachPrimitiveOnce = primitiveCount(arrays) > gpu::kTestAllMaxPrims || !shapes::anyNeverHit(scene);
-      if (whitted)
-        prepareVulkanPipeline(context, arrays, whittedOptions(first, {}), eachPrimitiveOnce);
-      else
-        prepareVulkanPathPipeline(context, arrays, pathOptions(first, {}), eachPrimitiveOnce);
-    } catch (const std::exception&) {
-    }
-    ahead = secondsSince(start);
-  });
-  report.buildSeconds = secondsSince(t0);
-  report.pipelineAheadSeconds = ahead;
-  report.bvhNodes = gpuScene.bvh.nodes.size();
-#define VKRT_SHAPE_FREE(Type, member, name, kind, GpuType, binding) std::vector<Type>().swap(scene.member);
-  VKRT_SHAPES(VKRT_SHAPE_FREE)
-#undef VKRT_SHAPE_FREE
-
-  t0 = std::chrono::steady_clock::now();
-  VulkanPathRender pathRender(context, gpuScene);   // the path integrators' batches share its upload
-  BatchRenderer batches = [&](const SampleBatch& batch, const std::function<void(std::uint64_t, std::uint64_t)>& px) {
-    RayCounts rays;
-    VulkanTimings timings;
-    RadianceImage image;
-    if (whitted)
-      image = renderVulkan(context, gpuScene, whittedOptions(batch, batchProgress(plan, progress, px)), &rays, &timings);
-    else
-      image = pathRender.render(pathOptions(batch, batchProgress(plan, progress, px)), &rays, &timings);
-    report.rays += rays;
-    addBatchTimings(report.vulkan, timings, batch.firstSample == plan.progressive.firstSample);
-    return image;
-  };
-  RadianceImage image = renderBatches(batches, plan, report);
-  report.renderSeconds = setup + secondsSince(t0);
-  report.pipelinesMade = context.pipelines().made() - pipelinesBefore;
   return image;
 }
 
@@ -482,16 +319,9 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   if (request.maxDepth >= 0) scene.maxDepth = request.maxDepth;
   applySizeOverride(request, scene);
   report.estimator = applyEstimator(request, scene);
-  // A limit of the Vulkan shader's random numbers: said at the scene's line, not the device's,
-  // and before anything is rendered (also by --dry-run).
-  // (The emitters, a pass over every primitive, are looked for only when they would pass it.)
-  if (request.backend == Backend::Vulkan && scene.path.integrator != Integrator::Raytracer) {
-    const gpu::GpuPathParams path = pathParams(scene);
-    std::string problem = lightSlotsProblem(path, false);
-    if (problem.empty() && !lightSlotsProblem(path, true).empty() && !collectEmitters(scene).prims.empty())
-      problem = lightSlotsProblem(path, true);
-    if (!problem.empty()) throw SceneError({Diagnostic{scene.sourcePath, scene.path.lightSamplesLine, problem}});
-  }
+  // The backend's own limits (the Vulkan shader's random numbers): said at the scene's line,
+  // not the device's, and before anything is rendered (also by --dry-run).
+  validateForBackend(request, scene);
   if (checkOutput) {
     report.outputPath = resolveOutput(scene, request);
   }
@@ -530,9 +360,14 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
 RadianceImage renderPrepared(const RenderRequest& request, PreparedRender& prepared, ProgressBar& progress,
                              RenderReport& report, RenderSession& vulkan, const RowSink* rows) {
   SceneDesc& scene = prepared.parsed.scene;
-  RadianceImage image = request.backend == Backend::Cpu
-                            ? renderWithCpu(request, scene, progress, report, prepared.plan, rows)
-                            : renderWithVulkan(request, scene, progress, report, vulkan, prepared.plan, rows);
+  std::unique_ptr<RenderBackend> backend = makeBackend(request, progress, report, vulkan, prepared.plan, rows);
+  backend->build(scene);
+  auto t0 = std::chrono::steady_clock::now();
+  RadianceImage image = renderBatches(
+      [&](const SampleBatch& batch, const PixelProgress& px) { return backend->renderBatch(batch, px); },
+      prepared.plan, report);
+  report.renderSeconds += secondsSince(t0);
+  backend->finish();
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
   checkFinite(request, scene, report);

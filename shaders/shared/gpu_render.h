@@ -45,8 +45,8 @@ GPU_CONST uint kSpecSharedCount = 7u;        // each shader's own ids follow (gp
 GPU_CONST uint kPhaseTrace = 0u;     // nearest hit of the current ray (camera or mirror)
 GPU_CONST uint kPhaseLight = 1u;     // start the next light's shadow ray
 GPU_CONST uint kPhaseShadow = 2u;    // any hit of the shadow ray
-GPU_CONST uint kPhaseDone = 3u;
-GPU_CONST uint kPhaseSampleEnd = 4u;   // pathtrace.comp: the sample is over (within a step, never saved)
+GPU_CONST uint kPhaseDone = 3u;     // the lane's last pixel is written (driver.glsl)
+GPU_CONST uint kPhaseEnd = 4u;      // the path (a pixel's, or a sample's) is over: endPath (within a step, never saved)
 
 // The camera in the float32 frame, as both shaders take it (camera.glsl).
 struct GpuCamera {

@@ -1,0 +1,73 @@
+// The seam between the pipeline (render.cpp) and the backends: a RenderBackend validates a scene
+// against its own limits, builds what it renders from, and renders sample batches of the
+// scene's technique. render.cpp asks one (makeBackend) and knows nothing of which technique
+// or device renders: each backend chooses its technique for the scene's integrator in one
+// place (cpu_backend.cpp, vulkan_backend.cpp).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <utility>
+
+#include "image/radiance_image.h"
+#include "image/row_sink.h"
+#include "interrupt.h"
+#include "render/progressive.h"
+#include "render/render.h"
+#include "scene/scene_desc.h"
+
+namespace vkrt {
+
+class ProgressBar;
+
+// What every batch of a render shares: its samples as batches (render/progressive.h), and the
+// generator's seed.
+struct SamplePlan {
+  ProgressiveOptions progressive;
+  std::uint32_t seed = 0;
+};
+
+using PixelProgress = std::function<void(std::uint64_t, std::uint64_t)>;
+
+class RenderBackend {
+ public:
+  virtual ~RenderBackend() = default;
+  // Builds what the batches render from (the BVH; the device, the GPU's arrays and pipeline),
+  // reporting its times; the render's seconds so far (a device's setup) in renderSeconds. May
+  // free the scene's shapes once they are no longer read; `scene` must outlive the backend.
+  virtual void build(SceneDesc& scene) = 0;
+  // One batch of samples; `pixelProgress` as BatchRenderer's.
+  virtual RadianceImage renderBatch(const SampleBatch& batch, const PixelProgress& pixelProgress) = 0;
+  // After the last batch: the report's totals.
+  virtual void finish() {}
+};
+
+// The backend `request.backend` names, for batches of `plan`; with `rows`, a render of one
+// batch streams its bands there. It reports into `report`; `vulkan` lends the Vulkan context.
+// The objects must outlive the backend.
+std::unique_ptr<RenderBackend> makeBackend(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
+                                           RenderSession& vulkan, const SamplePlan& plan, const RowSink* rows);
+
+// Throws SceneError where `scene` is beyond what `request.backend` can render (said at the
+// scene's line, before anything is rendered, also by --dry-run). Opens no device.
+void validateForBackend(const RenderRequest& request, const SceneDesc& scene);
+
+// The settings every renderer's options share (CpuOptions, PathOptions, VulkanOptions,
+// VulkanPathOptions), set for one batch: its samples, the seed, the crop, progress and Ctrl-C.
+template <class Options>
+void setBatch(Options& o, const RenderRequest& request, const SamplePlan& plan, const SampleBatch& batch,
+              PixelProgress progress) {
+  o.seed = plan.seed;
+  o.firstSample = static_cast<decltype(o.firstSample)>(batch.firstSample);
+  o.sampleCount = batch.count;
+  o.crop = request.crop;
+  o.progress = std::move(progress);
+  o.stop = [] { return pendingInterrupt() != 0; };
+}
+
+// One batch's progress on the bar: a Whitted render (one batch) shows pixels, a progressive
+// one samples (renderProgressive maps pixels into them).
+PixelProgress batchProgress(const SamplePlan& plan, ProgressBar& bar, const PixelProgress& pixelProgress);
+
+}  // namespace vkrt

@@ -1,0 +1,166 @@
+// The Vulkan renderers as a backend: the device, the GPU's arrays (the first batch's pipeline
+// made while the BVH builds), then each batch by the scene's technique, chosen in one place
+// (vulkanTechnique): the Whitted model (renderVulkan) or a path integrator (VulkanPathRender).
+#include "render/vulkan_backend.h"
+
+#include <chrono>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "gpu/vulkan_path_renderer.h"
+#include "gpu/vulkan_renderer.h"
+#include "scene/diagnostic.h"
+#include "scene/emitters.h"
+#include "scene/flatten.h"
+#include "scene/shapes/shape.h"
+#include "timing.h"
+
+namespace vkrt {
+namespace {
+
+// The settings both Vulkan renderers' options share (VulkanOptions, VulkanPathOptions), for one
+// batch: the request's step budget, reads and variant, and setBatch's.
+template <class Options>
+Options vulkanOptions(const RenderRequest& request, const SamplePlan& plan, const SampleBatch& batch,
+                      PixelProgress progress) {
+  Options o;
+  o.stepBudget = request.stepBudget;
+  o.reads = request.reads;
+  o.variant = request.variant;
+  setBatch(o, request, plan, batch, std::move(progress));
+  return o;
+}
+
+// A technique on the Vulkan backend: its pipeline made ahead (from the scene's arrays before
+// the BVH is built), and a batch rendered.
+struct VulkanTechnique {
+  std::function<void(const Context&, const GpuScene& arrays, const SampleBatch& first, bool eachPrimitiveOnce)> prepare;
+  std::function<RadianceImage(const Context&, const GpuScene&, const SampleBatch&, PixelProgress, RayCounts*,
+                              VulkanTimings*)>
+      render;
+};
+
+// The scene's technique: the Whitted model, or the path integrators (whose batches share one
+// upload of the scene: `pathRender`).
+VulkanTechnique vulkanTechnique(const RenderRequest& request, const SamplePlan& plan, const SceneDesc& scene,
+                                const RowSink* rows, std::unique_ptr<VulkanPathRender>& pathRender) {
+  if (scene.path.integrator == Integrator::Raytracer) {
+    auto options = [&request, &plan, rows](const SampleBatch& batch, PixelProgress pixels) {
+      VulkanOptions o = vulkanOptions<VulkanOptions>(request, plan, batch, std::move(pixels));
+      o.cutoff = request.cutoff;
+      if (rows) o.rows = *rows;
+      return o;
+    };
+    return {[options](const Context& context, const GpuScene& arrays, const SampleBatch& first, bool eachOnce) {
+              prepareVulkanPipeline(context, arrays, options(first, {}), eachOnce);
+            },
+            [options](const Context& context, const GpuScene& gpuScene, const SampleBatch& batch, PixelProgress px,
+                      RayCounts* rays, VulkanTimings* timings) {
+              return renderVulkan(context, gpuScene, options(batch, std::move(px)), rays, timings);
+            }};
+  }
+  auto options = [&request, &plan](const SampleBatch& batch, PixelProgress pixels) {
+    VulkanPathOptions o = vulkanOptions<VulkanPathOptions>(request, plan, batch, std::move(pixels));
+    o.stratified = request.stratified;
+    return o;
+  };
+  return {[options](const Context& context, const GpuScene& arrays, const SampleBatch& first, bool eachOnce) {
+            prepareVulkanPathPipeline(context, arrays, options(first, {}), eachOnce);
+          },
+          [options, &pathRender](const Context& context, const GpuScene& gpuScene, const SampleBatch& batch,
+                                 PixelProgress px, RayCounts* rays, VulkanTimings* timings) {
+            if (!pathRender) pathRender = std::make_unique<VulkanPathRender>(context, gpuScene);
+            return pathRender->render(options(batch, std::move(px)), rays, timings);
+          }};
+}
+
+class VulkanBackend : public RenderBackend {
+ public:
+  VulkanBackend(const RenderRequest& request, ProgressBar& progress, RenderReport& report, RenderSession& session,
+                const SamplePlan& plan, const RowSink* rows)
+      : request_(request), progress_(progress), report_(report), session_(session), plan_(plan), rows_(rows) {}
+
+  // Frees the scene's shapes once they are flattened: nothing after that reads them (152 bytes
+  // a triangle, 150 MB for a million, held through the upload and render otherwise).
+  void build(SceneDesc& scene) override {
+    auto t0 = std::chrono::steady_clock::now();
+    // The device first: without one there is nothing to build for.
+    bool made = false;
+    context_ = &session_.context(request_, made);
+    if (made) {
+      report_.instanceSeconds = context_->instanceSeconds();
+      report_.deviceSeconds = context_->deviceSeconds();
+    }
+    report_.backend = std::string("vulkan (") + context_->properties().deviceName + ")";
+    report_.renderSeconds = secondsSince(t0);   // the device's setup counts as the render's
+    technique_ = vulkanTechnique(request_, plan_, scene, rows_, pathRender_);
+    pipelinesBefore_ = context_->pipelines().made();
+
+    t0 = std::chrono::steady_clock::now();
+    // The first batch's pipeline is made while the BVH builds (bench/README.md, "First
+    // render"), from the scene's arrays (and the scene, which both threads only read); the
+    // batch takes it then. A failure there is the batch's to meet again, in its place.
+    double ahead = 0;
+    gpuScene_ = flatten(scene, [&](const GpuScene& arrays) {
+      const auto start = std::chrono::steady_clock::now();
+      try {
+        // (whether every primitive is in the BVH matters only to a scene small enough to test all)
+        const bool eachPrimitiveOnce = primitiveCount(arrays) > gpu::kTestAllMaxPrims || !shapes::anyNeverHit(scene);
+        technique_.prepare(*context_, arrays, firstBatch(plan_.progressive), eachPrimitiveOnce);
+      } catch (const std::exception&) {
+      }
+      ahead = secondsSince(start);
+    });
+    report_.buildSeconds = secondsSince(t0);
+    report_.pipelineAheadSeconds = ahead;
+    report_.bvhNodes = gpuScene_.bvh.nodes.size();
+#define VKRT_SHAPE_FREE(Type, member, name, kind, GpuType, binding) std::vector<Type>().swap(scene.member);
+    VKRT_SHAPES(VKRT_SHAPE_FREE)
+#undef VKRT_SHAPE_FREE
+  }
+
+  RadianceImage renderBatch(const SampleBatch& batch, const PixelProgress& px) override {
+    RayCounts rays;
+    VulkanTimings timings;
+    RadianceImage image =
+        technique_.render(*context_, gpuScene_, batch, batchProgress(plan_, progress_, px), &rays, &timings);
+    report_.rays += rays;
+    addBatchTimings(report_.vulkan, timings, batch.firstSample == plan_.progressive.firstSample);
+    return image;
+  }
+
+  void finish() override { report_.pipelinesMade = context_->pipelines().made() - pipelinesBefore_; }
+
+ private:
+  const RenderRequest& request_;
+  ProgressBar& progress_;
+  RenderReport& report_;
+  RenderSession& session_;
+  const SamplePlan& plan_;
+  const RowSink* rows_;
+  const Context* context_ = nullptr;
+  VulkanTechnique technique_;
+  GpuScene gpuScene_;
+  std::unique_ptr<VulkanPathRender> pathRender_;   // declared after gpuScene_, which it reads
+  std::size_t pipelinesBefore_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<RenderBackend> makeVulkanBackend(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
+                                           RenderSession& session, const SamplePlan& plan, const RowSink* rows) {
+  return std::make_unique<VulkanBackend>(request, progress, report, session, plan, rows);
+}
+
+// (The emitters, a pass over every primitive, are looked for only when they would pass it.)
+void validateForVulkan(const SceneDesc& scene) {
+  if (scene.path.integrator == Integrator::Raytracer) return;
+  const gpu::GpuPathParams path = pathParams(scene);
+  std::string problem = lightSlotsProblem(path, false);
+  if (problem.empty() && !lightSlotsProblem(path, true).empty() && !collectEmitters(scene).prims.empty())
+    problem = lightSlotsProblem(path, true);
+  if (!problem.empty()) throw SceneError({Diagnostic{scene.sourcePath, scene.path.lightSamplesLine, problem}});
+}
+
+}  // namespace vkrt
