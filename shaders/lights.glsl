@@ -11,13 +11,13 @@ vec3 towardLight(GpuLight light, vec3 p, out float reach, out vec3 arriving) {
   reach = kInfinity;
   float divisor = 1.0;
   vec3 dir = light.positionOrDirection.xyz;
-  if (kHasPointLights && (!kHasDirectionalLights || light.positionOrDirection.w == kPointLight)) {
+  if (kHasPointLights && (!kHasDirectionalLights || light.kind == kLightPoint)) {
     vec3 v = light.positionOrDirection.xyz - p;
     float distance = length(v);
     dir = v / distance;
     reach = distance;
     if (kHasAttenuation)
-      divisor = light.attenuation.x + light.attenuation.y * distance + light.attenuation.z * distance * distance;
+      divisor = light.attenuation0 + light.attenuation1 * distance + light.attenuation2 * distance * distance;
   }
   arriving = clamp(light.color.rgb / divisor, -kInfinity, kInfinity);
   return dir;

@@ -12,16 +12,21 @@
 #define SCENE_TEXELS(b) layout(binding = b, rgba32ui) uniform readonly restrict uimageBuffer
 #define texelU(b, i) imageLoad(b, int(i))
 #define texelF(b, i) uintBitsToFloat(texelU(b, i))
-SCENE_TEXELS(kBindingLights) lightWords;         // 3 texels each
+SCENE_TEXELS(kBindingLights) lightWords;         // kLightTexels each
 SCENE_TEXELS(kBindingMaterials) materialWords;   // 4 texels each
 SCENE_TEXELS(kBindingBvhNodes) nodeWords;        // 2 texels each
 layout(binding = kBindingPrimRefs, r32ui) uniform readonly restrict uimageBuffer primRefWords;
 
 GpuLight loadLight(uint i) {
+  const uint n = kLightTexels;
   GpuLight l;
-  l.positionOrDirection = texelF(lightWords, 3u * i);
-  l.color = texelF(lightWords, 3u * i + 1u);
-  l.attenuation = texelF(lightWords, 3u * i + 2u);
+  l.positionOrDirection = texelF(lightWords, n * i);
+  l.color = texelF(lightWords, n * i + 1u);
+  uvec4 c = texelU(lightWords, n * i + 2u);
+  l.attenuation0 = uintBitsToFloat(c.x);
+  l.attenuation1 = uintBitsToFloat(c.y);
+  l.attenuation2 = uintBitsToFloat(c.z);
+  l.kind = c.w;
   return l;
 }
 GpuMaterial loadMaterial(uint i) {

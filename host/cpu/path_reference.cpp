@@ -239,14 +239,9 @@ class PathIntegrator {
     for (const QuadLight& q : scene_.quadLights)
       radiance += v.m->diffuse / kPi * q.radiance * analyticQuadFactor(q, v.p, v.n);
     for (const Light& light : scene_.lights) {
-      dvec3 toLight = light.type == LightType::Point ? light.vec - v.p : light.vec;
-      double distance = glm::length(toLight);
-      if (distance == 0.0) continue;
-      toLight /= distance;
-      double divisor = light.type == LightType::Point ? light.attenuation.x + light.attenuation.y * distance +
-                                                             light.attenuation.z * distance * distance
-                                                       : 1.0;
-      radiance += v.m->diffuse / kPi * (light.color / divisor) * std::max(glm::dot(v.n, toLight), 0.0);
+      LightArrival arrival;
+      if (!arrivalAt(light, v.p, arrival)) continue;
+      radiance += v.m->diffuse / kPi * (light.color / arrival.divisor) * std::max(glm::dot(v.n, arrival.toLight), 0.0);
     }
     return radiance;
   }

@@ -7,9 +7,9 @@ namespace vkrt {
 void setSharedFeatures(const GpuScene& scene, std::vector<std::uint32_t>& spec) {
   bool point = false, directional = false, attenuation = false;
   for (const gpu::GpuLight& l : scene.lights) {
-    const bool isPoint = l.positionOrDirection.w == gpu::kPointLight;
+    const bool isPoint = l.kind == gpu::kLightPoint;
     (isPoint ? point : directional) = true;
-    if (isPoint && (l.attenuation.x != 1.0f || l.attenuation.y != 0.0f || l.attenuation.z != 0.0f)) attenuation = true;
+    if (isPoint && (l.attenuation0 != 1.0f || l.attenuation1 != 0.0f || l.attenuation2 != 0.0f)) attenuation = true;
   }
   spec[gpu::kSpecHasTriangles] = !scene.triangles.empty();
   spec[gpu::kSpecHasSpheres] = !scene.spheres.empty();

@@ -1,4 +1,5 @@
 // The point and directional lights: what reaches a point, the GPU layout, the strongest arrival.
+// (A new type of light: a case in each switch here.)
 #include "scene/light.h"
 
 #include <algorithm>
@@ -17,6 +18,13 @@ constexpr double kFarLight = 0x1p40;
 
 gpu::vec4 f4(const glm::dvec3& v, float w = 0.0f) {
   return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), w};
+}
+
+// Sets the light's attenuation divisor c0 + c1 r + c2 r^2.
+void setAttenuation(gpu::GpuLight& gl, const glm::dvec3& c) {
+  gl.attenuation0 = static_cast<float>(c.x);
+  gl.attenuation1 = static_cast<float>(c.y);
+  gl.attenuation2 = static_cast<float>(c.z);
 }
 
 }  // namespace
@@ -44,18 +52,19 @@ bool arrivalAt(const Light& light, const glm::dvec3& p, LightArrival& arrival) {
 gpu::GpuLight toGpu(const Light& l, const glm::dvec3& origin, double scale) {
   gpu::GpuLight gl{};
   gl.color = f4(l.color);
+  gl.kind = gpuKindOf(l.type);
+  setAttenuation(gl, glm::dvec3(1.0, 0.0, 0.0));
   switch (l.type) {
     case LightType::Directional:
-      gl.positionOrDirection = f4(l.vec, 0.0f);
-      gl.attenuation = {1.0f, 0.0f, 0.0f, 0.0f};
+      gl.positionOrDirection = f4(l.vec);
       break;
     case LightType::Point: {
       const glm::dvec3 position = (l.vec - origin) * scale;
-      gl.positionOrDirection = f4(position, gpu::kPointLight);
+      gl.positionOrDirection = f4(position);
       // The divisor c0 + c1 r + c2 r^2 with r in the frame's units; a coefficient beyond float
       // is the largest float (the light is then as good as 0 wherever r is not).
       const glm::dvec3& c = l.attenuation;
-      gl.attenuation = f4(glm::min(glm::dvec3(c.x, c.y / scale, c.z / scale / scale), glm::dvec3(kFloatMax)));
+      setAttenuation(gl, glm::min(glm::dvec3(c.x, c.y / scale, c.z / scale / scale), glm::dvec3(kFloatMax)));
       const double far = std::max({std::abs(position.x), std::abs(position.y), std::abs(position.z)});
       if (far > kFarLight) {
         // So far beyond the geometry (whose frame coordinates are at most a few units) that its
@@ -65,9 +74,9 @@ gpu::GpuLight toGpu(const Light& l, const glm::dvec3& origin, double scale) {
         const glm::dvec3 unit = unitVector(position);
         const double distance = glm::dot(position * (1.0 / far), unit) * far / scale;   // in world units
         const double divisor = c.x + c.y * distance + c.z * distance * distance;
-        gl.positionOrDirection = f4(unit * kFarLight, gpu::kPointLight);
+        gl.positionOrDirection = f4(unit * kFarLight);
         gl.color = f4(glm::clamp(l.color / divisor, glm::dvec3(-kFloatMax), glm::dvec3(kFloatMax)));
-        gl.attenuation = {1.0f, 0.0f, 0.0f, 0.0f};
+        setAttenuation(gl, glm::dvec3(1.0, 0.0, 0.0));
       }
       break;
     }

@@ -1,12 +1,13 @@
 // The point and directional lights (doc/scene-format.md, "Lights"): what the scene holds of
 // one, what reaches a point from it (both CPU references ask here), its GPU layout
 // (flatten() asks here), and the most it can send (the exactness cut-off's bound). Its
-// shader side is shaders/lights.glsl. A new type of light adds its LightType, its name and
-// a case in each switch of light.cpp; the compiler lists what it misses.
+// shader side is shaders/lights.glsl. A new type of light adds its row to VKRT_LIGHT_TYPES, its
+// kind in gpu_scene.h and a case in each switch of light.cpp; the compiler lists what it misses.
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 
 #include <glm/glm.hpp>
@@ -15,11 +16,29 @@
 
 namespace vkrt {
 
-// In the order in which `--stats` lists them.
-enum class LightType { Point, Directional };
-inline constexpr std::size_t kLightTypeCount = 2;
+// The light types, once: X(Type, command name, GPU kind), in the order in which `--stats`
+// lists them. LightType, kLightTypeNames and the GPU kind (GpuLight.kind) come from here.
+#define VKRT_LIGHT_TYPES(X)                  \
+  X(Point, "point", gpu::kLightPoint)        \
+  X(Directional, "directional", gpu::kLightDirectional)
+
+#define VKRT_LIGHT_ENUM(Type, name, kind) Type,
+enum class LightType { VKRT_LIGHT_TYPES(VKRT_LIGHT_ENUM) };
+#undef VKRT_LIGHT_ENUM
+#define VKRT_LIGHT_COUNT(Type, name, kind) +1
+inline constexpr std::size_t kLightTypeCount = 0 VKRT_LIGHT_TYPES(VKRT_LIGHT_COUNT);
+#undef VKRT_LIGHT_COUNT
 // Each type's command name, in the order of the enum.
-inline constexpr std::array<std::string_view, kLightTypeCount> kLightTypeNames = {"point", "directional"};
+#define VKRT_LIGHT_NAME(Type, name, kind) name,
+inline constexpr std::array<std::string_view, kLightTypeCount> kLightTypeNames = {VKRT_LIGHT_TYPES(VKRT_LIGHT_NAME)};
+#undef VKRT_LIGHT_NAME
+// The type's GpuLight.kind.
+constexpr std::uint32_t gpuKindOf(LightType type) {
+#define VKRT_LIGHT_KIND(Type, name, kind) kind,
+  constexpr std::uint32_t kinds[] = {VKRT_LIGHT_TYPES(VKRT_LIGHT_KIND)};
+#undef VKRT_LIGHT_KIND
+  return kinds[static_cast<std::size_t>(type)];
+}
 
 struct Light {
   LightType type = LightType::Directional;

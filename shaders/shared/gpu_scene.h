@@ -26,8 +26,9 @@ GPU_FN uint primKind(uint ref) { return ref >> kPrimKindShift; }
 GPU_FN uint primIndex(uint ref) { return ref & kPrimIndexMask; }
 // GpuTriangle.normalsIndex of a flat triangle (face normal).
 GPU_CONST uint kNoNormals = 0xFFFFFFFFu;
-// GpuLight.positionOrDirection.w: 1 for a point light, 0 for a directional one.
-GPU_CONST float kPointLight = 1.0f;
+// GpuLight.kind: the light's type, in the order of host/scene/light.h's list (VKRT_LIGHT_TYPES).
+GPU_CONST uint kLightPoint = 0u;
+GPU_CONST uint kLightDirectional = 1u;
 
 // std430, and only vec4/mat4/uint/float members: a vec3 lives in a vec4 whose .w holds a
 // scalar that belongs with it, and named pad fields bring each struct to a multiple of 16.
@@ -67,11 +68,18 @@ GPU_ASSERT_OFFSET(GpuSphere, materialIndex, 80)
 GPU_ASSERT_OFFSET(GpuSphere, rayOffset, 84)
 
 struct GpuLight {
-  vec4 positionOrDirection; // scene-centred frame; w = kPointLight (point) or 0 (direction toward light)
+  vec4 positionOrDirection; // scene-centred frame: a point light's position, or the unit direction toward a directional light; w unused
   vec4 color;               // rgb, w unused
-  vec4 attenuation;         // xyz = constant, linear, quadratic (point lights), w unused
+  // The attenuation divisor c0 + c1 d + c2 d^2 (point lights; 1 0 0 for the others), d in the frame's units.
+  float attenuation0;
+  float attenuation1;
+  float attenuation2;
+  uint kind;                // kLightPoint or kLightDirectional
 };
 GPU_ASSERT_SIZE(GpuLight, 48)
+GPU_ASSERT_OFFSET(GpuLight, attenuation0, 32)
+GPU_ASSERT_OFFSET(GpuLight, kind, 44)
+GPU_CONST uint kLightTexels = 3u;   // RGBA32UI texels of one GpuLight (texel-buffer reads)
 
 struct GpuMaterial {
   vec4 ambient;             // rgb, w = the BRDF model: kBrdfPhong or kBrdfGgx (path integrators)

@@ -60,9 +60,9 @@ TEST(Flatten, CarriesValuesIntoGpuLayouts) {
   EXPECT_EQ(g.camera.origin.z, 5.0f);
   EXPECT_EQ(g.camera.origin.x, -1.0f);
   ASSERT_EQ(g.lights.size(), 2u);
-  EXPECT_EQ(g.lights[0].positionOrDirection.w, gpu::kPointLight);
-  EXPECT_EQ(g.lights[0].attenuation.z, 3.0f);
-  EXPECT_EQ(g.lights[1].positionOrDirection.w, 0.0f);
+  EXPECT_EQ(g.lights[0].kind, gpu::kLightPoint);
+  EXPECT_EQ(g.lights[0].attenuation2, 3.0f);
+  EXPECT_EQ(g.lights[1].kind, gpu::kLightDirectional);
   EXPECT_EQ(g.lights[1].positionOrDirection.z, 1.0f);   // normalised
   ASSERT_EQ(g.spheres.size(), 1u);
   EXPECT_EQ(g.spheres[0].centerRadius.w, 2.0f);

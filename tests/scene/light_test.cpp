@@ -64,19 +64,22 @@ TEST(Light, GpuLayoutIsInTheFloatFrame) {
   EXPECT_EQ(g.positionOrDirection.x, 2.0f);
   EXPECT_EQ(g.positionOrDirection.y, 2.0f);
   EXPECT_EQ(g.positionOrDirection.z, 2.0f);
-  EXPECT_EQ(g.positionOrDirection.w, gpu::kPointLight);
+  EXPECT_EQ(g.kind, gpu::kLightPoint);
   // The divisor in frame units (world units times the scale): c0, c1 / scale, c2 / scale^2.
-  EXPECT_EQ(g.attenuation.x, 1.0f);
-  EXPECT_EQ(g.attenuation.y, 1.0f);
-  EXPECT_EQ(g.attenuation.z, 1.0f);
+  EXPECT_EQ(g.attenuation0, 1.0f);
+  EXPECT_EQ(g.attenuation1, 1.0f);
+  EXPECT_EQ(g.attenuation2, 1.0f);
   EXPECT_EQ(g.color.y, 3.0f);
 
   Light d;
   d.type = LightType::Directional;
   d.vec = {0.0, 0.0, 1.0};
+  d.attenuation = {5.0, 5.0, 5.0};   // (a directional light has none)
   const gpu::GpuLight gd = toGpu(d, {100.0, 0.0, 0.0}, 0.25);   // directions do not move or scale
   EXPECT_EQ(gd.positionOrDirection.z, 1.0f);
-  EXPECT_EQ(gd.positionOrDirection.w, 0.0f);
+  EXPECT_EQ(gd.kind, gpu::kLightDirectional);
+  EXPECT_EQ(gd.attenuation0, 1.0f);   // no attenuation, whatever the scene said
+  EXPECT_EQ(gd.attenuation1, 0.0f);
 }
 
 TEST(Light, AFarPointLightMovesNearerWithItsAttenuationInItsColour) {
@@ -86,8 +89,8 @@ TEST(Light, AFarPointLightMovesNearerWithItsAttenuationInItsColour) {
   const gpu::GpuLight g = toGpu(l, dvec3(0.0), 1.0);
   EXPECT_EQ(g.positionOrDirection.x, 0.0f);
   EXPECT_EQ(g.positionOrDirection.z, static_cast<float>(0x1p40));
-  EXPECT_EQ(g.attenuation.x, 1.0f);
-  EXPECT_EQ(g.attenuation.z, 0.0f);
+  EXPECT_EQ(g.attenuation0, 1.0f);
+  EXPECT_EQ(g.attenuation2, 0.0f);
   EXPECT_FLOAT_EQ(g.color.z, static_cast<float>(4.0 / (1.0 + far * far)));
 }
 

@@ -48,7 +48,7 @@ void main() {
   put(s.objectFromWorld[0]); put(s.objectFromWorld[1]); put(s.objectFromWorld[2]); put(s.objectFromWorld[3]);
   put(s.centerRadius); put(s.materialIndex); put(s.rayOffset); put(s.pad0); put(s.pad1);
   GpuLight l = lights[1];
-  put(l.positionOrDirection); put(l.color); put(l.attenuation);
+  put(l.positionOrDirection); put(l.color); put(l.attenuation0); put(l.attenuation1); put(l.attenuation2); put(l.kind);
   GpuMaterial m = materials[1];
   put(m.ambient); put(m.diffuse); put(m.specular); put(m.emission);
   GpuBvhNode b = nodes[1];
