@@ -92,4 +92,9 @@ std::string exitStatusName(int status) {
   }
 }
 
+std::exception_ptr currentFailure() {
+  if (int signal = pendingInterrupt()) return std::make_exception_ptr(Interrupted(signal));
+  return std::current_exception();
+}
+
 }  // namespace vkrt

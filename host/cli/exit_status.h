@@ -29,6 +29,11 @@ struct ErrorContext {
 // Prints the message of `error` (any exception) on `err` and returns its exit status.
 int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE* err);
 
+// The exception being handled, or Interrupted when a signal has been received: a signal
+// that cuts a wait short (an image read from a FIFO: "Interrupted system call") is what
+// stopped the command, and its status is the signal's. Call it inside a catch block.
+std::exception_ptr currentFailure();
+
 // What a status means, in two or three words ("scene error", "stopped by signal 2").
 std::string exitStatusName(int status);
 

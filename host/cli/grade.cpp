@@ -240,7 +240,7 @@ struct Rendered {
   std::map<std::string, std::pair<std::string, int>> errors;   // sceneKey -> what went wrong, its status
 };
 
-Rendered renderScenes(const Options& o, const std::vector<std::string>& scenes,
+Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& scenes,
                       const std::vector<SceneReference>& refs, int& status) {
   Rendered r;
   r.submission.name = "vkrt";
@@ -354,7 +354,7 @@ std::string joined(const std::vector<std::string>& names) {
 // notes, then the summary (with -q: the errors, and the summary when something failed).
 // Returns the run's exit status: `status` (the rendered scenes') made worse by what the
 // comparisons found.
-int printOutcomes(const Options& o, const GradeReport& report, int status) {
+int printOutcomes(const GradeOptions& o, const GradeReport& report, int status) {
   for (const ReportSubmission& s : report.submissions) {
     std::vector<std::string> fail, missing, unreadable;
     std::size_t pass = 0;
@@ -391,27 +391,27 @@ int printOutcomes(const Options& o, const GradeReport& report, int status) {
                counted(report.submissions.size(), "submission", "submissions").c_str(),
                counted(report.scenes.size(), "scene", "scenes").c_str(), report.seconds, n.pass, n.fail, n.missing,
                n.unreadable ? (", " + std::to_string(n.unreadable) + " unreadable").c_str() : "",
-               (o.gradeOutput + (o.gradeOutput.back() == '/' ? "" : "/") + "index.html").c_str(), status);
+               (o.output + (o.output.back() == '/' ? "" : "/") + "index.html").c_str(), status);
   return status;
 }
 
 }  // namespace
 
-int gradeCommand(const Options& o) {
+int gradeCommand(const GradeOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::string> folders, scenes;
-  for (const std::string& in : o.gradeInputs) (isSceneArgument(in) ? scenes : folders).push_back(in);
-  std::vector<std::string> inputs = o.gradeInputs;
-  inputs.push_back(o.gradeReferences);
-  if (o.gradeThresholdsFile) inputs.push_back(*o.gradeThresholdsFile);
-  const fs::path out = checkReportFolder(o.gradeOutput, inputs);
+  for (const std::string& in : o.inputs) (isSceneArgument(in) ? scenes : folders).push_back(in);
+  std::vector<std::string> inputs = o.inputs;
+  inputs.push_back(o.references);
+  if (o.thresholdsFile) inputs.push_back(*o.thresholdsFile);
+  const fs::path out = checkReportFolder(o.output, inputs);
 
-  const std::vector<SceneReference> refs = findReferences(o.gradeReferences);
+  const std::vector<SceneReference> refs = findReferences(o.references);
   std::vector<std::string> keys;
   for (const SceneReference& r : refs) keys.push_back(sceneKey(r.scene));
   ThresholdTable thresholds;
-  thresholds.all = o.gradeThresholds;
-  if (o.gradeThresholdsFile) thresholds = readThresholdFile(*o.gradeThresholdsFile, o.gradeThresholds, keys);
+  thresholds.all = o.thresholds;
+  if (o.thresholdsFile) thresholds = readThresholdFile(*o.thresholdsFile, o.thresholds, keys);
   std::vector<Submission> submissions;
   if (!folders.empty()) submissions = findSubmissions(folders, refs);
 
@@ -429,7 +429,7 @@ int gradeCommand(const Options& o) {
   TemporaryFolder folder(temporaryFolderFor(out));
   for (const std::string& sub : reportImageFolders(submissions.size())) fs::create_directories(folder.path() + "/" + sub);
   GradeReport report;
-  report.references = o.gradeReferences;
+  report.references = o.references;
   for (std::size_t c = 0; c < refs.size(); ++c) {
     const GradeThresholds& t = thresholds.forScene(keys[c]);
     report.scenes.push_back({refs[c].scene, refs[c].path, t.text(), keyFigureLabel(t), references[c].width,

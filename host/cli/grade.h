@@ -9,6 +9,6 @@
 
 namespace vkrt {
 
-int gradeCommand(const Options& options);
+int gradeCommand(const GradeOptions& options);
 
 }  // namespace vkrt

@@ -1,242 +1,274 @@
-// Command-line parsing for `vkrt`.
+// Command-line parsing for `vkrt`: each command's table of options (one row an option: its
+// spellings, argument, --help text and setter) and what its operands must be.
 #include "cli/options.h"
 
-#include <algorithm>
-#include <filesystem>
-#include <charconv>
-#include <cmath>
-#include <functional>
 #include <cstdlib>
-#include <span>
+#include <initializer_list>
 #include <string_view>
+#include <utility>
 
 #include <sys/stat.h>
 
 #include "cli/image_argument.h"
+#include "cli/option_rows.h"
+#include "cli/option_values.h"
 #include "image/crop.h"
 #include "image/image_file.h"
 #include "scene/diagnostic.h"   // echoed, abbreviated
-#include "scene/parse.h"        // kMaxImageEdge
 #include "suggest.h"
 
 namespace vkrt {
 
 namespace {
 
-constexpr std::size_t kHelpWidth = 88;
-const std::string kHelpIndent(25, ' ');
+using R = RenderCommandLine;
+using V = OptionValue;
 
-// `text` filled into lines of at most kHelpWidth characters (a longer word alone on its
-// line), the first after `first`, the others after `indent`; each line ends in a newline.
-std::string filled(const std::string& first, const std::string& indent, const std::string& text) {
-  std::string out, line = first;
-  bool empty = true;   // no word on `line` yet
-  std::size_t at = 0;
-  while (at < text.size()) {
-    std::size_t space = std::min(text.find(' ', at), text.size());
-    const std::string word = text.substr(at, space - at);
-    at = space + 1;
-    if (!empty && line.size() + 1 + word.size() > kHelpWidth) {
-      out += line + "\n";
-      line = indent, empty = true;
-    }
-    line += (empty ? "" : " ") + word;
-    empty = false;
-  }
-  return out + line + "\n";
+// `v` as one of `values`, or "unknown WHAT 'v' (expected: EXPECTED)".
+template <class T>
+T choice(const std::string& v, std::initializer_list<std::pair<std::string_view, T>> values, const std::string& what,
+         const std::string& expected) {
+  for (const auto& [name, value] : values)
+    if (v == name) return value;
+  throw UsageError("unknown " + what + " '" + echoed(v) + "' (expected: " + expected + ")");
 }
 
-// "PNG/PPM": the names of `which` joined by '/'.
-std::string slashed(FormatsOf which) {
-  std::string text;
-  for (const std::string& name : imageFormatNames(which)) text += (text.empty() ? "" : "/") + name;
-  return text;
+// The options that several commands take, each for any command's options that have its field.
+constexpr auto setQuiet = [](auto& o, const V&) { o.quiet = true; };
+constexpr auto setHelp = [](auto& o, const V&) { o.help = true; };
+constexpr auto setValidation = [](auto& o, const V&) { o.request.validation = true; };
+constexpr auto setBackend = [](auto& o, const V& v) {
+  o.request.backend = choice<Backend>(v(), {{"cpu", Backend::Cpu}, {"vulkan", Backend::Vulkan}}, "backend", "vulkan or cpu");
+};
+constexpr auto setDevice = [](auto& o, const V& v) {
+  o.request.device = v();
+  if (o.request.device.empty()) throw UsageError("--device needs an index or a name");
+};
+constexpr auto setSpp = [](auto& o, const V& v) {
+  o.request.spp = static_cast<std::uint64_t>(integerValue(v.name, v(), 1, 1 << 30));
+};
+constexpr auto setSeed = [](auto& o, const V& v) { o.request.seed = seedValue(v()); };
+constexpr auto setThreads = [](auto& o, const V& v) { o.request.threads = integerValue(v.name, v(), 1, 1024); };
+
+void setOutput(R& o, const V& v) {
+  if (o.output) throw UsageError("-o given twice ('" + abbreviated(*o.output) + "' and another): give it once");
+  o.output = v();
+  if (o.output->empty()) throw UsageError("option " + v.name + " needs a non-empty file name");
+  refuseStandardOutput(v.name, *o.output);
 }
 
-// The first linear-float format's extension: a float file's name in the examples.
-std::string floatExtension() {
-  for (const ImageFormat& format : imageFormats())
-    if (format.linearFloat) return "." + std::string(format.extensions.front());
-  return "";
+void setCrop(R& o, const V& v) {
+  std::string text = v();
+  o.request.crop = parseCropOption(text);
+  if (!o.request.crop)
+    throw UsageError("--crop expects X0,Y0,X1,Y1 (four whole numbers, the pixels [X0,X1) x [Y0,Y1)), got '" +
+                     echoed(text) + "'");
 }
 
-// "PNG, or PPM for FILE.ppm": what the 8-bit heatmap is written as, by name.
-std::string heatmapNamesText() {
-  std::string others;
-  for (const ImageFormat& format : imageFormats())
-    if (!format.linearFloat && &format != &imageFormats().front())
-      others += (others.empty() ? "" : ", ") + std::string(format.name) + " for FILE." +
-                std::string(format.extensions.front());
-  return std::string(imageFormats().front().name) + (others.empty() ? "" : ", or " + others);
+void setHeatmap(R& o, const V& v) {
+  o.comparison.heatmapPath = v();
+  if (o.comparison.heatmapPath->empty()) throw UsageError("option --diff needs a non-empty file name");
+  refuseStandardOutput(v.name, *o.comparison.heatmapPath);
 }
 
-std::string makeUsageText() {
-  const std::string ext = defaultImageExtension(), floatExt = floatExtension();
-  const std::string floats = imageFormatNamesText(FormatsOf::LinearFloat), standard = imageFormatNames().front();
-  return "usage: vkrt [options] SCENE.test [SCENE.test ...]\n"
-         "       vkrt diff [comparison options] A" + ext + " B" + ext + "\n"
-         "       vkrt merge [--allow-gaps] [--strict] -o OUT" + ext + "|OUT" + floatExt + " TILE [TILE ...]   (all " +
-         slashed(FormatsOf::Bytes) + " or all " + slashed(FormatsOf::LinearFloat) + ")\n"
-         "       vkrt merge -o OUT" + floatExt + "|OUT" + ext + " BATCH" + floatExt + " [BATCH" + floatExt + " ...]\n"
-         "       vkrt convert IN OUT   (any of " + imageExtensionsText() + " to any; JPEG in)\n"
-         "       vkrt grade [grade options] REFS/ SUBMISSIONS/|SCENE.test ... -o REPORT/\n"
-         "\n"
-         "Renders CSE167 (and CSE168) scene files to " + imageFormatNamesText() + " images;\n"
-         "compares and converts images.\n"
-         "Several scenes are rendered in one run, one line each, then a summary; the exit\n"
-         "status is then the highest of theirs.\n"
-         "\n"
-         "options:\n"
-         "  -o, --output FILE      write the image to FILE (overrides the scene's 'output');\n" +
-         filled(kHelpIndent, kHelpIndent,
-                imageNamesHelpText("FILE") +
-                    ". An existing FILE is replaced whole, keeping its permissions; a symbolic link is "
-                    "written through. Refused: '-', a file the run reads, a device, FIFO or directory, a "
-                    "file with several hard links") +
-         "  -o, --output DIR/      write each image into DIR (a trailing '/'): under the file name\n"
-         "                         of the scene's 'output', or the scene's stem + " + ext + " without one\n"
-         "  --size WxH             render at W x H pixels instead of the scene's size (same camera)\n"
-         "  --scale F              render at the scene's size times F (rounded, at least 1x1)\n"
-         "  --crop X0,Y0,X1,Y1     render only the pixels [X0,X1) x [Y0,Y1) of the full image (the\n"
-         "                         same pixels as a full render), as an image of the crop's size\n"
-         "                         that records where it lies, for vkrt merge\n"
-         "  --backend vulkan|cpu   renderer: 'vulkan' (default: a compute shader on a GPU, or on\n"
-         "                         the CPU through lavapipe) or 'cpu' (the double-precision reference)\n"
-         "  --device N|NAME        Vulkan device by index or part of its name (see --list-devices);\n"
-         "                         default: a discrete or integrated GPU if present, else the CPU\n"
-         "  --list-devices         list the Vulkan devices and exit\n"
-         "  --validation           enable the Vulkan validation layer (also VKRT_VALIDATION=1)\n"
-         "  --reads auto|texel|storage  how the shader reads the scene (default auto: texel\n"
-         "                         buffers, faster on lavapipe, where the device's limits allow)\n"
-         "  --variant auto|specialized|general  the compiled shader: default auto, specialised\n"
-         "                         where worth its compile (or, on a CPU device, compiled before)\n"
-         "  --maxdepth N           override the scene's maxdepth (fewer reflections: faster, less exact)\n"
-         "  --spp N                path integrators: N samples per pixel instead of the scene's spp\n"
-         "  --seed N               path integrators: the random numbers' seed, 0 to 4294967295\n"
-         "                         (default 0); another seed gives independent samples\n"
-         "  --sampler independent|stratified  path integrators: each sample's numbers independent\n"
-         "                         (default, as the scene rules say) or stratified across a pixel's\n"
-         "                         samples (camera jitter, each bounce's direction and first light\n"
-         "                         sample): less noise\n"
-         "  --estimator scene|best  pathtracer: the scene's importancesampling and\n"
-         "                         nexteventestimation (default), or BRDF sampling and MIS: the\n"
-         "                         same image, usually less noisy\n"
-         "  --time SECONDS         path integrators: render batches of samples until the time is up,\n"
-         "                         then write (at most --spp samples when given, else no limit);\n"
-         "                         the samples taken are reported\n"
-         "  --cutoff auto|on|off   Vulkan: stop mirror paths that can no longer change the 8-bit\n"
-         "                         result (same image); auto: where it can stop paths early\n"
-         "  --no-cutoff            the same as --cutoff off\n"
-         "  --threads N            worker threads for the CPU backend (default: all cores)\n"
-         "  --stats                print a timing breakdown and ray counts on stderr\n"
-         "  --check REF" + ext + "        compare the rendered image with REF" + ext + " (exit 5 when it fails);\n"
-         "                         REF is read before the render (exit 4 when it cannot be)\n"
-         "  --compare              render with both backends (nothing written) and print each\n"
-         "                         one's times and the difference between their images\n"
-         "  --watch                render, then render again each time the scene file changes (one\n"
-         "                         process: the device and compiled shaders kept); a path-traced\n"
-         "                         scene refines with more samples until the next change; Ctrl-C ends\n"
-         "  --dry-run              parse each scene and check its output as a render would (the\n"
-         "                         same errors and exit status), print where its image would go;\n"
-         "                         open no device, render and write nothing\n"
-         "  --strict               every warning is an error, nothing written: the scene's (exit 2:\n"
-         "                         unknown commands, repeated commands and the like, NaN pixels)\n"
-         "                         and the command line's (exit 1: --spp for a Whitted scene, an\n" +
-         filled(kHelpIndent, kHelpIndent, "output name not " + imageExtensionsText() + ")") +
-         "\n"
-         "comparison options (diff, --check and --compare):\n"
-         "  --max-pixels-over S:L  fail when more than L pixels (a count, or a share with %,\n"
-         "                         e.g. 2:0.1%) differ by more than S/255; may be repeated\n"
-         "  --max-diff N           fail when any channel differs by more than N/255\n"
-         "                         (with neither, any difference fails)\n"
-         "  --json                 print the metrics as one JSON object on stdout\n" +
-         filled("  --diff FILE" + ext + "        ", kHelpIndent,
-                "write a heatmap of the differences, with its legend (" + heatmapNamesText() + ")") +
-         "  --diff-scale N         differences of N/255 or more are red in the heatmap (default 16)\n"
-         "\n"
-         "merge: puts crops (--crop) back together into their full image, each where its record\n"
-         "says; tiles of different full images, overlapping tiles, pixels no tile covers (unless\n"
-         "--allow-gaps: they stay black) and a tile without a record are usage errors (1).\n" +
-         filled("", "",
-                floats + " crops merge into linear float (" + floats + ", or " + standard +
-                    " with the recorded gamma); the tiles must be of one kind, and " + floats +
-                    " tiles of one render (the same vkrt-samples record).") +
-         filled("", "",
-                "With sample batches of one path-traced render (" + floats +
-                    " images carrying a vkrt-samples record, rendered with different --seed), merge averages "
-                    "them weighted by their sample counts, into " + floats + " or " + standard +
-                    " (the recorded gamma); batches of different sizes, places or gammas, or sharing samples, "
-                    "are usage errors (1).") +
-         "\n"
-         "grade: each submitted image against the reference of its scene (matched by file name,\n"
-         "any case; a reference may be named ref_SCENE), into a report folder to open in a browser\n"
-         "(REPORT/index.html: a sortable table, a page per comparison) with summary.json and\n"
-         "summary.csv. SUBMISSIONS/ holds a folder per student, or is one student's folder of\n"
-         "images; a SCENE.test given instead is rendered in the run and graded. A new REPORT/, an\n"
-         "empty one or an earlier report is written whole; any other folder is refused.\n"
-         "  --max-pixels-over S:L, --max-diff N   as for diff (with no threshold: any difference fails)\n"
-         "  --max-bias B           fail when |mean(reference - image)| exceeds B (8-bit units)\n"
-         "  --max-variance V       fail when the variance of (image - reference) exceeds V\n"
-         "  --thresholds FILE      per scene: lines 'SCENE OPTIONS...' replace the ones above\n"
-         "  --diff-scale N         as for diff; --backend, --device, --spp, --seed, --threads: for\n"
-         "                         the scenes rendered (--threads also grades on that many)\n"
-         "  exit status: 5 when an image fails or is missing, 4 when one cannot be read, else a\n"
-         "  rendered scene's own (the highest)\n"
-         "\n"
-         "  -q, --quiet            print nothing but errors (no warnings, no progress)\n"
-         "  -h, --help             show this help\n"
-         "  --version              show the version\n"
-         "\n"
-         "exit status:\n"
-         "  0    ok (warnings, if any, on stderr)\n"
-         "  1    usage error: the command line (with --strict: its warnings too), or an output\n"
-         "       that is a file the run reads or writes already (that scene not rendered)\n"
-         "  2    scene error: the scene file cannot be rendered as meant (with --strict: any of\n"
-         "       its warnings); a line over 1 MiB, a file over 1 GiB, a byte that is not text\n"
-         "  3    device error: the Vulkan backend cannot render here (no driver or device, a failed\n"
-         "       call, a scene beyond its limits); --backend cpu may\n"
-         "  4    I/O error: a file cannot be read or written (also an output refused by what it\n"
-         "       is: a directory, device, FIFO, a file with several hard links)\n"
-         "  5    images differ beyond the thresholds (diff, --check, --compare, grade)\n"
-         "  6    out of memory (host or device), also when found before allocating\n"
-         "  70   internal error: a bug in vkrt\n"
-         "  128+N  stopped by signal N (130: Ctrl-C, 143: SIGTERM, 129: SIGHUP); nothing written,\n"
-         "       no temporary file left\n"
-         "  several scenes: the highest of their statuses (a signal stops the run)\n";
-}
+using Section = HelpSection;
 
-}  // namespace
+// The render command's options (and diff's), in --help's order; "did you mean" takes the
+// first of equally near names. Help texts: cli/option_table.h.
+const OptionRow<R> kRenderRows[] = {
+    {"-o, --output", "FILE",
+     "write the image to FILE (overrides the scene's 'output');\n"
+     "\f{image names}. An existing FILE is replaced whole, keeping its permissions; a symbolic link is written "
+     "through. Refused: '-', a file the run reads, a device, FIFO or directory, a file with several hard links",
+     setOutput},
+    {"-o, --output", "DIR/",
+     "write each image into DIR (a trailing '/'): under the file name\n"
+     "of the scene's 'output', or the scene's stem + {ext} without one",
+     nullptr},
+    {"--size", "WxH", "render at W x H pixels instead of the scene's size (same camera)",
+     [](R& o, const V& v) { sizeValue(v(), o.request.width, o.request.height); }},
+    {"--scale", "F", "render at the scene's size times F (rounded, at least 1x1)",
+     [](R& o, const V& v) { o.request.scale = scaleValue(v()); }},
+    {"--crop", "X0,Y0,X1,Y1",
+     "render only the pixels [X0,X1) x [Y0,Y1) of the full image (the\n"
+     "same pixels as a full render), as an image of the crop's size\n"
+     "that records where it lies, for vkrt merge",
+     setCrop},
+    {"--backend", "vulkan|cpu",
+     "renderer: 'vulkan' (default: a compute shader on a GPU, or on\n"
+     "the CPU through lavapipe) or 'cpu' (the double-precision reference)",
+     setBackend},
+    {"--device", "N|NAME",
+     "Vulkan device by index or part of its name (see --list-devices);\n"
+     "default: a discrete or integrated GPU if present, else the CPU",
+     setDevice},
+    {"--list-devices", "", "list the Vulkan devices and exit", [](R& o, const V&) { o.listDevices = true; }},
+    {"--validation", "", "enable the Vulkan validation layer (also VKRT_VALIDATION=1)", setValidation},
+    {"--reads", "auto|texel|storage",
+     "how the shader reads the scene (default auto: texel\n"
+     "buffers, faster on lavapipe, where the device's limits allow)",
+     [](R& o, const V& v) {
+       o.request.reads = choice<SceneReads>(
+           v(), {{"auto", SceneReads::Auto}, {"texel", SceneReads::Texel}, {"storage", SceneReads::Storage}},
+           "--reads", "auto, texel or storage");
+     }},
+    {"--no-specialize", "", "the same as --variant general (for the benchmark and tests)",
+     [](R& o, const V&) { o.request.variant = ShaderVariant::General; }, Section::Hidden},
+    {"--variant", "auto|specialized|general",
+     "the compiled shader: default auto, specialised\n"
+     "where worth its compile (or, on a CPU device, compiled before)",
+     [](R& o, const V& v) {
+       o.request.variant = choice<ShaderVariant>(v(),
+                                                 {{"auto", ShaderVariant::Auto},
+                                                  {"specialized", ShaderVariant::Specialized},
+                                                  {"general", ShaderVariant::General}},
+                                                 "--variant", "auto, specialized or general");
+     }},
+    {"--maxdepth", "N", "override the scene's maxdepth (fewer reflections: faster, less exact)",
+     [](R& o, const V& v) { o.request.maxDepth = integerValue(v.name, v(), 0, 1000000); }},
+    {"--spp", "N", "path integrators: N samples per pixel instead of the scene's spp", setSpp},
+    {"--seed", "N",
+     "path integrators: the random numbers' seed, 0 to 4294967295\n"
+     "(default 0); another seed gives independent samples",
+     setSeed},
+    {"--sampler", "independent|stratified",
+     "path integrators: each sample's numbers independent\n"
+     "(default, as the scene rules say) or stratified across a pixel's\n"
+     "samples (camera jitter, each bounce's direction and first light\n"
+     "sample): less noise",
+     [](R& o, const V& v) {
+       o.request.stratified =
+           choice<bool>(v(), {{"stratified", true}, {"independent", false}}, "--sampler", "independent or stratified");
+     }},
+    {"--estimator", "scene|best",
+     "pathtracer: the scene's importancesampling and\n"
+     "nexteventestimation (default), or BRDF sampling and MIS: the\n"
+     "same image, usually less noisy",
+     [](R& o, const V& v) {
+       o.request.estimator =
+           choice<Estimator>(v(), {{"scene", Estimator::Scene}, {"best", Estimator::Best}}, "--estimator", "scene or best");
+     }},
+    {"--time", "SECONDS",
+     "path integrators: render batches of samples until the time is up,\n"
+     "then write (at most --spp samples when given, else no limit);\n"
+     "the samples taken are reported",
+     [](R& o, const V& v) { o.request.timeLimitSeconds = timeValue(v()); }},
+    {"--cutoff", "auto|on|off",
+     "Vulkan: stop mirror paths that can no longer change the 8-bit\n"
+     "result (same image); auto: where it can stop paths early",
+     [](R& o, const V& v) {
+       o.request.cutoff = choice<Cutoff>(v(), {{"auto", Cutoff::Auto}, {"on", Cutoff::On}, {"off", Cutoff::Off}},
+                                         "--cutoff", "auto, on or off");
+     }},
+    {"--no-cutoff", "", "the same as --cutoff off", [](R& o, const V&) { o.request.cutoff = Cutoff::Off; }},
+    {"--threads", "N", "worker threads for the CPU backend (default: all cores)", setThreads},
+    {"--step-budget", "N", "the loop budget of a dispatch (for the tests of the budget)",
+     [](R& o, const V& v) { o.request.stepBudget = static_cast<std::uint32_t>(integerValue(v.name, v(), 1, 8192)); },
+     Section::Hidden},
+    {"--stats", "", "print a timing breakdown and ray counts on stderr", [](R& o, const V&) { o.stats = true; }},
+    {"--check", "REF{ext}",
+     "compare the rendered image with REF{ext} (exit 5 when it fails);\n"
+     "REF is read before the render (exit 4 when it cannot be)",
+     [](R& o, const V& v) { o.checkAgainst = v(); }},
+    {"--compare", "",
+     "render with both backends (nothing written) and print each\n"
+     "one's times and the difference between their images",
+     [](R& o, const V&) { o.compare = true; }},
+    {"--watch", "",
+     "render, then render again each time the scene file changes (one\n"
+     "process: the device and compiled shaders kept); a path-traced\n"
+     "scene refines with more samples until the next change; Ctrl-C ends",
+     [](R& o, const V&) { o.watch = true; }},
+    {"--dry-run", "",
+     "parse each scene and check its output as a render would (the\n"
+     "same errors and exit status), print where its image would go;\n"
+     "open no device, render and write nothing",
+     [](R& o, const V&) { o.request.dryRun = true; }},
+    {"--strict", "",
+     "every warning is an error, nothing written: the scene's (exit 2:\n"
+     "unknown commands, repeated commands and the like, NaN pixels)\n"
+     "and the command line's (exit 1: --spp for a Whitted scene, an\n"
+     "\foutput name not {extensions})",
+     [](R& o, const V&) { o.request.strict = true; }},
+    {"--max-pixels-over", "S:L",
+     "fail when more than L pixels (a count, or a share with %,\n"
+     "e.g. 2:0.1%) differ by more than S/255; may be repeated",
+     [](R& o, const V& v) { o.comparison.thresholds.pixelsOver.push_back(parsePixelThreshold(v())); },
+     Section::Comparison},
+    {"--max-diff", "N",
+     "fail when any channel differs by more than N/255\n"
+     "(with neither, any difference fails)",
+     [](R& o, const V& v) { o.comparison.thresholds.maxDiff = integerValue(v.name, v(), 0, 255); },
+     Section::Comparison},
+    {"--json", "", "print the metrics as one JSON object on stdout", [](R& o, const V&) { o.comparison.json = true; },
+     Section::Comparison},
+    {"--diff", "FILE{ext}", "\fwrite a heatmap of the differences, with its legend ({heatmap names})", setHeatmap,
+     Section::Comparison},
+    {"--diff-scale", "N", "differences of N/255 or more are red in the heatmap (default 16)",
+     [](R& o, const V& v) { o.comparison.heatmapScale = integerValue(v.name, v(), 1, 255); }, Section::Comparison},
+    {"-q, --quiet", "", "print nothing but errors (no warnings, no progress)", setQuiet, Section::Last},
+    {"-h, --help", "", "show this help", setHelp, Section::Last},
+    {"--version", "", "show the version", [](R& o, const V&) { o.version = true; }, Section::Last},
+};
 
-const char* usageText() {
-  static const std::string text = makeUsageText();
-  return text.c_str();
-}
+// merge's options: its usage line and paragraphs in --help name them.
+const OptionRow<MergeOptions> kMergeRows[] = {
+    {"-o, --output", "OUT{ext}", "",
+     [](MergeOptions& o, const V& v) {
+       if (!o.output.empty())
+         throw UsageError("-o given twice ('" + abbreviated(o.output) + "' and another): merge writes one image");
+       o.output = v();
+       if (o.output.empty()) throw UsageError("option -o needs a non-empty file name");
+       refuseStandardOutput("-o", o.output);
+     },
+     Section::Elsewhere},
+    {"--allow-gaps", "", "", [](MergeOptions& o, const V&) { o.allowGaps = true; }, Section::Elsewhere},
+    {"--strict", "", "", [](MergeOptions& o, const V&) { o.strict = true; }, Section::Elsewhere},
+    {"-q, --quiet", "", "", setQuiet, Section::Elsewhere},
+    {"-h, --help", "", "", setHelp, Section::Elsewhere},
+};
 
-namespace {
+// convert's options: -q and -h, as the render command's.
+const OptionRow<ConvertOptions> kConvertRows[] = {
+    {"-q, --quiet", "", "", setQuiet, Section::Elsewhere},
+    {"-h, --help", "", "", setHelp, Section::Elsewhere},
+};
 
-// The subcommands, and the long options of --help (without their dashes), for "did you
-// mean" after a typo.
+// grade's options; those of the render it shares are in the render command's part of --help.
+const OptionRow<GradeOptions> kGradeRows[] = {
+    {"-o, --output", "REPORT/", "",
+     [](GradeOptions& o, const V& v) {
+       o.output = v();
+       if (o.output.empty()) throw UsageError("option -o needs a non-empty folder name");
+     },
+     Section::Elsewhere},
+    {"--max-pixels-over", "S:L", "as for diff (with no threshold: any difference fails)",
+     [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade,
+     "--max-pixels-over S:L, --max-diff N"},
+    {"--max-diff", "N", "", [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); },
+     Section::Grade},
+    {"--max-bias", "B", "fail when |mean(reference - image)| exceeds B (8-bit units)",
+     [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade},
+    {"--max-variance", "V", "fail when the variance of (image - reference) exceeds V",
+     [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade},
+    {"--thresholds", "FILE", "per scene: lines 'SCENE OPTIONS...' replace the ones above",
+     [](GradeOptions& o, const V& v) { o.thresholdsFile = v(); }, Section::Grade},
+    {"--diff-scale", "N",
+     "as for diff; --backend, --device, --spp, --seed, --threads: for\n"
+     "the scenes rendered (--threads also grades on that many)",
+     [](GradeOptions& o, const V& v) { o.heatmapScale = integerValue(v.name, v(), 1, 255); }, Section::Grade},
+    {"--backend", "vulkan|cpu", "", setBackend, Section::Elsewhere},
+    {"--device", "N|NAME", "", setDevice, Section::Elsewhere},
+    {"--spp", "N", "", setSpp, Section::Elsewhere},
+    {"--seed", "N", "", setSeed, Section::Elsewhere},
+    {"--threads", "N", "", setThreads, Section::Elsewhere},
+    {"--validation", "", "", setValidation, Section::Elsewhere},
+    {"-q, --quiet", "", "", setQuiet, Section::Elsewhere},
+    {"-h, --help", "", "", setHelp, Section::Elsewhere},
+};
+
+// The subcommands, for "did you mean" after a typo.
 constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert", "grade"};
-constexpr std::string_view kLongOptions[] = {
-    "output", "size", "scale", "crop", "backend", "device", "list-devices", "validation", "reads", "variant",
-    "maxdepth", "spp", "seed", "sampler", "estimator", "time", "cutoff", "no-cutoff", "threads", "stats", "check", "compare", "strict",
-    "max-pixels-over", "max-diff", "json", "diff", "diff-scale", "quiet", "help", "version", "watch", "dry-run"};
-constexpr std::string_view kMergeLongOptions[] = {"output", "allow-gaps", "strict", "quiet", "help"};
-constexpr std::string_view kConvertLongOptions[] = {"quiet", "help"};
-constexpr std::string_view kGradeLongOptions[] = {"output", "thresholds", "max-pixels-over", "max-diff", "max-bias",
-                                                  "max-variance", "diff-scale", "backend", "device", "spp", "seed",
-                                                  "threads", "validation", "quiet", "help"};
-
-// "unknown option '--bakcend'; did you mean '--backend'?": the option without its dashes
-// (and without =VALUE) against the long options.
-std::string unknownOption(const std::string& what, const std::string& option, const std::string& note,
-                          std::span<const std::string_view> known) {
-  std::string_view name = option;
-  name = name.substr(0, name.find('='));
-  name.remove_prefix(std::min(name.find_first_not_of('-'), name.size()));
-  return "unknown " + what + " '" + echoed(option) + "'" + (note.empty() ? "" : " " + note) +
-         didYouMean(name, known, "--");
-}
 
 bool exists(const std::string& path) {
   struct stat st {};
@@ -267,449 +299,78 @@ void refuseImagesAsScenes(const std::vector<std::string>& scenes) {
                        "vkrt merge -o OUT TILE ...)");
 }
 
-// An integer option value in [lo, hi].
-int integerValue(const std::string& option, const std::string& v, int lo, int hi) {
-  int n = 0;
-  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-  if (ec != std::errc() || end != v.data() + v.size() || n < lo || n > hi)
-    throw UsageError(option + " expects an integer from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                     ", got '" + echoed(v) + "'");
-  return n;
+// VKRT_VALIDATION=1 is --validation.
+bool validationFromEnvironment() {
+  const char* v = std::getenv("VKRT_VALIDATION");
+  return v && std::string(v) == "1";
 }
 
-// --size WxH, each side from 1 to kMaxImageEdge.
-void sizeValue(const std::string& v, int& width, int& height) {
-  auto x = v.find('x');
-  auto side = [&](const std::string& s) {
-    int n = 0;
-    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
-    return ec == std::errc() && end == s.data() + s.size() && n >= 1 && n <= kMaxImageEdge ? n : 0;
-  };
-  if (x != std::string::npos) {
-    width = side(v.substr(0, x));
-    height = side(v.substr(x + 1));
-  }
-  if (x == std::string::npos || width == 0 || height == 0)
-    throw UsageError("--size expects WIDTHxHEIGHT, each from 1 to " + std::to_string(kMaxImageEdge) +
-                     " (e.g. 320x240), got '" + echoed(v) + "'");
-}
-
-// --scale F: a finite number greater than 0.
-double scaleValue(const std::string& v) {
-  double f = 0;
-  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
-  if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || !(f > 0))
-    throw UsageError("--scale expects a number greater than 0 (e.g. 0.5), got '" + echoed(v) + "'");
-  return f;
-}
-
-// --seed N: a whole number from 0 to 2^32 - 1.
-std::uint32_t seedValue(const std::string& v) {
-  std::uint32_t n = 0;
-  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-  if (ec != std::errc() || end != v.data() + v.size())
-    throw UsageError("--seed expects a whole number from 0 to 4294967295, got '" + echoed(v) + "'");
-  return n;
-}
-
-// --time SECONDS: a finite number greater than 0, at most a year.
-double timeValue(const std::string& v) {
-  double f = 0;
-  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
-  if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || !(f > 0) || f > 31536000.0)
-    throw UsageError("--time expects seconds, a number greater than 0 and at most a year, 31536000 (e.g. 2.5), got '" +
-                     echoed(v) + "'");
-  return f;
-}
-
-// An output named '-': vkrt writes images into files only (its reports go to stdout).
-void refuseStandardOutput(const std::string& option, const std::string& path) {
-  if (path == "-")
-    throw UsageError(option + " -: vkrt writes images into files, not to standard output (where its reports go); "
-                     "name a file ('./-' for a file named '-')");
-}
-
-// "output file 'x.bmp' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name":
-// `what` at `path`, which may be named as any of `which`.
-std::string unnamedWarning(const std::string& what, const std::string& path, FormatsOf which) {
-  return what + " '" + abbreviated(path) + "' is not named " + imageExtensionsText(which) + ": vkrt writes " +
-         std::string(imageFormats().front().name) + ", under that name";
-}
-
-// Whether an output path gets unnamedWarning: named as no image format, and not a folder
-// (ends in '/', or is one) or a scene file, whose refusal by the write says so alone.
-bool warnsOfItsName(const std::string& path) {
-  std::error_code ec;
-  return !hasImageExtension(path) && path.back() != '/' && !std::filesystem::is_directory(path, ec) &&
-         !namedAsSceneFile(path);
-}
-
-// vkrt merge [--allow-gaps] -o OUT.png TILE.png ...
-Options parseMergeOptions(const std::vector<std::string>& args) {
+// args[first...] against `rows`; an unknown option is "unknown WHAT '...' NOTE; did you mean".
+template <class Options>
+Options parsedWith(std::span<const OptionRow<Options>> rows, const std::vector<std::string>& args, std::size_t first,
+                   std::vector<std::string>& operands, const std::string& what, const std::string& note) {
   Options o;
-  o.mergeCommand = true;
-  bool endOfOptions = false;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
-      o.mergeTiles.push_back(a);
-    } else if (a == "--") {
-      endOfOptions = true;
-    } else if (a == "-o" || a == "--output" || a.rfind("--output=", 0) == 0) {
-      if (!o.mergeOutput.empty())
-        throw UsageError("-o given twice ('" + abbreviated(o.mergeOutput) + "' and another): merge writes one image");
-      if (a.rfind("--output=", 0) == 0) {
-        o.mergeOutput = a.substr(9);
-      } else {
-        if (i + 1 >= args.size()) throw UsageError("option " + echoed(a) + " needs a value");
-        o.mergeOutput = args[++i];
-      }
-      if (o.mergeOutput.empty()) throw UsageError("option -o needs a non-empty file name");
-      refuseStandardOutput("-o", o.mergeOutput);
-    } else if (a == "--allow-gaps") {
-      o.allowGaps = true;
-    } else if (a == "--strict") {
-      o.request.strict = true;
-    } else if (a == "-q" || a == "--quiet") {
-      o.quiet = true;
-    } else if (a == "-h" || a == "--help") {
-      o.help = true;
-    } else {
-      throw UsageError(unknownOption("merge option", a,
-                                     "(merge takes -o OUT" + defaultImageExtension() + ", --allow-gaps, --strict, -q)",
-                                     kMergeLongOptions));
-    }
-  }
-  if (o.help) return o;
-  const std::string ext = defaultImageExtension(), example = "vkrt merge -o OUT" + ext + " TILE" + ext + " ...";
-  if (o.mergeOutput.empty()) throw UsageError("merge needs the output image: " + example);
-  if (o.mergeTiles.empty()) throw UsageError("merge needs at least one tile: " + example);
-  if (warnsOfItsName(o.mergeOutput)) {
-    std::string w = unnamedWarning("output file", o.mergeOutput, FormatsOf::All);
-    if (o.request.strict) throw UsageError(w + " [--strict]");
-    o.warnings.push_back(w);
-  }
+  const std::vector<std::string_view> names = suggestedNames(rows);
+  parseArguments<Options>(
+      args, first, rows, o, [&](const std::string& a) { operands.push_back(a); },
+      [&](const std::string& a) { throw UsageError(unknownOption(what, a, note, names)); });
   return o;
 }
 
-// vkrt convert [-q] IN OUT
-Options parseConvertOptions(const std::vector<std::string>& args) {
-  Options o;
-  o.convertCommand = true;
-  std::vector<std::string> files;
-  bool endOfOptions = false;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
-      files.push_back(a);
-    } else if (a == "--") {
-      endOfOptions = true;
-    } else if (a == "-q" || a == "--quiet") {
-      o.quiet = true;
-    } else if (a == "-h" || a == "--help") {
-      o.help = true;
-    } else {
-      throw UsageError(unknownOption("convert option", a, "(convert takes -q)", kConvertLongOptions));
-    }
-  }
-  if (o.help) return o;
-  const std::string example = "vkrt convert IN" + floatExtension() + " OUT" + defaultImageExtension();
-  if (files.size() != 2) throw UsageError("convert needs two images, the one to read and the one to write: " + example);
-  o.convertInput = files[0];
-  o.convertOutput = files[1];
-  for (const std::string& f : files) refuseStandardOutput("convert", f);
-  if (!hasImageExtension(o.convertOutput))
-    throw UsageError("convert: '" + echoed(o.convertOutput) + "' is not named " + imageExtensionsText() +
-                     ": the name says which format to write");
-  return o;
-}
-
-// The options of the render that both the render commands and grade take: --backend,
-// --device, --spp, --seed, --threads; `value()` takes the option's value. False for another
-// option.
-bool applyRenderOption(const std::string& name, const std::function<std::string()>& value, RenderRequest& request) {
-  if (name == "--backend") {
-    std::string b = value();
-    if (b == "cpu")
-      request.backend = Backend::Cpu;
-    else if (b == "vulkan")
-      request.backend = Backend::Vulkan;
-    else
-      throw UsageError("unknown backend '" + echoed(b) + "' (expected: vulkan or cpu)");
-  } else if (name == "--device") {
-    request.device = value();
-    if (request.device.empty()) throw UsageError("--device needs an index or a name");
-  } else if (name == "--spp") {
-    request.spp = static_cast<std::uint64_t>(integerValue(name, value(), 1, 1 << 30));
-  } else if (name == "--seed") {
-    request.seed = seedValue(value());
-  } else if (name == "--threads") {
-    request.threads = integerValue(name, value(), 1, 1024);
-  } else {
-    return false;
-  }
-  return true;
-}
-
-// vkrt grade [options] REFS/ SUBMISSIONS/|SCENE.test ... -o REPORT/
-Options parseGradeOptions(const std::vector<std::string>& args) {
-  Options o;
-  o.gradeCommand = true;
-  o.request.variant = ShaderVariant::Auto;
-  std::vector<std::string> operands;
-  bool endOfOptions = false;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
-      operands.push_back(a);
-      continue;
-    }
-    if (a == "--") {
-      endOfOptions = true;
-      continue;
-    }
-    std::string name = a, inlineValue;
-    bool hasInline = false;
-    if (auto eq = a.find('='); a.rfind("--", 0) == 0 && eq != std::string::npos) {
-      name = a.substr(0, eq), inlineValue = a.substr(eq + 1), hasInline = true;
-    }
-    auto take = [&]() -> std::string {
-      if (hasInline) return inlineValue;
-      if (i + 1 >= args.size()) throw UsageError("option " + echoed(name) + " needs a value");
-      return args[++i];
-    };
-    if (name == "-o" || name == "--output") {
-      o.gradeOutput = take();
-      if (o.gradeOutput.empty()) throw UsageError("option -o needs a non-empty folder name");
-    } else if (name == "--thresholds") {
-      o.gradeThresholdsFile = take();
-    } else if (name == "--max-pixels-over" || name == "--max-diff" || name == "--max-bias" ||
-               name == "--max-variance") {
-      applyThresholdOption(name, take(), o.gradeThresholds);
-    } else if (name == "--diff-scale") {
-      o.heatmapScale = integerValue(name, take(), 1, 255);
-    } else if (applyRenderOption(name, take, o.request)) {
-    } else if (a == "--validation") {
-      o.request.validation = true;
-    } else if (a == "-q" || a == "--quiet") {
-      o.quiet = true;
-    } else if (a == "-h" || a == "--help") {
-      o.help = true;
-    } else {
-      throw UsageError(unknownOption("grade option", a, "", kGradeLongOptions));
-    }
-  }
-  if (const char* v = std::getenv("VKRT_VALIDATION"); v && std::string(v) == "1") o.request.validation = true;
-  if (o.help) return o;
-  const std::string example = "vkrt grade REFS/ SUBMISSIONS/ -o REPORT/";
-  if (operands.size() < 2)
-    throw UsageError("grade needs the references' folder and at least one folder of submissions (or scene files): " +
-                     example);
-  if (o.gradeOutput.empty()) throw UsageError("grade needs the report's folder: " + example);
-  refuseStandardOutput("-o", o.gradeOutput);
-  o.gradeReferences = operands[0];
-  o.gradeInputs.assign(operands.begin() + 1, operands.end());
-  for (const std::string& in : o.gradeInputs)
-    if (std::optional<std::string> kind = imageKind(in); kind && !isDirectory(in))
-      throw UsageError("grade: " + abbreviated(in) + " is " + withArticle(*kind) +
-                       " image; give the folder that holds the submission's images (or a scene file to render)");
-  return o;
-}
-
-}  // namespace
-
-Options parseOptions(const std::vector<std::string>& args) {
-  Options o;
-  std::vector<std::string> scenes;
-  std::optional<std::string> output;   // -o
-  std::vector<std::string> images;   // diff's operands
-  bool endOfOptions = false;
-  std::size_t first = 0;
-  if (!args.empty() && args[0] == "diff") {
-    o.diffCommand = true;
-    first = 1;
-  }
-  if (!args.empty() && args[0] == "merge") return parseMergeOptions(args);
-  if (!args.empty() && args[0] == "convert") return parseConvertOptions(args);
-  if (!args.empty() && args[0] == "grade") return parseGradeOptions(args);
-  refuseMistypedSubcommand(args);
-  for (std::size_t i = first; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](const std::string& name) -> const std::string& {
-      if (i + 1 >= args.size()) throw UsageError("option " + echoed(name) + " needs a value");
-      return args[++i];
-    };
-    // --name=value is accepted as well as --name value.
-    std::string name = a, inlineValue;
-    bool hasInline = false;
-    if (!endOfOptions && a.rfind("--", 0) == 0) {
-      auto eq = a.find('=');
-      if (eq != std::string::npos) {
-        name = a.substr(0, eq);
-        inlineValue = a.substr(eq + 1);
-        hasInline = true;
-      }
-    }
-    auto take = [&](const std::string& n) -> std::string { return hasInline ? inlineValue : value(n); };
-    if ((endOfOptions || a.empty() || a[0] != '-' || a == "-") && o.diffCommand) {
-      images.push_back(a);
-    } else if (endOfOptions || a.empty() || a[0] != '-' || a == "-") {
-      scenes.push_back(a);
-    } else if (a == "--") {
-      endOfOptions = true;
-    } else if (name == "-o" || name == "--output") {
-      if (output) throw UsageError("-o given twice ('" + abbreviated(*output) + "' and another): give it once");
-      output = take(name);
-      if (output->empty()) throw UsageError("option " + name + " needs a non-empty file name");
-      refuseStandardOutput(name, *output);
-    } else if (name == "--size") {
-      sizeValue(take(name), o.request.width, o.request.height);
-    } else if (name == "--scale") {
-      o.request.scale = scaleValue(take(name));
-    } else if (name == "--crop") {
-      std::string v = take(name);
-      o.request.crop = parseCropOption(v);
-      if (!o.request.crop)
-        throw UsageError("--crop expects X0,Y0,X1,Y1 (four whole numbers, the pixels [X0,X1) x [Y0,Y1)), got '" +
-                         echoed(v) + "'");
-    } else if (applyRenderOption(name, [&] { return take(name); }, o.request)) {
-    } else if (a == "--list-devices") {
-      o.listDevices = true;
-    } else if (name == "--reads") {
-      std::string r = take(name);
-      if (r == "auto")
-        o.request.reads = SceneReads::Auto;
-      else if (r == "texel")
-        o.request.reads = SceneReads::Texel;
-      else if (r == "storage")
-        o.request.reads = SceneReads::Storage;
-      else
-        throw UsageError("unknown --reads '" + echoed(r) + "' (expected: auto, texel or storage)");
-    } else if (a == "--no-specialize") {   // for the benchmark and tests; not in --help
-      o.request.variant = ShaderVariant::General;
-    } else if (name == "--variant") {
-      std::string v = take(name);
-      if (v == "auto")
-        o.request.variant = ShaderVariant::Auto;
-      else if (v == "specialized")
-        o.request.variant = ShaderVariant::Specialized;
-      else if (v == "general")
-        o.request.variant = ShaderVariant::General;
-      else
-        throw UsageError("unknown --variant '" + echoed(v) + "' (expected: auto, specialized or general)");
-    } else if (name == "--sampler") {
-      std::string v = take(name);
-      if (v == "stratified")
-        o.request.stratified = true;
-      else if (v == "independent")
-        o.request.stratified = false;
-      else
-        throw UsageError("unknown --sampler '" + echoed(v) + "' (expected: independent or stratified)");
-    } else if (name == "--estimator") {
-      std::string v = take(name);
-      if (v == "scene")
-        o.request.estimator = Estimator::Scene;
-      else if (v == "best")
-        o.request.estimator = Estimator::Best;
-      else
-        throw UsageError("unknown --estimator '" + echoed(v) + "' (expected: scene or best)");
-    } else if (name == "--time") {
-      o.request.timeLimitSeconds = timeValue(take(name));
-    } else if (name == "--maxdepth") {
-      o.request.maxDepth = integerValue(name, take(name), 0, 1000000);
-    } else if (a == "--no-cutoff") {
-      o.request.cutoff = Cutoff::Off;
-    } else if (name == "--cutoff") {
-      std::string c = take(name);
-      if (c == "auto") o.request.cutoff = Cutoff::Auto;
-      else if (c == "on") o.request.cutoff = Cutoff::On;
-      else if (c == "off") o.request.cutoff = Cutoff::Off;
-      else throw UsageError("unknown --cutoff '" + echoed(c) + "' (expected: auto, on or off)");
-    } else if (a == "--validation") {
-      o.request.validation = true;
-    } else if (name == "--step-budget") {   // for tests of the loop budget; not in --help
-      o.request.stepBudget = static_cast<std::uint32_t>(integerValue(name, take(name), 1, 8192));
-    } else if (a == "--compare") {
-      o.compare = true;
-    } else if (a == "--watch") {
-      o.watch = true;
-    } else if (a == "--dry-run") {
-      o.request.dryRun = true;
-    } else if (name == "--check") {
-      o.checkAgainst = take(name);
-    } else if (name == "--max-pixels-over") {
-      o.thresholds.pixelsOver.push_back(parsePixelThreshold(take(name)));
-    } else if (name == "--max-diff") {
-      o.thresholds.maxDiff = integerValue(name, take(name), 0, 255);
-    } else if (a == "--json") {
-      o.json = true;
-    } else if (name == "--diff") {
-      o.heatmapPath = take(name);
-      if (o.heatmapPath->empty()) throw UsageError("option --diff needs a non-empty file name");
-      refuseStandardOutput(name, *o.heatmapPath);
-    } else if (name == "--diff-scale") {
-      o.heatmapScale = integerValue(name, take(name), 1, 255);
-    } else if (a == "--strict") {
-      o.request.strict = true;
-    } else if (a == "--stats") {
-      o.stats = true;
-    } else if (a == "-q" || a == "--quiet") {
-      o.quiet = true;
-    } else if (a == "-h" || a == "--help") {
-      o.help = true;
-    } else if (a == "--version") {
-      o.version = true;
-    } else {
-      throw UsageError(unknownOption("option", a, "", kLongOptions));
-    }
-  }
-  if (const char* v = std::getenv("VKRT_VALIDATION"); v && std::string(v) == "1") o.request.validation = true;
-  if (o.heatmapPath) {
-    if (holdsLinearFloat(*o.heatmapPath))
-      throw UsageError("--diff " + abbreviated(*o.heatmapPath) + ": the heatmap is an 8-bit image; name it " +
+// The render command line (also diff's, from args[first]): the options, the heatmap checked.
+R parseRenderArguments(const std::vector<std::string>& args, std::size_t first, std::vector<std::string>& operands) {
+  R o = parsedWith(renderOptionRows(), args, first, operands, "option", "");
+  if (validationFromEnvironment()) o.request.validation = true;
+  if (const std::optional<std::string>& heatmap = o.comparison.heatmapPath) {
+    if (holdsLinearFloat(*heatmap))
+      throw UsageError("--diff " + abbreviated(*heatmap) + ": the heatmap is an 8-bit image; name it " +
                        imageExtensionsText(FormatsOf::Bytes));
-    if (warnsOfItsName(*o.heatmapPath)) {
-      std::string w = unnamedWarning("heatmap file", *o.heatmapPath, FormatsOf::Bytes);
-      if (o.request.strict) throw UsageError(w + " [--strict]");
-      o.warnings.push_back(w);
-    }
+    warnOfItsName("heatmap file", *heatmap, FormatsOf::Bytes, o.request.strict, o.warnings);
   }
-  if (o.diffCommand) {
-    if (images.size() != 2)
-      throw UsageError("diff needs two images: vkrt diff A" + defaultImageExtension() + " B" + defaultImageExtension());
-    o.diffA = images[0];
-    o.diffB = images[1];
-    return o;
-  }
-  refuseImagesAsScenes(scenes);
-  bool comparing = o.thresholds.any() || o.json || o.heatmapPath;
+  return o;
+}
+
+// vkrt diff [options] A B
+DiffOptions parseDiffOptions(const std::vector<std::string>& args) {
+  std::vector<std::string> images;
+  R o = parseRenderArguments(args, 1, images);
+  if (images.size() != 2)
+    throw UsageError("diff needs two images: vkrt diff A" + defaultImageExtension() + " B" + defaultImageExtension());
+  DiffOptions d;
+  static_cast<CommonOptions&>(d) = o;
+  d.comparison = o.comparison;
+  d.a = images[0];
+  d.b = images[1];
+  return d;
+}
+
+// The options that do not go together, and the comparison options without a comparison.
+void refuseCombinations(const R& o, const std::vector<std::string>& scenes) {
+  const bool comparing = o.comparison.thresholds.any() || o.comparison.json || o.comparison.heatmapPath;
   if (comparing && !o.checkAgainst && !o.compare)
     throw UsageError("--max-pixels-over, --max-diff, --json and --diff need --check REF" + defaultImageExtension() +
                      " or --compare (or vkrt diff)");
   if (o.compare && o.checkAgainst) throw UsageError("--compare and --check do not go together");
-  if (o.compare && output)
+  if (o.compare && o.output)
     throw UsageError("--compare writes no image (it renders with both backends and compares them): -o " +
-                     abbreviated(*output) + " does not go with it");
+                     abbreviated(*o.output) + " does not go with it");
   if (o.request.width > 0 && o.request.scale > 0) throw UsageError("--size and --scale do not go together");
-  if (output && output->back() == '/') {
-    o.request.outputDir = *output;
-  } else if (output) {
-    if (scenes.size() > 1)
-      throw UsageError("-o " + abbreviated(*output) + " names one file, for " + std::to_string(scenes.size()) +
-                       " scenes: give a folder (-o DIR/, with the '/') or leave -o out");
-    o.request.output = *output;
-    if (warnsOfItsName(*output)) {
-      std::string w = unnamedWarning("output file", *output, FormatsOf::All);
-      if (o.request.strict) throw UsageError(w + " [--strict]");
-      o.warnings.push_back(w);
-    }
-  }
+  if (o.output && o.output->back() != '/' && scenes.size() > 1)
+    throw UsageError("-o " + abbreviated(*o.output) + " names one file, for " + std::to_string(scenes.size()) +
+                     " scenes: give a folder (-o DIR/, with the '/') or leave -o out");
+}
+
+// The modes that take one scene, or that do not go with others.
+void refuseModeCombinations(const R& o, const std::vector<std::string>& scenes) {
   if (scenes.size() > 1 && (o.compare || o.checkAgainst || o.watch))
     throw UsageError(std::string(o.compare ? "--compare" : o.watch ? "--watch" : "--check") + " takes one scene, got " +
                      std::to_string(scenes.size()));
-  if (o.watch && (o.compare || o.checkAgainst || o.json || o.heatmapPath))
+  if (o.watch && (o.compare || o.checkAgainst || o.comparison.json || o.comparison.heatmapPath))
     throw UsageError(std::string("--watch renders and writes the image at each change; ") +
-                     (o.compare ? "--compare" : o.checkAgainst ? "--check" : o.json ? "--json" : "--diff") +
+                     (o.compare        ? "--compare"
+                      : o.checkAgainst ? "--check"
+                      : o.comparison.json ? "--json"
+                                          : "--diff") +
                      " does not go with it");
   if (o.request.dryRun && (o.watch || o.compare || o.checkAgainst))
     throw UsageError(std::string("--dry-run renders nothing; ") +
@@ -719,12 +380,117 @@ Options parseOptions(const std::vector<std::string>& args) {
                      "render as many as it can in the time: give --spp instead");
   if (o.watch && o.request.timeLimitSeconds > 0)
     throw UsageError("--watch refines a path-traced image until the next change; --time does not go with it");
+}
+
+// vkrt [options] SCENE.test ...
+RenderOptions parseRenderOptions(const std::vector<std::string>& args) {
+  refuseMistypedSubcommand(args);
+  std::vector<std::string> scenes;
+  R o = parseRenderArguments(args, 0, scenes);
+  refuseImagesAsScenes(scenes);
+  refuseCombinations(o, scenes);
+  if (o.output && o.output->back() == '/') {
+    o.request.outputDir = *o.output;
+  } else if (o.output) {
+    o.request.output = *o.output;
+    warnOfItsName("output file", *o.output, FormatsOf::All, o.request.strict, o.warnings);
+  }
+  refuseModeCombinations(o, scenes);
   if (!o.help && !o.version && !o.listDevices) {
     if (scenes.empty()) throw UsageError("no scene file given");
     o.request.scenePath = scenes.front();
     o.scenes = scenes;
   }
+  return std::move(static_cast<RenderOptions&>(o));
+}
+
+// vkrt merge [--allow-gaps] -o OUT.png TILE.png ...
+MergeOptions parseMergeOptions(const std::vector<std::string>& args) {
+  std::vector<std::string> tiles;
+  MergeOptions o = parsedWith(mergeOptionRows(), args, 1, tiles, "merge option",
+                              "(merge takes -o OUT" + defaultImageExtension() + ", --allow-gaps, --strict, -q)");
+  o.tiles = tiles;
+  if (o.help) return o;
+  const std::string ext = defaultImageExtension(), example = "vkrt merge -o OUT" + ext + " TILE" + ext + " ...";
+  if (o.output.empty()) throw UsageError("merge needs the output image: " + example);
+  if (o.tiles.empty()) throw UsageError("merge needs at least one tile: " + example);
+  warnOfItsName("output file", o.output, FormatsOf::All, o.strict, o.warnings);
   return o;
+}
+
+// vkrt convert [-q] IN OUT
+ConvertOptions parseConvertOptions(const std::vector<std::string>& args) {
+  std::vector<std::string> files;
+  ConvertOptions o = parsedWith(convertOptionRows(), args, 1, files, "convert option", "(convert takes -q)");
+  if (o.help) return o;
+  const std::string example = "vkrt convert IN" + floatExtension() + " OUT" + defaultImageExtension();
+  if (files.size() != 2) throw UsageError("convert needs two images, the one to read and the one to write: " + example);
+  o.input = files[0];
+  o.output = files[1];
+  for (const std::string& f : files) refuseStandardOutput("convert", f);
+  if (!hasImageExtension(o.output))
+    throw UsageError("convert: '" + echoed(o.output) + "' is not named " + imageExtensionsText() +
+                     ": the name says which format to write");
+  return o;
+}
+
+// vkrt grade [options] REFS/ SUBMISSIONS/|SCENE.test ... -o REPORT/
+GradeOptions parseGradeOptions(const std::vector<std::string>& args) {
+  std::vector<std::string> operands;
+  GradeOptions o = parsedWith(gradeOptionRows(), args, 1, operands, "grade option", "");
+  if (validationFromEnvironment()) o.request.validation = true;
+  if (o.help) return o;
+  const std::string example = "vkrt grade REFS/ SUBMISSIONS/ -o REPORT/";
+  if (operands.size() < 2)
+    throw UsageError("grade needs the references' folder and at least one folder of submissions (or scene files): " +
+                     example);
+  if (o.output.empty()) throw UsageError("grade needs the report's folder: " + example);
+  refuseStandardOutput("-o", o.output);
+  o.references = operands[0];
+  o.inputs.assign(operands.begin() + 1, operands.end());
+  for (const std::string& in : o.inputs)
+    if (std::optional<std::string> kind = imageKind(in); kind && !isDirectory(in))
+      throw UsageError("grade: " + abbreviated(in) + " is " + withArticle(*kind) +
+                       " image; give the folder that holds the submission's images (or a scene file to render)");
+  return o;
+}
+
+// Every spelling of each row that --help or a paragraph names, appended to `out`.
+template <class Options>
+void appendDocumented(std::span<const OptionRow<Options>> rows, std::vector<std::string>& out) {
+  for (const OptionRow<Options>& row : rows) {
+    if (!row.set || row.section == HelpSection::Hidden) continue;
+    for (std::string_view names = row.names; !names.empty();) {
+      const std::size_t comma = std::min(names.find(','), names.size());
+      out.emplace_back(names.substr(0, comma));
+      names.remove_prefix(std::min(comma + 2, names.size()));
+    }
+  }
+}
+
+}  // namespace
+
+std::span<const OptionRow<RenderCommandLine>> renderOptionRows() { return kRenderRows; }
+std::span<const OptionRow<MergeOptions>> mergeOptionRows() { return kMergeRows; }
+std::span<const OptionRow<ConvertOptions>> convertOptionRows() { return kConvertRows; }
+std::span<const OptionRow<GradeOptions>> gradeOptionRows() { return kGradeRows; }
+
+CommandOptions parseOptions(const std::vector<std::string>& args) {
+  const std::string first = args.empty() ? "" : args[0];
+  if (first == "diff") return parseDiffOptions(args);
+  if (first == "merge") return parseMergeOptions(args);
+  if (first == "convert") return parseConvertOptions(args);
+  if (first == "grade") return parseGradeOptions(args);
+  return parseRenderOptions(args);
+}
+
+std::vector<std::string> documentedOptions() {
+  std::vector<std::string> out;
+  appendDocumented(renderOptionRows(), out);
+  appendDocumented(mergeOptionRows(), out);
+  appendDocumented(convertOptionRows(), out);
+  appendDocumented(gradeOptionRows(), out);
+  return out;
 }
 
 }  // namespace vkrt

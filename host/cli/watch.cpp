@@ -28,7 +28,7 @@ SampleRecord samplesOf(const RadianceImage& image) {
 
 class Watcher {
  public:
-  explicit Watcher(Options& options) : o_(options), watch_(options.request.scenePath) {}
+  explicit Watcher(RenderOptions& options) : o_(options), watch_(options.request.scenePath) {}
 
   int run() {
     // An output named on the command line that cannot be written (a folder that does not
@@ -105,14 +105,14 @@ class Watcher {
     return false;
   }
 
-  Options& o_;
+  RenderOptions& o_;
   RenderSession session_;
   FileWatch watch_;
 };
 
 }  // namespace
 
-int watchScene(Options& options) {
+int watchScene(RenderOptions& options) {
   try {
     return Watcher(options).run();
   } catch (const Interrupted& stop) {

@@ -17,6 +17,6 @@ inline constexpr int kMaxWatchBatches = 64;
 // Returns the exit status of the signal that ended it. Throws UsageError, IoError (the scene's
 // folder cannot be watched), and what the first render throws before anything was shown
 // (a device that cannot be made is no reason to wait).
-int watchScene(Options& options);
+int watchScene(RenderOptions& options);
 
 }  // namespace vkrt
