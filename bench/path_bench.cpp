@@ -15,7 +15,7 @@
 
 #include "gpu/context.h"
 #include "gpu/vulkan_path_renderer.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
 

@@ -17,7 +17,7 @@
 #include "cli/render_scenes.h"
 #include "cli/watch.h"
 #include "gpu/loader_drivers.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
 
 namespace {
 

@@ -6,11 +6,12 @@
 
 #include "cli/comparison_report.h"
 #include "cli/exit_status.h"
-#include "cli/image_check.h"
+#include "compare/image_check.h"
 #include "cli/render_report.h"
 #include "cli/run_files.h"
 #include "cli/warning_printers.h"
 #include "image/encode.h"
+#include "util/json.h"
 
 namespace vkrt {
 

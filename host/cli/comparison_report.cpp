@@ -6,10 +6,11 @@
 #include <cstdio>
 
 #include "cli/exit_status.h"
-#include "cli/image_check.h"
+#include "compare/image_check.h"
 #include "image/atomic_file.h"
 #include "image/image_file.h"
-#include "image/compare.h"
+#include "compare/image_diff.h"
+#include "util/json.h"
 
 namespace vkrt {
 

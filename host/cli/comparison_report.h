@@ -8,7 +8,7 @@
 
 #include "cli/options.h"
 #include "cli/run_files.h"
-#include "image/compare.h"
+#include "compare/image_diff.h"
 #include "image/image.h"
 #include "image/image_read.h"   // LinearDifference
 

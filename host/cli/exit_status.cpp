@@ -9,9 +9,9 @@
 #include <sys/resource.h>
 
 #include "cli/run_files.h"
-#include "errors.h"
+#include "util/errors.h"
 #include "gpu/device_error.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
 #include "render/render.h"
 #include "scene/diagnostic.h"
 

@@ -14,8 +14,8 @@
 #include <cstring>
 #include <memory>
 
-#include "errors.h"
-#include "interrupt.h"
+#include "util/errors.h"
+#include "util/interrupt.h"
 
 namespace vkrt {
 namespace {

@@ -23,8 +23,8 @@
 #include "cli/exit_status.h"
 #include "cli/run_files.h"   // RefusedOutput
 #include "cli/warning_printers.h"
-#include "counted.h"
-#include "errors.h"
+#include "util/counted.h"
+#include "util/errors.h"
 #include "grade/grade_inputs.h"
 #include "grade/grade_report.h"
 #include "image/encode.h"
@@ -32,10 +32,11 @@
 #include "image/image_read.h"
 #include "image/png.h"   // isPngFile
 #include "image/thumbnail.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
+#include "util/parallel_for.h"
 #include "render/progress.h"
 #include "render/render.h"
-#include "scene/diagnostic.h"   // abbreviated
+#include "util/text.h"   // abbreviated
 
 namespace vkrt {
 
@@ -319,29 +320,18 @@ void gradeOne(const Job& job, const Image& reference, const GradeThresholds& t, 
 // Runs `jobs` on `threads` threads; the first exception (a write that failed, memory, a
 // signal) stops the rest and is thrown here.
 void runJobs(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& job, ProgressBar& progress) {
-  std::atomic<std::size_t> next{0}, done{0};
-  std::exception_ptr failure;
-  std::mutex failureMutex;
-  std::atomic<bool> stop{false};
-  auto worker = [&] {
-    for (std::size_t i; !stop && (i = next++) < count;) {
-      try {
-        throwIfInterrupted();
-        job(i);
-        progress.update(++done, count);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failureMutex);
-        if (!failure) failure = std::current_exception();
-        stop = true;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned k = 1; k < threads; ++k) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+  std::atomic<std::size_t> done{0};
+  try {
+    parallelFor(count, threads, [&](std::size_t i) {
+      throwIfInterrupted();
+      job(i);
+      progress.update(++done, count);
+    });
+  } catch (...) {
+    progress.finish();
+    throw;
+  }
   progress.finish();
-  if (failure) std::rethrow_exception(failure);
 }
 
 std::string joined(const std::vector<std::string>& names) {

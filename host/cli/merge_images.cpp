@@ -6,7 +6,7 @@
 
 #include "cli/exit_status.h"
 #include "cli/run_files.h"
-#include "counted.h"
+#include "util/counted.h"
 #include "image/atomic_file.h"
 #include "image/image_file.h"
 #include "image/merge.h"

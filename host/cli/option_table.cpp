@@ -3,9 +3,9 @@
 
 #include <algorithm>
 
-#include "errors.h"             // UsageError
-#include "scene/diagnostic.h"   // echoed
-#include "suggest.h"
+#include "util/errors.h"             // UsageError
+#include "util/text.h"   // echoed
+#include "util/suggest.h"
 
 namespace vkrt {
 

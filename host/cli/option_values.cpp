@@ -5,8 +5,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "errors.h"             // UsageError
-#include "scene/diagnostic.h"   // echoed, abbreviated
+#include "util/errors.h"             // UsageError
+#include "util/text.h"   // echoed, abbreviated
 #include "scene/parse.h"        // kMaxImageEdge
 
 namespace vkrt {

@@ -14,8 +14,8 @@
 #include "cli/option_values.h"
 #include "image/crop.h"
 #include "image/image_file.h"
-#include "scene/diagnostic.h"   // echoed, abbreviated
-#include "suggest.h"
+#include "util/text.h"   // echoed, abbreviated
+#include "util/suggest.h"
 
 namespace vkrt {
 

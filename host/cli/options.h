@@ -8,9 +8,9 @@
 #include <variant>
 #include <vector>
 
-#include "cli/image_check.h"
+#include "compare/image_check.h"
 #include "grade/grade_thresholds.h"
-#include "errors.h"   // UsageError
+#include "util/errors.h"   // UsageError
 #include "render/render.h"
 
 namespace vkrt {

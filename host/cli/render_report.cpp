@@ -4,8 +4,8 @@
 
 #include <cstdio>
 
-#include "counted.h"
-#include "cli/image_check.h"   // jsonQuoted
+#include "util/counted.h"
+#include "util/json.h"
 
 namespace vkrt {
 

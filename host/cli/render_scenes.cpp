@@ -11,7 +11,7 @@
 #include "cli/render_report.h"
 #include "cli/run_files.h"
 #include "cli/warning_printers.h"
-#include "counted.h"
+#include "util/counted.h"
 #include "gpu/context.h"
 #include "image/image_read.h"
 

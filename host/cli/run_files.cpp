@@ -8,7 +8,7 @@
 #include <sys/stat.h>
 
 #include "image/atomic_file.h"
-#include "scene/diagnostic.h"   // abbreviated
+#include "util/text.h"   // abbreviated
 
 namespace vkrt {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "errors.h"
+#include "util/errors.h"
 
 namespace vkrt {
 

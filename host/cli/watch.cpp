@@ -9,13 +9,13 @@
 #include "cli/file_watch.h"
 #include "cli/warning_printers.h"
 #include "cli/run_files.h"
-#include "counted.h"
+#include "util/counted.h"
 #include "image/atomic_file.h"
 #include "image/image_file.h"
 #include "image/samples.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
 #include "render/render.h"
-#include "timing.h"
+#include "util/timing.h"
 
 namespace vkrt {
 namespace {

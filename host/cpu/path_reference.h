@@ -11,7 +11,7 @@
 
 #include "image/crop.h"
 #include "image/radiance_image.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/bvh.h"
 #include "scene/scene_desc.h"
 

@@ -8,7 +8,7 @@
 
 #include "image/crop.h"
 #include "image/radiance_image.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/scene_desc.h"
 
 namespace vkrt {

@@ -6,7 +6,7 @@
 #include <cstring>
 
 #include "gpu/tile_order.h"
-#include "timing.h"
+#include "util/timing.h"
 
 namespace vkrt {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "gpu_types.h"
-#include "timing.h"
+#include "util/timing.h"
 
 namespace vkrt {
 namespace {

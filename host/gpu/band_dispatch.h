@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "gpu/buffer.h"
 #include "gpu/compute_pipeline.h"
 #include "gpu/vulkan_renderer.h"
@@ -48,7 +48,8 @@ bool dispatchBand(ComputePipeline& pipeline, const void* push, std::uint32_t& re
 // maxBudget]. A band's first dispatch runs every pixel of it, its later ones only those left
 // suspended, fewer and fewer: so a band starts at the budget its predecessor started at (as
 // paced by that dispatch), not at the one its last few pixels grew (which on lavapipe made a
-// dispatch of a whole band at 16 times the budget take 2.5 s). Where a pixel is suspended
+// dispatch of a whole band at 16 times the budget take seconds: bench/README.md, "Latest
+// figures: first render, shader variants, responsiveness"). Where a pixel is suspended
 // changes no bit of it (gpu_types.h), so the pace changes no image. An explicit budget (a
 // test's) is not paced.
 inline constexpr double kTargetDispatchSeconds = 0.3;
@@ -69,8 +70,9 @@ struct StepPace {
 // (`stepsPerPixel`; at most `budget`, the steps a dispatch runs per pixel: its budget over the
 // pixels an invocation takes in turn), at `stepsPerSecond`, in about
 // kTargetDispatchSeconds: so most pixels finish in one dispatch, instead of every pixel of a
-// band of the memory's size suspending every few hundred steps (on lavapipe each suspension
-// costs a pixel about as much as 150 steps: a tenth of the render at that pace). A multiple
+// band of the memory's size suspending every few hundred steps (on lavapipe a suspension costs
+// a pixel many steps' time: bench/README.md, "Latest figures: first render, shader variants,
+// responsiveness"). A multiple
 // of the tile's rows within [tile, maxRows].
 std::uint32_t timedBandRows(double stepsPerSecond, double stepsPerPixel, std::uint32_t budget, std::uint32_t width,
                             std::uint32_t maxRows);

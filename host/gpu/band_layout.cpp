@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <string>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "gpu/device_error.h"
 #include "gpu/tile_order.h"
 

@@ -12,10 +12,10 @@
 #  include <link.h>
 #endif
 
-#include "errors.h"
+#include "util/errors.h"
 #include "gpu/buffer_pool.h"
 #include "gpu/device_error.h"
-#include "timing.h"
+#include "util/timing.h"
 
 namespace vkrt {
 namespace {

@@ -6,7 +6,7 @@
 #include "gpu/band_buffers.h"
 #include "gpu/compute_pipeline.h"
 #include "gpu/shader_variant.h"
-#include "timing.h"
+#include "util/timing.h"
 
 namespace vkrt {
 

@@ -19,7 +19,7 @@
 #include "gpu/vulkan_settings.h"
 #include "image/radiance_image.h"
 #include "image/row_sink.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 
 namespace vkrt {
 

@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "counted.h"
-#include "errors.h"
+#include "util/counted.h"
+#include "util/errors.h"
 #include "gpu/band_dispatch.h"
 #include "gpu/band_layout.h"
 #include "gpu/buffer.h"
@@ -22,7 +22,7 @@
 #include "pathtrace_texel.comp.h"   // kPathtraceTexelSpirv: the same with VKRT_TEXEL_READS
 #include "pathtrace_quad.comp.h"         // kPathtraceQuadSpirv: VKRT_QUAD_LIGHTS_ONLY
 #include "pathtrace_quad_texel.comp.h"   // kPathtraceQuadTexelSpirv: both
-#include "timing.h"
+#include "util/timing.h"
 
 namespace vkrt {
 namespace {
@@ -37,7 +37,8 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPat
   for (std::uint32_t i = gpu::kPathSpecIntegrator; i <= gpu::kPathSpecJitter; ++i) spec[i] = gpu::kPathSpecFromParams;
   // The sampler is specialised in the general variant too: read from the parameters, the strata's
   // code ran for every number drawn in renders of independent samples as well (lavapipe runs
-  // both sides of an `if`), a tenth of a direct-lighting preview's instructions. A machine
+  // both sides of an `if`; what it cost: bench/README.md, "Latest figures: first render, shader
+  // variants, responsiveness"). A machine
   // whose renders use both samplers compiles a general variant for each.
   spec[gpu::kPathSpecSampler] = path.strataSide > 0 ? 1u : 0u;
   spec[gpu::kSpecTestAll] = testAll;
@@ -143,7 +144,7 @@ PathShader pathShader(const Context& context, const GpuScene& scene, const Vulka
   const std::vector<std::uint32_t> specialized = pathFeatures(scene, path, true, s.testAll, leftOut);
   // A scene whose lights are all quad lights, rendered by direct or pathtracer, takes the module
   // without the code of the other lights and of analyticdirect, specialised or general (whose
-  // pipeline lavapipe then creates in 65-90 ms instead of 110-135 for cornellNEE).
+  // pipeline lavapipe then creates faster: bench/README.md, "Path tracing on lavapipe").
   const bool quadLightsOnly = !specialized[gpu::kSpecHasPointLights] && !specialized[gpu::kSpecHasDirectionalLights] &&
                               !specialized[gpu::kPathSpecHasEmitters] &&
                               specialized[gpu::kPathSpecIntegrator] != gpu::kIntegratorAnalyticDirect;

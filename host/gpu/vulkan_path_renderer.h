@@ -10,7 +10,7 @@
 #include <memory>
 #include <optional>
 
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "gpu/context.h"
 #include "gpu/vulkan_renderer.h"
 #include "image/crop.h"
@@ -53,9 +53,7 @@ struct VulkanPathOptions {
 // kDefaultPixelsPerInvocation, 4 in a scene of more than kLargeScenePrimitives, where lanes
 // that drift apart in the image lose the BVH's cache lines). The direct integrators' samples
 // are of one length: one pixel a lane, as on a GPU, which has lanes to spare. (Measured on
-// lavapipe at 2 samples a pixel: the CSE 168 cornell boxes 25-35% faster at 16 pixels a lane,
-// the 100k-triangle dragon with the pathtracer 10% faster at 4 and slower at 16, with the
-// direct integrator 20-45% slower at 4 or 16.)
+// lavapipe: bench/README.md, "Path tracing on lavapipe".)
 inline constexpr std::uint32_t kPathSamplesPerLane = 256;
 inline constexpr std::size_t kLargeScenePrimitives = 10000;
 std::uint32_t pathPixelsPerInvocation(bool cpuDevice, std::uint32_t integrator, std::uint32_t samples,
@@ -64,10 +62,10 @@ std::uint32_t pathPixelsPerInvocation(bool cpuDevice, std::uint32_t integrator, 
 class SceneUpload;
 
 // A path-traced render on one device, in sample batches (renderProgressive): the scene's
-// buffers are uploaded by the first batch and kept for the others. (Measured on lavapipe: a
-// batch that uploaded the scene again, after an earlier batch had run, traced 10-30% slower
-// per sample than the first; bench/README.md, "`--time` against `--spp`, and the scene's
-// buffers".) `scene` must outlive it.
+// buffers are uploaded by the first batch and kept for the others. (On lavapipe a batch that
+// uploaded the scene again, after an earlier batch had run, traced slower per sample than the
+// first: bench/README.md, "`--time` against `--spp`, and the scene's buffers".) `scene` must
+// outlive it.
 class VulkanPathRender {
  public:
   VulkanPathRender(const Context& context, const GpuScene& scene);

@@ -14,7 +14,7 @@
 #include "gpu/scene_upload.h"
 #include "gpu/shader_variant.h"
 #include "gpu/technique_bands.h"
-#include "timing.h"
+#include "util/timing.h"
 #include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
 #include "raytrace_texel.comp.h"   // kRaytraceTexelSpirv: the same with VKRT_TEXEL_READS
 

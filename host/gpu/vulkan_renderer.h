@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "gpu/context.h"
 #include "gpu/vulkan_settings.h"
 #include "image/crop.h"
@@ -28,8 +28,9 @@ struct VulkanOptions {
   std::uint32_t pixelsPerInvocation = 0;
   ShaderVariant variant = ShaderVariant::Specialized;   // the shader's: specialised to the scene, general, or Auto
   // The exactness cut-off of the mirror loop (gpu_types.h): Auto compiles it in only when it
-  // can stop a path at least two bounces before maxdepth (its test costs 10-20% of trace time
-  // on lavapipe, more than it saves on scenes with bright lights and shallow mirrors).
+  // can stop a path at least two bounces before maxdepth (on lavapipe its test costs more trace
+  // time than it saves on scenes with bright lights and shallow mirrors: bench/README.md, "The
+  // Whitted shader on lavapipe").
   Cutoff cutoff = Cutoff::Auto;
   // Small scenes (testsEveryPrimitive): every ray tests each primitive instead of walking the
   // BVH (kSpecTestAll); false: always the BVH. The same image either way.
@@ -59,8 +60,9 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
                            RayCounts* rays, VulkanTimings* timings);
 
 // Makes, in the context's PipelineCache, the pipeline that renderVulkan(context, scene,
-// options) will take, from `scene` before its BVH is built (flatten's arraysMade): lavapipe
-// creates a pipeline in 20-90 ms on one core, which then overlaps the BVH build.
+// options) will take, from `scene` before its BVH is built (flatten's arraysMade): lavapipe's
+// pipeline creation (bench/README.md, "Fixed cost of the Vulkan backend") then overlaps the
+// BVH build.
 // `eachPrimitiveOnce`: whether the BVH will hold every primitive exactly once (the caller asks
 // shapes::anyNeverHit of scenes small enough to test every primitive). Where the built BVH
 // decides otherwise (a scene too large for texel reads), the render makes its own. Throws as

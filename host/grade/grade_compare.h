@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "grade/grade_thresholds.h"
-#include "image/compare.h"
+#include "compare/image_diff.h"
 #include "image/crop.h"
 #include "image/grader_stats.h"
 

@@ -7,9 +7,9 @@
 #include <set>
 #include <system_error>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/image_file.h"
-#include "scene/diagnostic.h"   // abbreviated
+#include "util/text.h"   // abbreviated
 
 namespace vkrt {
 

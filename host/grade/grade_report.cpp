@@ -8,8 +8,8 @@
 #include <initializer_list>
 #include <string>
 
-#include "cli/image_check.h"   // jsonQuoted
-#include "counted.h"
+#include "util/json.h"
+#include "util/counted.h"
 #include "image/atomic_file.h"
 
 namespace vkrt {

@@ -12,9 +12,9 @@
 
 #include <sys/stat.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "grade/grade_inputs.h"
-#include "scene/diagnostic.h"   // echoed, abbreviated
+#include "util/text.h"   // echoed, abbreviated
 
 namespace vkrt {
 

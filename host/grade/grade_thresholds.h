@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/image_check.h"
+#include "compare/image_check.h"
 
 namespace vkrt {
 

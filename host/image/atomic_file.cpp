@@ -16,10 +16,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/image_file.h"
-#include "interrupt.h"
-#include "scene/diagnostic.h"   // abbreviated
+#include "util/interrupt.h"
+#include "util/text.h"   // abbreviated
 
 namespace vkrt {
 namespace {

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <fstream>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/image_file.h"
 
 namespace vkrt {

@@ -15,9 +15,9 @@
 #include <fstream>
 #include <string_view>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/atomic_file.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
 
 namespace vkrt {
 namespace {

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string_view>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/atomic_file.h"
 #include "image/encode.h"
 #include "image/exr.h"
@@ -130,6 +130,12 @@ bool hasImageExtension(const std::string& path) { return formatNamed(path) != nu
 std::string withArticle(const std::string& formatName) {
   const bool vowel = !formatName.empty() && std::string_view("AEIOU").find(formatName[0]) != std::string_view::npos;
   return (vowel ? "an " : "a ") + formatName;
+}
+
+std::string outputNameProblem(const std::string& name) {
+  if (hasImageExtension(name) || namedAsSceneFile(name)) return "";
+  return "is not named " + imageExtensionsText() + ": vkrt writes " + std::string(imageFormats().front().name) +
+         ", under that name";
 }
 
 bool namedAsSceneFile(const std::string& path) {

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/image.h"
 #include "image/radiance_image.h"
 
@@ -68,6 +68,12 @@ const ImageFormat& imageFormatFor(const std::string& path);
 // True when `path` ends in an extension of the table (any case): a name vkrt writes as its
 // extension says. Any other name gets the default format, and a warning.
 bool hasImageExtension(const std::string& path);
+
+// Why vkrt would not write the file an output line's `name` says (ParseOptions::
+// outputNameProblem): "is not named .png, ...: vkrt writes PNG, under that name" for a name
+// of no format's extension; "" for one with an extension of the table, or named as a scene
+// file (which is refused, alone, when the output is checked).
+std::string outputNameProblem(const std::string& name);
 
 // True when `path` ends in `.test` (any case), a scene file's name: never an output's
 // (checkOutputWritable refuses it, and no warning about its format comes before that).

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/encode.h"
 #include "image/samples.h"
 

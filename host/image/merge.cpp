@@ -12,8 +12,8 @@
 #include <optional>
 #include <type_traits>
 
-#include "counted.h"
-#include "errors.h"
+#include "util/counted.h"
+#include "util/errors.h"
 #include "image/crop.h"
 #include "image/image_file.h"
 #include "image/render_identity.h"

@@ -12,9 +12,9 @@
 
 #include <unistd.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/atomic_file.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
 
 namespace vkrt {
 namespace {

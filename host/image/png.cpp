@@ -17,7 +17,7 @@
 
 #include "image/atomic_file.h"
 #include "image/encode.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
 
 namespace vkrt {
 namespace {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/atomic_file.h"   // checkOutputWritable
 #include "image/image.h"
 #include "image/image_file.h"   // RowWriter; readImage, which reads PNG

@@ -13,9 +13,9 @@
 #include <fstream>
 #include <limits>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/atomic_file.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
 
 namespace vkrt {
 namespace {

@@ -1,19 +1,9 @@
-// FNV-1a and the text of the render identity record.
+// The text of the render identity record.
 #include "image/render_identity.h"
 
 #include <cstdio>
 
 namespace vkrt {
-
-void Fnv1a64::add(const void* data, std::size_t size) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < size; ++i) {
-    hash_ ^= p[i];
-    hash_ *= 0x100000001b3ULL;   // the FNV prime
-  }
-}
-
-void Fnv1a64::add(std::string_view bytes) { add(bytes.data(), bytes.size()); }
 
 std::string formatRenderIdentity(std::uint64_t identity) {
   char text[17];

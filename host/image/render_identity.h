@@ -9,21 +9,12 @@
 #include <string>
 #include <string_view>
 
+#include "util/hash.h"   // Fnv1a64, which makes the identity
+
 namespace vkrt {
 
 // The keyword of the record (a PNG tEXt chunk, a PPM header comment, a PFM trailer line).
 inline constexpr const char* kRenderKeyword = "vkrt-render";
-
-// 64-bit FNV-1a, fed in pieces: hashing "ab" equals hashing "a" then "b".
-class Fnv1a64 {
- public:
-  void add(std::string_view bytes);
-  void add(const void* data, std::size_t size);
-  std::uint64_t value() const { return hash_; }
-
- private:
-  std::uint64_t hash_ = 0xcbf29ce484222325ULL;   // the offset basis
-};
 
 // The record's value: 16 lower-case hex digits.
 std::string formatRenderIdentity(std::uint64_t identity);

@@ -2,7 +2,7 @@
 // on a temporary file renamed over the path when every row has come.
 #include "image/row_sink.h"
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/encode.h"
 #include "image/image_file.h"
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "errors.h"
+#include "util/errors.h"
 
 namespace vkrt {
 

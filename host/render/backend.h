@@ -12,7 +12,7 @@
 
 #include "image/radiance_image.h"
 #include "image/row_sink.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
 #include "render/progressive.h"
 #include "render/render.h"
 #include "scene/scene_desc.h"

@@ -7,7 +7,7 @@
 #include "cpu/reference.h"
 #include "render/backend.h"
 #include "render/cpu_backend.h"
-#include "timing.h"
+#include "util/timing.h"
 
 namespace vkrt {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "counted.h"
-#include "errors.h"
+#include "util/counted.h"
+#include "util/errors.h"
 #include "image/samples.h"
 
 namespace vkrt {

@@ -1,6 +1,6 @@
 // parse -> build -> render (CPU reference or Vulkan, in sample batches) -> PNG, PPM or PFM,
 // with a timer per stage.
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "render/render.h"
 
 #include <algorithm>
@@ -15,8 +15,8 @@
 #include <limits>
 #include <thread>
 
-#include "counted.h"
-#include "errors.h"
+#include "util/counted.h"
+#include "util/errors.h"
 #include "gpu_types.h"
 #include "gpu/context.h"
 #include "image/atomic_file.h"
@@ -25,7 +25,7 @@
 #include "image/render_identity.h"
 #include "image/row_sink.h"
 #include "image/samples.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
 #include "render/backend.h"
 #include "render/progressive.h"
 #include "scene/emitters.h"
@@ -33,7 +33,7 @@
 #include "scene/diagnostic.h"
 #include "scene/parse.h"
 #include "scene/shapes/shape.h"
-#include "timing.h"
+#include "util/timing.h"
 
 namespace vkrt {
 
@@ -312,7 +312,7 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
                    bool mayStream, RenderSession& vulkan, PreparedRender& prepared) {
   if (request.backend == Backend::Vulkan && !request.dryRun) vulkan.prepare(request);
   auto t0 = std::chrono::steady_clock::now();
-  prepared.parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict, request.output.has_value()});
+  prepared.parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict, request.output.has_value(), outputNameProblem});
   SceneDesc& scene = prepared.parsed.scene;
   report.parseSeconds = secondsSince(t0);
   if (!prepared.parsed.warnings.empty() && request.onWarnings) request.onWarnings(prepared.parsed.warnings);

@@ -17,7 +17,7 @@
 #include "image/image.h"
 #include "image/radiance_image.h"
 #include "render/progress.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/diagnostic.h"
 #include "scene/scene_desc.h"
 #include "scene/shapes/shape.h"

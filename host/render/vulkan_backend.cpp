@@ -14,7 +14,7 @@
 #include "scene/emitters.h"
 #include "scene/flatten.h"
 #include "scene/shapes/shape.h"
-#include "timing.h"
+#include "util/timing.h"
 
 namespace vkrt {
 namespace {
@@ -98,8 +98,8 @@ class VulkanBackend : public RenderBackend {
     pipelinesBefore_ = context_->pipelines().made();
 
     t0 = std::chrono::steady_clock::now();
-    // The first batch's pipeline is made while the BVH builds (bench/README.md, "First
-    // render"), from the scene's arrays (and the scene, which both threads only read); the
+    // The first batch's pipeline is made while the BVH builds (lavapipe's pipeline creation:
+    // bench/README.md, "Fixed cost of the Vulkan backend"), from the scene's arrays (and the scene, which both threads only read); the
     // batch takes it then. A failure there is the batch's to meet again, in its place.
     double ahead = 0;
     gpuScene_ = flatten(scene, [&](const GpuScene& arrays) {

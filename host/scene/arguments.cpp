@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "counted.h"
+#include "util/counted.h"
 #include "scene/number.h"
 
 namespace vkrt {

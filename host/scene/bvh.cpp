@@ -14,7 +14,7 @@
 #include <string>
 #include <thread>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "scene/shapes/shape.h"
 
 namespace vkrt {

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "counted.h"
+#include "util/counted.h"
 #include "scene/integrator_table.h"
 
 namespace vkrt {

@@ -14,8 +14,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "image/image_file.h"
-#include "image/render_identity.h"
+#include "util/hash.h"
 #include "scene/arguments.h"
 #include "scene/commands.h"
 #include "scene/diagnostic_log.h"
@@ -27,7 +26,7 @@
 #include "scene/shapes/shape_list.h"
 #include "scene/tokenizer.h"
 #include "scene/unit_vector.h"
-#include "suggest.h"
+#include "util/suggest.h"
 
 namespace vkrt {
 namespace {
@@ -155,6 +154,7 @@ class Parser {
         log_(fileName, options.strict),
         args_(log_),
         outputOverridden_(options.outputOverridden),
+        outputNameProblem_(options.outputNameProblem),
         crLineEnds_(crLineEnds) {
     scene_.sourcePath = fileName;
   }
@@ -328,10 +328,10 @@ class Parser {
     args_.ignoreExtra("output", 1, usage);
     std::string_view name = args_[0];
     // (A scene file's name is an error at this line when the output is checked, and alone.)
-    if (!outputOverridden_ && !hasImageExtension(std::string(name)) && !namedAsSceneFile(std::string(name)))
-      warn(WarningKind::OutputName, "output file " + quoted(name) + " is not named " + imageExtensionsText() +
-                                        ": vkrt writes " + std::string(imageFormats().front().name) +
-                                        ", under that name");
+    if (!outputOverridden_ && outputNameProblem_) {
+      const std::string problem = outputNameProblem_(std::string(name));
+      if (!problem.empty()) warn(WarningKind::OutputName, "output file " + quoted(name) + " " + problem);
+    }
     scene_.output = std::string(name);
     scene_.outputLine = line_;
   }
@@ -675,6 +675,7 @@ class Parser {
   DiagnosticLog log_;
   Arguments args_;   // the arguments of the line being read
   bool outputOverridden_;   // ParseOptions::outputOverridden
+  std::string (*outputNameProblem_)(const std::string&);   // ParseOptions::outputNameProblem
   bool crLineEnds_;
   SceneDesc scene_;
   Deferred deferred_;

@@ -20,6 +20,10 @@ struct ParseOptions {
   // The command line names the output file (-o FILE): the scene's `output` line names nothing
   // written, so its name is not checked.
   bool outputOverridden = false;
+  // How the `output` line's name is judged, by the layer that knows the image formats
+  // (image/image_file.h, outputNameProblem): why vkrt would not write the file its name says,
+  // or "" for a good name. Null: names are not judged (the parser knows no image format).
+  std::string (*outputNameProblem)(const std::string& name) = nullptr;
 };
 
 struct ParsedScene {

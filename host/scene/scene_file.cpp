@@ -8,8 +8,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "errors.h"
-#include "interrupt.h"
+#include "util/errors.h"
+#include "util/interrupt.h"
 #include "scene/diagnostic.h"
 #include "scene/tokenizer.h"
 

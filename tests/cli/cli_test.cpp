@@ -9,11 +9,11 @@
 #include "cli/exit_status.h"
 #include "cli/options.h"
 #include "cli/run_files.h"
-#include "errors.h"
+#include "util/errors.h"
 #include "gpu/context.h"
 #include "gpu/device_error.h"
 #include "image/png.h"
-#include "interrupt.h"
+#include "util/interrupt.h"
 #include "scene/diagnostic.h"
 #include "test_support.h"
 

@@ -19,7 +19,7 @@
 
 #include <gtest/gtest.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/atomic_file.h"
 #include "image/png.h"
 #include "test_support.h"

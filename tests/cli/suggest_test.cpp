@@ -12,11 +12,11 @@
 
 #include "cli/image_argument.h"
 #include "cli/options.h"
-#include "errors.h"
+#include "util/errors.h"
 #include "image/image_file.h"
 #include "image/pfm.h"
 #include "scene/parse.h"
-#include "suggest.h"
+#include "util/suggest.h"
 #include "test_support.h"
 
 using namespace vkrt;

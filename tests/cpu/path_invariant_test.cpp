@@ -16,7 +16,7 @@
 
 #include "cpu/path_reference.h"
 #include "path_scenes.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/bvh.h"
 
 namespace vkrt {

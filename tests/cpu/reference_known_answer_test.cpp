@@ -7,7 +7,7 @@
 #include "image/encode.h"
 #include "cpu/reference.h"
 #include "image/image.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/parse.h"
 #include "test_support.h"
 

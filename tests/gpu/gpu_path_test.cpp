@@ -12,7 +12,7 @@
 #include "gpu/vulkan_path_renderer.h"
 #include "image/png.h"
 #include "path_scenes.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
 #include "test_support.h"

@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "image/encode.h"
-#include "image/compare.h"
+#include "compare/image_diff.h"
 #include "image/png.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
 #include "test_support.h"

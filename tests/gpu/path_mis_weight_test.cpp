@@ -15,7 +15,7 @@
 #include "gpu/vulkan_path_renderer.h"
 #include "mis_weight_probe.comp.h"
 #include "path_scenes.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
 #include "test_support.h"

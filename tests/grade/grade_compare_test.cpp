@@ -3,7 +3,7 @@
 // around failing pixels, and thumbnails.
 #include <gtest/gtest.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/image_file.h"
 #include "grade/grade_compare.h"
 #include "grade/grade_inputs.h"
@@ -11,6 +11,7 @@
 #include "grade/grade_thresholds.h"
 #include "image/thumbnail.h"
 #include "test_support.h"
+#include "util/json.h"
 
 using namespace vkrt;
 using namespace vkrt::test;

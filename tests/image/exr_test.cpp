@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/exr.h"
 #include "image/image_file.h"
 #include "image/row_sink.h"

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "cpu/reference.h"
-#include "errors.h"
+#include "util/errors.h"
 #include "gpu/vulkan_renderer.h"
 #include "image/encode.h"
 #include "image/image_file.h"

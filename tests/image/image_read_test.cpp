@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "image/image_file.h"
 #include "image/pfm.h"
 #include "image/png.h"

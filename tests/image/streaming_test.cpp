@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "cpu/reference.h"
-#include "errors.h"
+#include "util/errors.h"
 #include "gpu/vulkan_renderer.h"
 #include "image/encode.h"
 #include "image/image_file.h"
@@ -17,7 +17,7 @@
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/row_sink.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "render/render.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"

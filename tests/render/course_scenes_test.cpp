@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "image/compare.h"
+#include "compare/image_diff.h"
 #include "image/png.h"
 #include "scene/parse.h"
 #include "test_support.h"

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "render/render.h"
 #include "test_support.h"
 

@@ -7,7 +7,7 @@
 
 #include "image/encode.h"
 #include "cpu/reference.h"
-#include "image/compare.h"
+#include "compare/image_diff.h"
 #include "scene/parse.h"
 #include "test_support.h"
 

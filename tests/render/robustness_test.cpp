@@ -11,11 +11,11 @@
 
 #include "cpu/path_reference.h"
 #include "gpu/vulkan_path_renderer.h"
-#include "image/compare.h"
+#include "compare/image_diff.h"
 #include "image/image.h"
 #include "image/pfm.h"
 #include "path_scenes.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "render/render.h"
 #include "scene/parse.h"
 #include "test_support.h"

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "scene/diagnostic.h"
 #include "scene/scene_file.h"
 #include "test_support.h"

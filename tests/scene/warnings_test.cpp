@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "counted.h"
-#include "errors.h"
+#include "util/counted.h"
+#include "util/errors.h"
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/radiance_image.h"

@@ -17,7 +17,7 @@
 #include "differential.h"
 #include "gpu/context.h"
 #include "gpu/device_error.h"
-#include "image/compare.h"
+#include "compare/image_diff.h"
 #include "image/png.h"
 #include "scene_generator.h"
 

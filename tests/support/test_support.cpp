@@ -22,10 +22,10 @@
 
 #include "cpu/reference.h"
 #include "gpu/device_error.h"
-#include "image/compare.h"
+#include "compare/image_diff.h"
 #include "image/encode.h"
 #include "image/png.h"
-#include "render/ray_counts.h"
+#include "util/ray_counts.h"
 #include "scene/bvh.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "errors.h"
+#include "util/errors.h"
 #include "gpu_types.h"
 #include "scene/scene_desc.h"
 #include "scene/shapes/ray_hit.h"

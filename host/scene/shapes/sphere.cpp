@@ -5,7 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/diagnostic.h"
+#include "util/text.h"
 #include "scene/linear_map.h"
 
 namespace vkrt::shapes {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "image/compare.h"
+#include "compare/image_diff.h"
 
 namespace vkrt {
 
@@ -30,10 +30,6 @@ PixelThreshold parsePixelThreshold(const std::string& text);
 
 // The thresholds that `diff` exceeds, as sentences; empty when it passes.
 std::vector<std::string> failedThresholds(const ImageDiff& diff, const CheckThresholds& thresholds);
-
-// `s` as a JSON string literal (valid JSON whatever its bytes: each byte that is not part of
-// well-formed UTF-8 becomes U+FFFD).
-std::string jsonQuoted(const std::string& s);
 
 // A human report (several lines) and a one-line JSON object of the same numbers.
 std::string diffReportText(const ImageDiff& diff);

@@ -1,6 +1,6 @@
 // Signal handling for a clean stop (see interrupt.h). Only async-signal-safe calls in the
 // handler: an atomic store, unlink and _exit.
-#include "interrupt.h"
+#include "util/interrupt.h"
 
 #include <chrono>
 #include <csignal>

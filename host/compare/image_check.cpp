@@ -1,13 +1,14 @@
 // Metrics, thresholds and reports of `vkrt diff` and `vkrt SCENE --check`.
-#include "cli/image_check.h"
+#include "compare/image_check.h"
 
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 
-#include "counted.h"
-#include "cli/options.h"
-#include "scene/diagnostic.h"   // echoed
+#include "util/counted.h"
+#include "util/errors.h"   // UsageError
+#include "util/json.h"   // jsonQuoted
+#include "util/text.h"   // echoed
 
 namespace vkrt {
 
@@ -81,51 +82,6 @@ std::string diffReportText(const ImageDiff& d) {
          format(" (%.4g%%)", share(static_cast<long long>(d.differing.size()), d.pixels)) + "\n" + "  over 1/255  " +
          counted(over1, "pixel", "pixels") + format(" (%.4g%%)", share(over1, d.pixels)) + "\n" + "  over 2/255  " +
          counted(over2, "pixel", "pixels") + format(" (%.4g%%)", share(over2, d.pixels)) + "\n";
-}
-
-namespace {
-
-// The length of the well-formed UTF-8 sequence at s[i] (1-4), or 0 where the bytes are not
-// one (a stray continuation byte, a sequence cut short, an overlong form, a surrogate, a
-// code point beyond U+10FFFF).
-std::size_t utf8Length(const std::string& s, std::size_t i) {
-  const unsigned char c = static_cast<unsigned char>(s[i]);
-  if (c < 0x80) return 1;
-  std::size_t n = c >= 0xF0 && c <= 0xF4 ? 4 : c >= 0xE0 ? (c <= 0xEF ? 3 : 0) : c >= 0xC2 && c <= 0xDF ? 2 : 0;
-  if (n == 0 || i + n > s.size()) return 0;
-  for (std::size_t k = 1; k < n; ++k)
-    if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 0;
-  const unsigned char d = static_cast<unsigned char>(s[i + 1]);
-  if ((c == 0xE0 && d < 0xA0) || (c == 0xED && d > 0x9F) || (c == 0xF0 && d < 0x90) || (c == 0xF4 && d > 0x8F))
-    return 0;
-  return n;
-}
-
-}  // namespace
-
-std::string jsonQuoted(const std::string& s) {
-  std::string q = "\"";
-  for (std::size_t i = 0; i < s.size();) {
-    const char c = s[i];
-    const std::size_t n = utf8Length(s, i);
-    if (n == 0) {   // not UTF-8 (a file name from another system): the replacement character
-      q += "\\ufffd";
-      ++i;
-      continue;
-    }
-    if (c == '"' || c == '\\') {
-      q += '\\';
-      q += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      q += buf;
-    } else {
-      q.append(s, i, n);
-    }
-    i += n;
-  }
-  return q + "\"";
 }
 
 std::string diffReportJson(const ImageDiff& d, const std::vector<std::string>& failures) {

@@ -1,5 +1,5 @@
 // Edit distance and the nearest name (host/suggest.h).
-#include "suggest.h"
+#include "util/suggest.h"
 
 #include <algorithm>
 #include <vector>

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/image_check.h"
+#include "compare/image_check.h"
 #include "cli/options.h"
 #include "image/png.h"
 #include "test_support.h"

@@ -1,5 +1,5 @@
 // Image comparison for tests and tools.
-#include "image/compare.h"
+#include "compare/image_diff.h"
 
 #include <algorithm>
 #include <array>
