@@ -2,11 +2,12 @@
 // the bindings of gpu_render.h and one load function per struct, but the shapes' (their own
 // files: shapes/*.glsl). Include after gpu_types.h; depends on nothing else.
 // Scene reads: storage buffers, or (VKRT_TEXEL_READS) the same bytes through uint texel-buffer
-// views, which lavapipe reads 2.7-3x faster inside loops (bench/ measures both). Only uint
-// views: a float view may flush denormal-looking indices or canonicalise NaN-looking words.
-// The views are storage texel buffers read with imageLoad, which lavapipe inlines; a uniform
-// texel buffer's texelFetch is a call of about 70 instructions (bench/README.md, "Texel reads
-// inlined"). Macros, since an image cannot be a function argument here.
+// views, which lavapipe reads faster (bench/README.md, "Tried and not kept": storage-buffer
+// reads). Only uint views: a float view may flush denormal-looking indices or canonicalise
+// NaN-looking words. The views are storage texel buffers read with imageLoad, which lavapipe
+// inlines; a uniform texel buffer's texelFetch is a call of a texture function for each texel
+// (bench/README.md, "Texel reads inlined"). Macros, since an image cannot be a function
+// argument here.
 #ifdef VKRT_TEXEL_READS
 // A scene array as RGBA32UI texels (the primitive references as R32UI).
 #define SCENE_TEXELS(b) layout(binding = b, rgba32ui) uniform readonly restrict uimageBuffer

@@ -86,8 +86,8 @@ bool traverseBvh(TracedRay r, inout uint step) {
   bool blocked = false;
   while (sp > 0u && step < params.stepBudget) {
     // Pop an entry; those entered beyond the nearest hit so far (visit false) are popped past
-    // in this loop of their own, not each in a pass of the whole walk (bench/README.md, "The
-    // walk's pops": 2-3% fewer instructions). Each pop is a step.
+    // in this loop of their own, not each in a pass of the whole walk (fewer instructions:
+    // bench/README.md, "The walk's pops"). Each pop is a step.
     uint entry;
     float entryT;
     bool visit;

@@ -29,7 +29,8 @@ class Buffer {
   }
   // `bytes` from `data` at the start; what an earlier fill wrote beyond them is zeroed, so that
   // a buffer used again (BufferPool) holds what a new one would. (A new buffer's memory is not
-  // touched beyond the data: zeroing it cost a small scene's upload 0.8 ms in page faults.)
+  // touched beyond the data: zeroing it cost a small scene's upload page faults, bench/README.md,
+  // "`--time` against `--spp`, and the scene's buffers".)
   void fill(const void* data, std::size_t bytes) {
     if (bytes > 0) std::memcpy(mapped_, data, bytes);
     if (filled_ > bytes) std::memset(static_cast<char*>(mapped_) + bytes, 0, filled_ - bytes);

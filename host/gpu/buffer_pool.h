@@ -1,7 +1,7 @@
 // The scene buffers of a context's last render, kept for its next (SceneUpload): on lavapipe
 // a path render whose scene arrays were new buffers, made after an earlier render's
-// dispatches, traced 15-25% slower than one given that render's buffers again
-// (bench/README.md, "`--time` against `--spp`, and the scene's buffers"). A buffer is reused
+// dispatches, traced slower than one given that render's buffers again (by how much:
+// bench/README.md, "`--time` against `--spp`, and the scene's buffers"). A buffer is reused
 // at the same size only; texelPaddedBytes (scene_upload.cpp) makes sizes few: each array of
 // a small scene takes 192 KiB.
 #pragma once

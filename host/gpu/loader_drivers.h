@@ -1,7 +1,8 @@
 // The Vulkan loader's drivers: which ones a run asks the loader to skip. The loader opens every
 // installed driver when an instance is made, and each loads its libraries and looks for its
-// devices (on Debian 12: Intel's two and Radeon's, about 5 ms of every run with the device-
-// select layer). Those drivers find GPUs only through DRM render nodes (/dev/dri/renderD*):
+// devices (on Debian 12: Intel's two and Radeon's, which with the device-select layer cost
+// every run some milliseconds: bench/README.md, "Fixed cost of the Vulkan backend"). Those
+// drivers find GPUs only through DRM render nodes (/dev/dri/renderD*):
 // where there is none, they can find nothing, and vkrt asks the loader to skip them and
 // Mesa's device-select layer (which only orders GPUs). A user's own choice of drivers or
 // layers through the loader's variables is left as it is, and so is every driver that may

@@ -1,8 +1,9 @@
 // The compiled compute pipelines a Vulkan context keeps for the renders that follow: a scene
 // rendered again (vkrt --watch after an edit, a batch of scenes of the same features) takes
 // the VkPipeline of the first render, whose shader the driver compiled then (lavapipe compiles
-// at pipeline creation and again, for its JIT, at the first dispatch: 0.3-0.8 s a variant on
-// two cores), instead of compiling it again. A pipeline is known by its SPIR-V, its binding
+// at pipeline creation and again, for its JIT, at the first dispatch: bench/README.md, "Latest
+// figures: first render, shader variants, responsiveness"), instead of compiling it again. A
+// pipeline is known by its SPIR-V, its binding
 // types, its specialization constants and its push-constant size.
 #pragma once
 

@@ -23,8 +23,8 @@ constexpr std::size_t kTexel = 16, kPrimRefTexel = 4;
 // buffers' sizes (Mesa 22.3, lp_sampler_static_texture_state): whether the buffer's size is a
 // power of two, and whether bits 8-15 of the view's size are zero (read through a union as
 // the last mip level). Scenes whose arrays differed in either compiled the same shader twice
-// (0.2-0.5 s each); a count of 64 KiB blocks that is not a power of two is the same for every
-// scene.
+// (bench/README.md, "Texel reads inlined"); a count of 64 KiB blocks that is not a power of
+// two is the same for every scene.
 std::size_t texelPaddedBytes(std::size_t bytes) {
   constexpr std::size_t kBlock = 65536;
   std::size_t blocks = std::max<std::size_t>((bytes + kBlock - 1) / kBlock, 3);

@@ -1,6 +1,7 @@
 // Which compiled variant of a shader a render uses. A specialised variant leaves out what the
-// scene does not use (a few to 20% faster on lavapipe) but is compiled for each new
-// combination of features: 0.2-0.5 s on two cores, more than a small render takes. The
+// scene does not use (faster on lavapipe) but is compiled for each new combination of
+// features, which takes longer than a small render (bench/README.md, "Latest figures: first
+// render, shader variants, responsiveness", has both). The
 // general variant has every feature in, the same for every scene, so it is compiled once
 // per machine (by the first render that uses it) and then comes from the driver's shader
 // cache. Under ShaderVariant::Auto a render takes its specialised variant when the render is
@@ -20,18 +21,15 @@
 namespace vkrt {
 
 // A render's estimated rays from which the specialised variant pays for its compile on a
-// CPU device (lavapipe, two cores: a compile of 0.3-0.5 s). The Whitted shader's general
-// variant traces 10-25% slower, at about 10-30 M of these estimated rays a second. The path
-// shader's general variant takes 9-50 ns more per estimated ray (median about 20 ns) over the
-// 16 CSE 168 scenes as previews (bench/README.md, "Latest figures: first render"), so its
-// compile pays from about 20 M.
+// CPU device (lavapipe, two cores): the compile's time over the trace time it saves per
+// estimated ray, for each shader, as measured on the course scenes and on the 16 CSE 168
+// scenes as previews (bench/README.md, "Latest figures: first render, shader variants,
+// responsiveness").
 inline constexpr double kSpecializeWhittedAboveRays = 30e6;
 inline constexpr double kSpecializePathAboveRays = 20e6;
-// The same on a GPU. An H200 (doc/device-check.md, its variant table) compiled a specialised
-// variant in 0.17-0.39 s, and it saved 5-8 ps of trace per estimated ray there: cornellNEE at
-// 64 spp (236 M estimated) 26.9 against 28.8 ms, the hw3 dragon (413 M) 134.4 against 137.1
-// ms, the hw4 dragon (826 M) 292.2 against 296.5 ms; a course scene's 1-3 ms within the
-// noise. So the compile pays from about 40 billion.
+// The same on a GPU, from an H200's compile times and the trace time a specialised variant
+// saved per estimated ray there (doc/device-check.md, "Figures": its variant table and "The
+// variant table settles the GPU's rule").
 inline constexpr double kSpecializeGpuAboveRays = 4e10;
 
 bool specializationPays(bool cpuDevice, double estimatedRays, bool pathShader);

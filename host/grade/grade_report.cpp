@@ -8,102 +8,26 @@
 #include <initializer_list>
 #include <string>
 
-#include "util/json.h"
+#include "grade.css.h"   // kGradeCss: host/grade/report/grade.css, embedded by the build
+#include "grade.js.h"    // kGradeJs: host/grade/report/grade.js
 #include "util/counted.h"
+#include "util/json.h"
 #include "image/atomic_file.h"
 
 namespace vkrt {
 
 namespace {
 
-// The page's look: light or dark as the reader's system is; pass, fail and missing told
-// apart by colour and by word.
-constexpr const char* kStyle = R"CSS(:root { color-scheme: light dark; --pass: #1a7f37; --fail: #cf222e; --missing: #9a6700; }
-body { font: 14px/1.45 system-ui, sans-serif; margin: 1.5em; }
-h1 { font-size: 1.5em; margin: 0 0 .3em; }
-h2 { font-size: 1.15em; margin: 1.4em 0 .4em; }
-nav { margin-bottom: 1em; }
-table { border-collapse: collapse; }
-th, td { border: 1px solid #8886; padding: 4px 6px; text-align: left; vertical-align: top; }
-thead th { position: sticky; top: 0; background: Canvas; }
-th.sortable { cursor: pointer; }
-th.sorted-up::after { content: " \25B2"; } th.sorted-down::after { content: " \25BC"; }
-td.pass { background: #1a7f3726; } td.fail { background: #cf222e26; }
-td.missing, td.unreadable { background: #9a670026; }
-.pass .word { color: var(--pass); } .fail .word { color: var(--fail); }
-.missing .word, .unreadable .word { color: var(--missing); }
-.word { font-weight: 600; text-transform: uppercase; font-size: .85em; }
-td a { color: inherit; text-decoration: none; display: block; }
-td img.thumb { display: block; width: 96px; max-width: none; height: auto; margin-bottom: 2px; }
-.num { font-variant-numeric: tabular-nums; }
-.key { font-weight: normal; font-size: .85em; opacity: .8; }
-.images { display: flex; flex-wrap: wrap; gap: 16px; align-items: flex-start; }
-.images figure { flex: 1 1 300px; max-width: 640px; }
-.images .frame { display: block; }
-.images .frame img { width: auto; max-width: 100%; height: auto; }
-figure { margin: 0; }
-figcaption { margin-top: 4px; }
-.frame { position: relative; display: inline-block; line-height: 0; max-width: 100%; }
-.frame img { max-width: 100%; height: auto; }
-.region { position: absolute; border: 2px solid #ff00ff; outline: 1px solid #000a; box-sizing: border-box; }
-.compare .top { position: absolute; left: 0; top: 0; width: 100%; height: 100%; clip-path: inset(0 0 0 50%); }
-.compare .split { display: inline-block; max-width: 100%; }
-.compare input { width: 100%; display: block; margin: 6px 0 0; }
-.failures li { color: var(--fail); }
-.notes li { color: var(--missing); }
-)CSS";
-
-// What the pages do with JavaScript (without it they read the same): the overview's columns
-// sort on a click or Enter (numbers as numbers; the address keeps the order, #sort=COLUMN or
+// The page's look (host/grade/report/grade.css): light or dark as the reader's system is;
+// pass, fail and missing told apart by colour and by word. What the pages do with JavaScript
+// (host/grade/report/grade.js; without it they read the same): the overview's columns sort on
+// a click or Enter (numbers as numbers; the address keeps the order, #sort=COLUMN or
 // #sort=COLUMN-down, so that a sorted view can be kept or sent), and a comparison page shows
-// the reference and the submission in one frame, split where the slider is ('t' flips).
-constexpr const char* kScript = R"JS('use strict';
-document.querySelectorAll('table.sortable').forEach(function (table) {
-  var heads = table.tHead.rows[0].cells;
-  function sort(column, up) {
-    Array.prototype.forEach.call(heads, function (h) { h.classList.remove('sorted-up', 'sorted-down'); });
-    heads[column].classList.add(up ? 'sorted-up' : 'sorted-down');
-    var body = table.tBodies[0];
-    var rows = Array.prototype.slice.call(body.rows);
-    function key(row) {
-      var cell = row.cells[column];
-      var v = cell.getAttribute('data-sort');
-      return v === null ? cell.textContent.trim() : parseFloat(v);
-    }
-    rows.sort(function (a, b) {
-      var ka = key(a), kb = key(b);
-      var c = typeof ka === 'number' ? ka - kb : ka.localeCompare(kb, undefined, { numeric: true, sensitivity: 'base' });
-      return up ? c : -c;
-    });
-    rows.forEach(function (row) { body.appendChild(row); });
-  }
-  Array.prototype.forEach.call(heads, function (th, column) {
-    th.classList.add('sortable');
-    th.tabIndex = 0;
-    th.title = 'sort by this column';
-    function click() {
-      var up = !th.classList.contains('sorted-up');
-      sort(column, up);
-      history.replaceState(null, '', '#sort=' + column + (up ? '' : '-down'));
-    }
-    th.addEventListener('click', click);
-    th.addEventListener('keydown', function (e) { if (e.key === 'Enter') click(); });
-  });
-  var asked = /^#sort=(\d+)(-down)?$/.exec(location.hash);
-  if (asked && +asked[1] < heads.length) sort(+asked[1], !asked[2]);
-});
-document.querySelectorAll('.compare').forEach(function (section) {
-  var range = section.querySelector('input');
-  var top = section.querySelector('.top');
-  function show() { top.style.clipPath = 'inset(0 0 0 ' + range.value + '%)'; }
-  range.addEventListener('input', show);
-  document.addEventListener('keydown', function (e) {
-    if (e.key === 't') { range.value = range.value > 50 ? 0 : 100; show(); }
-  });
-  section.hidden = false;
-  show();
-});
-)JS";
+// the reference and the submission in one frame, split where the slider is ('t' flips). Both
+// are embedded at build time (CMakeLists.txt, vkrt_embed) and written as they are.
+std::string embedded(const unsigned char* bytes, std::size_t size) {
+  return std::string(reinterpret_cast<const char*>(bytes), size);
+}
 
 std::string escaped(const std::string& s) {
   std::string out;
@@ -472,8 +396,8 @@ OutcomeCounts countOutcomes(const GradeReport& report) {
 }
 
 void writeReportPages(const GradeReport& report, const std::string& folder) {
-  writeText(folder + "/grade.css", kStyle);
-  writeText(folder + "/grade.js", kScript);
+  writeText(folder + "/grade.css", embedded(kGradeCss, kGradeCssSize));
+  writeText(folder + "/grade.js", embedded(kGradeJs, kGradeJsSize));
   for (std::size_t i = 0; i < report.submissions.size(); ++i)
     for (std::size_t c = 0; c < report.scenes.size(); ++c)
       if (report.submissions[i].entries[c].grade.outcome != GradeOutcome::Missing)

@@ -31,8 +31,9 @@ static_assert(kMedianDepth + 34 <= kMaxBvhDepth);
 constexpr std::uint32_t kParallelMinPrims = 4096;
 // Primitive boxes are made on two threads from this many primitives on.
 constexpr std::size_t kParallelBoxesMinPrims = 50000;
-// Nodes of three up to this many primitives (a quarter of scene7's nodes) try only the planes
-// between their primitives' bins, without clearing and sweeping all the bins.
+// Nodes of three up to this many primitives (their share of scene7's nodes: bench/README.md,
+// "Host stages: parse, BVH build, flatten") try only the planes between their primitives'
+// bins, without clearing and sweeping all the bins.
 constexpr std::uint32_t kSparseMaxPrims = 4;
 
 // Four floats in one register (GCC and Clang vector extensions: SSE, NEON, or scalar code).
@@ -282,7 +283,8 @@ class Builder {
     return best;
   }
 
-  // bestSplit() of two primitives (a third of all nodes), without the bins. On an axis where
+  // bestSplit() of two primitives (many nodes: bench/README.md, "Host stages: parse, BVH
+  // build, flatten"), without the bins. On an axis where
   // their centroids differ (the centroids' box is theirs), one falls in the first bin and the
   // other in the last; the split is the same on every such axis, at the cost of the two boxes'
   // areas, so the sweep keeps the first.

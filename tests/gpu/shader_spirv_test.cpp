@@ -1,4 +1,4 @@
-// The shaders as embedded: the build's spirv-opt passes (cmake/spirv_header.cmake) must keep
+// The shaders as embedded: the build's spirv-opt passes (cmake/embed_header.cmake) must keep
 // the watertight triangle test's `precise` arithmetic (NoContraction decorations), without
 // which the driver may fuse its multiply-adds and rays slip between triangles.
 #include <cstddef>
