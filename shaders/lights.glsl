@@ -1,6 +1,27 @@
 // lights.glsl: point and directional lights, as both compute shaders see them (raytrace.comp,
-// pathtrace.comp). Include after the specialization constants kHasPointLights,
-// kHasDirectionalLights and kHasAttenuation, and intersect.glsl.
+// pathtrace.comp): their read (GpuLight, by texels or from a storage buffer, as
+// scene_reads.glsl reads the other structs) and what reaches a point from one. Its host side
+// is host/scene/light.h. Include after the specialization constants kHasPointLights,
+// kHasDirectionalLights and kHasAttenuation, scene_reads.glsl and intersect.glsl.
+
+#ifdef VKRT_TEXEL_READS
+SCENE_TEXELS(kBindingLights) lightWords;   // kLightTexels each
+GpuLight loadLight(uint i) {
+  const uint n = kLightTexels;
+  GpuLight l;
+  l.positionOrDirection = texelF(lightWords, n * i);
+  l.color = texelF(lightWords, n * i + 1u);
+  uvec4 c = texelU(lightWords, n * i + 2u);
+  l.attenuation0 = uintBitsToFloat(c.x);
+  l.attenuation1 = uintBitsToFloat(c.y);
+  l.attenuation2 = uintBitsToFloat(c.z);
+  l.kind = c.w;
+  return l;
+}
+#else
+layout(std430, binding = kBindingLights) readonly buffer Lights { GpuLight lights[]; };
+GpuLight loadLight(uint i) { return lights[i]; }
+#endif
 
 // From point p toward light `light`: the unit direction; `reach`, how far its shadow ray goes
 // (the light's distance; kInfinity for a directional light); and `arriving`, the light's

@@ -1,6 +1,6 @@
 // scene_reads.glsl: how the compute shaders read the scene (raytrace.comp, pathtrace.comp):
 // the bindings of gpu_render.h and one load function per struct, but the shapes' (their own
-// files: shapes/*.glsl). Include after gpu_types.h; depends on nothing else.
+// files: shapes/*.glsl) and the lights' (lights.glsl). Include after gpu_types.h; depends on nothing else.
 // Scene reads: storage buffers, or (VKRT_TEXEL_READS) the same bytes through uint texel-buffer
 // views, which lavapipe reads faster (bench/README.md, "Tried and not kept": storage-buffer
 // reads). Only uint views: a float view may flush denormal-looking indices or canonicalise
@@ -13,23 +13,10 @@
 #define SCENE_TEXELS(b) layout(binding = b, rgba32ui) uniform readonly restrict uimageBuffer
 #define texelU(b, i) imageLoad(b, int(i))
 #define texelF(b, i) uintBitsToFloat(texelU(b, i))
-SCENE_TEXELS(kBindingLights) lightWords;         // kLightTexels each
 SCENE_TEXELS(kBindingMaterials) materialWords;   // 4 texels each
 SCENE_TEXELS(kBindingBvhNodes) nodeWords;        // 2 texels each
 layout(binding = kBindingPrimRefs, r32ui) uniform readonly restrict uimageBuffer primRefWords;
 
-GpuLight loadLight(uint i) {
-  const uint n = kLightTexels;
-  GpuLight l;
-  l.positionOrDirection = texelF(lightWords, n * i);
-  l.color = texelF(lightWords, n * i + 1u);
-  uvec4 c = texelU(lightWords, n * i + 2u);
-  l.attenuation0 = uintBitsToFloat(c.x);
-  l.attenuation1 = uintBitsToFloat(c.y);
-  l.attenuation2 = uintBitsToFloat(c.z);
-  l.kind = c.w;
-  return l;
-}
 GpuMaterial loadMaterial(uint i) {
   GpuMaterial m;
   m.ambient = texelF(materialWords, 4u * i);
@@ -49,12 +36,10 @@ GpuBvhNode loadNode(uint i) {
 }
 uint loadPrimRef(uint i) { return texelU(primRefWords, i).x; }
 #else
-layout(std430, binding = kBindingLights) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, binding = kBindingMaterials) readonly buffer Materials { GpuMaterial materials[]; };
 layout(std430, binding = kBindingBvhNodes) readonly buffer BvhNodes { GpuBvhNode nodes[]; };
 layout(std430, binding = kBindingPrimRefs) readonly buffer PrimRefs { uint primRefs[]; };
 
-GpuLight loadLight(uint i) { return lights[i]; }
 GpuMaterial loadMaterial(uint i) { return materials[i]; }
 GpuBvhNode loadNode(uint i) { return nodes[i]; }
 uint loadPrimRef(uint i) { return primRefs[i]; }

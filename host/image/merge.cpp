@@ -349,75 +349,97 @@ bool areSampleBatches(const std::vector<std::string>& paths) {
   return !paths.empty();
 }
 
+namespace {
+
+// A sample batch's records, read and checked before any raster is.
+struct Batch {
+  std::string path;
+  int width = 0, height = 0;
+  SampleRecord record;
+  std::optional<std::string> crop;
+};
+
+// The batch at `path`: a linear-float image whose samples (and crop) records are well formed
+// and agree with its size; its records into `text`. Throws UsageError, IoError.
+Batch readBatch(const std::string& path, Records& text) {
+  if (!isFloatImageFile(path))
+    throw UsageError("batch '" + path + "' is not a " + imageFormatNamesText(FormatsOf::LinearFloat) +
+                     " file: sample batches are averaged from linear float images; render each batch with -o NAME" +
+                     imageExtensionsText(FormatsOf::LinearFloat));
+  RadianceImage info = readFloatImageInfo(path);   // IoError: unreadable or cut short
+  Batch batch{path, info.width, info.height, {}, onlyRecord(info.text, kCropKeyword, "batch", path)};
+  std::optional<std::string> value = onlyRecord(info.text, kSamplesKeyword, "batch", path);
+  if (!value)
+    throw UsageError("batch '" + path + "' has no " + kSamplesKeyword +
+                     " record: it is not the image of a path-traced render");
+  std::optional<SampleRecord> record = parseSampleRecord(*value);
+  if (!record) throw UsageError("batch '" + path + "': malformed " + kSamplesKeyword + " record '" + *value + "'");
+  batch.record = *record;
+  if (batch.width > kMaxRecordedImageEdge || batch.height > kMaxRecordedImageEdge)
+    throw UsageError("batch '" + path + "' is " + std::to_string(batch.width) + "x" + std::to_string(batch.height) +
+                     ", larger than " + std::to_string(kMaxRecordedImageEdge) + " on a side");
+  if (batch.crop) {
+    std::string why;
+    std::optional<CropRecord> crop = parseCropRecord(*batch.crop, &why);
+    if (!crop)
+      throw UsageError("batch '" + path + "': malformed " + kCropKeyword + " record '" + *batch.crop + "' (" + why +
+                       ")");
+    if (crop->rect.width() != batch.width || crop->rect.height() != batch.height)
+      throw UsageError("batch '" + path + "' is " + std::to_string(batch.width) + "x" +
+                       std::to_string(batch.height) + ", but its record says " + *batch.crop);
+  }
+  text = std::move(info.text);
+  return batch;
+}
+
+// Throws UsageError where `batch` cannot be averaged with the batches before it: another size,
+// place, gamma or sampler than the first's, or a sample that one of them holds too.
+void checkAgainst(const std::vector<Batch>& before, const Batch& batch) {
+  const std::string& path = batch.path;
+  if (!before.empty()) {
+    const Batch& first = before.front();
+    if (batch.width != first.width || batch.height != first.height)
+      throw UsageError("batches of different sizes: '" + first.path + "' is " + std::to_string(first.width) + "x" +
+                       std::to_string(first.height) + ", '" + path + "' " + std::to_string(batch.width) + "x" +
+                       std::to_string(batch.height));
+    if (batch.crop != first.crop)
+      throw UsageError("batches of different places: '" + first.path + "' is " +
+                       (first.crop ? "the crop " + *first.crop : std::string("the whole image")) + ", '" + path +
+                       "' " + (batch.crop ? "the crop " + *batch.crop : std::string("the whole image")));
+    if (batch.record.gamma != first.record.gamma)
+      throw UsageError("batches of different gammas: '" + first.path + "' has gamma " +
+                       gammaText(first.record.gamma) + ", '" + path + "' gamma " + gammaText(batch.record.gamma));
+    auto sampler = [](const SampleRecord& r) { return r.stratified ? "stratified" : "independent"; };
+    if (batch.record.stratified != first.record.stratified)
+      throw UsageError("batches of different samplers: '" + first.path + "' holds " + sampler(first.record) +
+                       " samples, '" + path + "' " + sampler(batch.record) + " ones (--sampler)");
+  }
+  for (const Batch& other : before) {
+    std::string shared = sharedSample(other.record, batch.record);
+    if (!shared.empty())
+      throw UsageError("batches '" + other.path + "' and '" + path + "' hold the same samples (" + shared +
+                       "): render each batch with its own --seed");
+  }
+}
+
+}  // namespace
+
 RadianceImage mergeSampleBatches(const std::vector<std::string>& paths, MergeReport* report) {
   if (paths.empty()) throw UsageError("merge needs at least one batch");
   // The records of every batch first, checked before any raster is read.
-  struct Batch {
-    std::string path;
-    int width = 0, height = 0;
-    SampleRecord record;
-    std::optional<std::string> crop;
-  };
   std::vector<Batch> batches;
   std::vector<Records> texts;
   SampleRecord merged;
   std::uint64_t total = 0;
   for (const std::string& path : paths) {
-    if (!isFloatImageFile(path))
-      throw UsageError("batch '" + path + "' is not a " + imageFormatNamesText(FormatsOf::LinearFloat) +
-                       " file: sample batches are averaged from linear float images; render each batch with -o NAME" +
-                       imageExtensionsText(FormatsOf::LinearFloat));
-    RadianceImage info = readFloatImageInfo(path);   // IoError: unreadable or cut short
-    Batch batch{path, info.width, info.height, {}, onlyRecord(info.text, kCropKeyword, "batch", path)};
-    std::optional<std::string> value = onlyRecord(info.text, kSamplesKeyword, "batch", path);
-    if (!value)
-      throw UsageError("batch '" + path + "' has no " + kSamplesKeyword +
-                       " record: it is not the image of a path-traced render");
-    std::optional<SampleRecord> record = parseSampleRecord(*value);
-    if (!record) throw UsageError("batch '" + path + "': malformed " + kSamplesKeyword + " record '" + *value + "'");
-    batch.record = *record;
-    if (batch.width > kMaxRecordedImageEdge || batch.height > kMaxRecordedImageEdge)
-      throw UsageError("batch '" + path + "' is " + std::to_string(batch.width) + "x" + std::to_string(batch.height) +
-                       ", larger than " + std::to_string(kMaxRecordedImageEdge) + " on a side");
-    if (batch.crop) {
-      std::string why;
-      std::optional<CropRecord> crop = parseCropRecord(*batch.crop, &why);
-      if (!crop)
-        throw UsageError("batch '" + path + "': malformed " + kCropKeyword + " record '" + *batch.crop + "' (" + why +
-                         ")");
-      if (crop->rect.width() != batch.width || crop->rect.height() != batch.height)
-        throw UsageError("batch '" + path + "' is " + std::to_string(batch.width) + "x" +
-                         std::to_string(batch.height) + ", but its record says " + *batch.crop);
-    }
-    if (!batches.empty()) {
-      const Batch& first = batches.front();
-      if (batch.width != first.width || batch.height != first.height)
-        throw UsageError("batches of different sizes: '" + first.path + "' is " + std::to_string(first.width) + "x" +
-                         std::to_string(first.height) + ", '" + path + "' " + std::to_string(batch.width) + "x" +
-                         std::to_string(batch.height));
-      if (batch.crop != first.crop)
-        throw UsageError("batches of different places: '" + first.path + "' is " +
-                         (first.crop ? "the crop " + *first.crop : std::string("the whole image")) + ", '" + path +
-                         "' " + (batch.crop ? "the crop " + *batch.crop : std::string("the whole image")));
-      if (batch.record.gamma != first.record.gamma)
-        throw UsageError("batches of different gammas: '" + first.path + "' has gamma " +
-                         gammaText(first.record.gamma) + ", '" + path + "' gamma " + gammaText(batch.record.gamma));
-      auto sampler = [](const SampleRecord& r) { return r.stratified ? "stratified" : "independent"; };
-      if (batch.record.stratified != first.record.stratified)
-        throw UsageError("batches of different samplers: '" + first.path + "' holds " + sampler(first.record) +
-                         " samples, '" + path + "' " + sampler(batch.record) + " ones (--sampler)");
-    }
-    for (const Batch& other : batches) {
-      std::string shared = sharedSample(other.record, batch.record);
-      if (!shared.empty())
-        throw UsageError("batches '" + other.path + "' and '" + path + "' hold the same samples (" + shared +
-                         "): render each batch with its own --seed");
-    }
+    Records text;
+    Batch batch = readBatch(path, text);
+    checkAgainst(batches, batch);
     if (batch.record.total() > std::numeric_limits<std::uint64_t>::max() - total)
       throw UsageError("batch '" + path + "': the batches hold more than 2^64 samples per pixel in all");
     total += batch.record.total();
     merged.ranges.insert(merged.ranges.end(), batch.record.ranges.begin(), batch.record.ranges.end());
-    texts.push_back(std::move(info.text));
+    texts.push_back(std::move(text));
     batches.push_back(std::move(batch));
   }
   std::vector<std::string> warnings;
