@@ -43,7 +43,7 @@ struct GradeReport {
 
 // Where a comparison's images go inside the report folder (relative paths):
 // the reference once per scene, and per comparison the submission, its thumbnail and the
-// difference image (image/compare.h's heatmap, with its legend).
+// difference image (compare/image_diff.h's heatmap, with its legend).
 enum class ReportImage { Submission, Thumbnail, Difference };
 std::string referenceImagePath(std::size_t scene);
 std::string entryImagePath(std::size_t submission, std::size_t scene, ReportImage which);

@@ -1,5 +1,5 @@
 // Atomic file writing: mkstemps beside the target, fsync, rename. Ctrl-C between the two
-// leaves the old file (the temporary file is registered with host/interrupt.h, which
+// leaves the old file (the temporary file is registered with host/util/interrupt.h, which
 // removes it on a second signal). resolveOutputFile decides, before anything is written,
 // which file a path names and whether vkrt may replace it (atomic_file.h).
 #include "image/atomic_file.h"

@@ -9,8 +9,9 @@ namespace vkrt {
 
 std::unique_ptr<RenderBackend> makeBackend(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
                                      RenderSession& vulkan, const SamplePlan& plan, const RowSink* rows) {
-  if (request.backend == Backend::Cpu) return makeCpuBackend(request, progress, report, plan, rows);
-  return makeVulkanBackend(request, progress, report, vulkan, plan, rows);
+  const BackendInputs in{request, progress, report, plan, rows};
+  if (request.backend == Backend::Cpu) return makeCpuBackend(in);
+  return makeVulkanBackend(in, vulkan);
 }
 
 void validateForBackend(const RenderRequest& request, const SceneDesc& scene) {

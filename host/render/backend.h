@@ -30,8 +30,19 @@ struct SamplePlan {
 
 using PixelProgress = std::function<void(std::uint64_t, std::uint64_t)>;
 
+// What every backend is given: the request, the bar, the report it fills, the plan of its
+// batches, and where a streamed render's rows go (may be null).
+struct BackendInputs {
+  const RenderRequest& request;
+  ProgressBar& progress;
+  RenderReport& report;
+  const SamplePlan& plan;
+  const RowSink* rows;
+};
+
 class RenderBackend {
  public:
+  explicit RenderBackend(const BackendInputs& in) : in_(in) {}
   virtual ~RenderBackend() = default;
   // Builds what the batches render from (the BVH; the device, the GPU's arrays and pipeline),
   // reporting its times; the render's seconds so far (a device's setup) in renderSeconds. May
@@ -41,6 +52,9 @@ class RenderBackend {
   virtual RadianceImage renderBatch(const SampleBatch& batch, const PixelProgress& pixelProgress) = 0;
   // After the last batch: the report's totals.
   virtual void finish() {}
+
+ protected:
+  BackendInputs in_;
 };
 
 // The backend `request.backend` names, for batches of `plan`; with `rows`, a render of one

@@ -14,19 +14,17 @@ namespace {
 
 class CpuBackend : public RenderBackend {
  public:
-  CpuBackend(const RenderRequest& request, ProgressBar& progress, RenderReport& report, const SamplePlan& plan,
-             const RowSink* rows)
-      : request_(request), progress_(progress), report_(report), plan_(plan), rows_(rows) {}
+  using RenderBackend::RenderBackend;
 
   void build(SceneDesc& scene) override {
     scene_ = &scene;
     auto t0 = std::chrono::steady_clock::now();
     bvh_ = buildBvh(scene);
-    report_.buildSeconds = secondsSince(t0);
-    report_.bvhNodes = bvh_.nodes.size();
-    report_.backend = "cpu";
-    report_.threads =
-        request_.threads > 0 ? request_.threads : static_cast<int>(std::thread::hardware_concurrency());
+    in_.report.buildSeconds = secondsSince(t0);
+    in_.report.bvhNodes = bvh_.nodes.size();
+    in_.report.backend = "cpu";
+    in_.report.threads =
+        in_.request.threads > 0 ? in_.request.threads : static_cast<int>(std::thread::hardware_concurrency());
   }
 
   RadianceImage renderBatch(const SampleBatch& batch, const PixelProgress& px) override {
@@ -34,36 +32,28 @@ class CpuBackend : public RenderBackend {
     RadianceImage image;
     if (scene_->path.integrator == Integrator::Raytracer) {
       CpuOptions o;
-      o.threads = request_.threads;
-      if (rows_) o.rows = *rows_;
-      setBatch(o, request_, plan_, batch, batchProgress(plan_, progress_, px));
+      o.threads = in_.request.threads;
+      if (in_.rows) o.rows = *in_.rows;
+      setBatch(o, in_.request, in_.plan, batch, batchProgress(in_.plan, in_.progress, px));
       image = renderReference(*scene_, bvh_, o, &rays);
     } else {
       PathOptions o;
-      o.threads = request_.threads;
-      o.stratified = request_.stratified;
-      setBatch(o, request_, plan_, batch, batchProgress(plan_, progress_, px));
+      o.threads = in_.request.threads;
+      o.stratified = in_.request.stratified;
+      setBatch(o, in_.request, in_.plan, batch, batchProgress(in_.plan, in_.progress, px));
       image = renderPathReference(*scene_, bvh_, o, &rays);
     }
-    report_.rays += rays;
+    in_.report.rays += rays;
     return image;
   }
 
  private:
-  const RenderRequest& request_;
-  ProgressBar& progress_;
-  RenderReport& report_;
-  const SamplePlan& plan_;
-  const RowSink* rows_;
   const SceneDesc* scene_ = nullptr;
   Bvh bvh_;
 };
 
 }  // namespace
 
-std::unique_ptr<RenderBackend> makeCpuBackend(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
-                                        const SamplePlan& plan, const RowSink* rows) {
-  return std::make_unique<CpuBackend>(request, progress, report, plan, rows);
-}
+std::unique_ptr<RenderBackend> makeCpuBackend(const BackendInputs& in) { return std::make_unique<CpuBackend>(in); }
 
 }  // namespace vkrt

@@ -7,7 +7,6 @@
 
 namespace vkrt {
 
-std::unique_ptr<RenderBackend> makeCpuBackend(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
-                                        const SamplePlan& plan, const RowSink* rows);
+std::unique_ptr<RenderBackend> makeCpuBackend(const BackendInputs& in);
 
 }  // namespace vkrt

@@ -77,9 +77,7 @@ VulkanTechnique vulkanTechnique(const RenderRequest& request, const SamplePlan& 
 
 class VulkanBackend : public RenderBackend {
  public:
-  VulkanBackend(const RenderRequest& request, ProgressBar& progress, RenderReport& report, RenderSession& session,
-                const SamplePlan& plan, const RowSink* rows)
-      : request_(request), progress_(progress), report_(report), session_(session), plan_(plan), rows_(rows) {}
+  VulkanBackend(const BackendInputs& in, RenderSession& session) : RenderBackend(in), session_(session) {}
 
   // Frees the scene's shapes once they are flattened: nothing after that reads them (152 bytes
   // a triangle, 150 MB for a million, held through the upload and render otherwise).
@@ -87,14 +85,14 @@ class VulkanBackend : public RenderBackend {
     auto t0 = std::chrono::steady_clock::now();
     // The device first: without one there is nothing to build for.
     bool made = false;
-    context_ = &session_.context(request_, made);
+    context_ = &session_.context(in_.request, made);
     if (made) {
-      report_.instanceSeconds = context_->instanceSeconds();
-      report_.deviceSeconds = context_->deviceSeconds();
+      in_.report.instanceSeconds = context_->instanceSeconds();
+      in_.report.deviceSeconds = context_->deviceSeconds();
     }
-    report_.backend = std::string("vulkan (") + context_->properties().deviceName + ")";
-    report_.renderSeconds = secondsSince(t0);   // the device's setup counts as the render's
-    technique_ = vulkanTechnique(request_, plan_, scene, rows_, pathRender_);
+    in_.report.backend = std::string("vulkan (") + context_->properties().deviceName + ")";
+    in_.report.renderSeconds = secondsSince(t0);   // the device's setup counts as the render's
+    technique_ = vulkanTechnique(in_.request, in_.plan, scene, in_.rows, pathRender_);
     pipelinesBefore_ = context_->pipelines().made();
 
     t0 = std::chrono::steady_clock::now();
@@ -107,14 +105,14 @@ class VulkanBackend : public RenderBackend {
       try {
         // (whether every primitive is in the BVH matters only to a scene small enough to test all)
         const bool eachPrimitiveOnce = primitiveCount(arrays) > gpu::kTestAllMaxPrims || !shapes::anyNeverHit(scene);
-        technique_.prepare(*context_, arrays, firstBatch(plan_.progressive), eachPrimitiveOnce);
+        technique_.prepare(*context_, arrays, firstBatch(in_.plan.progressive), eachPrimitiveOnce);
       } catch (const std::exception&) {
       }
       ahead = secondsSince(start);
     });
-    report_.buildSeconds = secondsSince(t0);
-    report_.pipelineAheadSeconds = ahead;
-    report_.bvhNodes = gpuScene_.bvh.nodes.size();
+    in_.report.buildSeconds = secondsSince(t0);
+    in_.report.pipelineAheadSeconds = ahead;
+    in_.report.bvhNodes = gpuScene_.bvh.nodes.size();
 #define VKRT_SHAPE_FREE(Type, member, name, kind, GpuType, binding) std::vector<Type>().swap(scene.member);
     VKRT_SHAPES(VKRT_SHAPE_FREE)
 #undef VKRT_SHAPE_FREE
@@ -124,21 +122,16 @@ class VulkanBackend : public RenderBackend {
     RayCounts rays;
     VulkanTimings timings;
     RadianceImage image =
-        technique_.render(*context_, gpuScene_, batch, batchProgress(plan_, progress_, px), &rays, &timings);
-    report_.rays += rays;
-    addBatchTimings(report_.vulkan, timings, batch.firstSample == plan_.progressive.firstSample);
+        technique_.render(*context_, gpuScene_, batch, batchProgress(in_.plan, in_.progress, px), &rays, &timings);
+    in_.report.rays += rays;
+    addBatchTimings(in_.report.vulkan, timings, batch.firstSample == in_.plan.progressive.firstSample);
     return image;
   }
 
-  void finish() override { report_.pipelinesMade = context_->pipelines().made() - pipelinesBefore_; }
+  void finish() override { in_.report.pipelinesMade = context_->pipelines().made() - pipelinesBefore_; }
 
  private:
-  const RenderRequest& request_;
-  ProgressBar& progress_;
-  RenderReport& report_;
   RenderSession& session_;
-  const SamplePlan& plan_;
-  const RowSink* rows_;
   const Context* context_ = nullptr;
   VulkanTechnique technique_;
   GpuScene gpuScene_;
@@ -148,9 +141,8 @@ class VulkanBackend : public RenderBackend {
 
 }  // namespace
 
-std::unique_ptr<RenderBackend> makeVulkanBackend(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
-                                           RenderSession& session, const SamplePlan& plan, const RowSink* rows) {
-  return std::make_unique<VulkanBackend>(request, progress, report, session, plan, rows);
+std::unique_ptr<RenderBackend> makeVulkanBackend(const BackendInputs& in, RenderSession& session) {
+  return std::make_unique<VulkanBackend>(in, session);
 }
 
 // (The emitters, a pass over every primitive, are looked for only when they would pass it.)

@@ -7,8 +7,7 @@
 
 namespace vkrt {
 
-std::unique_ptr<RenderBackend> makeVulkanBackend(const RenderRequest& request, ProgressBar& progress, RenderReport& report,
-                                           RenderSession& session, const SamplePlan& plan, const RowSink* rows);
+std::unique_ptr<RenderBackend> makeVulkanBackend(const BackendInputs& in, RenderSession& session);
 
 // Throws SceneError, at the scene's lightsamples line, where the path shader cannot draw the
 // light samples of a vertex (lightSlotsProblem). Opens no device.

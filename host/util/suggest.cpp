@@ -1,4 +1,4 @@
-// Edit distance and the nearest name (host/suggest.h).
+// Edit distance and the nearest name (host/util/suggest.h).
 #include "util/suggest.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// "Did you mean ...?" after a typo: the edit-distance helper (host/suggest.h), and each place
+// "Did you mean ...?" after a typo: the edit-distance helper (host/util/suggest.h), and each place
 // that uses it: a subcommand, an option, a scene command; an image given as a scene; usage
 // errors in two lines, the usage text only for --help.
 #include <algorithm>
