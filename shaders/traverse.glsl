@@ -103,6 +103,7 @@ bool traverseBvh(TracedRay r, inout uint step) {
     // entered is a step.
     while (visit && (entry & kStackLeafBit) == 0u && step < params.stepBudget) {
       GpuBvhNode left = loadNode(entry), right = loadNode(entry + 1u);
+      boxTests += 2u;
       float tl = boxEntry(left, r.origin, invDir, r.tMin, tMax);
       float tr = boxEntry(right, r.origin, invDir, r.tMin, tMax);
       bool leftFirst = tl <= tr;
@@ -123,6 +124,7 @@ bool traverseBvh(TracedRay r, inout uint step) {
       break;
     }
     uint first = entry & kStackFirstMask, count = (entry >> kStackCountShift) & 7u;
+    primitiveTests += count;
     for (uint i = 0u; i < count; ++i) {
       uint ref = loadPrimRef(first + i);
       vec2 b;

@@ -81,6 +81,12 @@ void printStats(const RenderRequest& req, const RenderReport& r) {
                static_cast<unsigned long long>(r.rays.total()), static_cast<unsigned long long>(r.rays.primary),
                static_cast<unsigned long long>(r.rays.shadow), static_cast<unsigned long long>(r.rays.secondary),
                mrays);
+  // The Vulkan backend's BVH walk, per ray traced (bench/: how a tree or a traversal compares).
+  if (r.rays.total() > 0 && r.rays.boxTests + r.rays.primitiveTests > 0) {
+    const double rays = static_cast<double>(r.rays.total());
+    std::fprintf(stderr, "  walk    %.2f box tests and %.2f primitive tests a ray\n",
+                 static_cast<double>(r.rays.boxTests) / rays, static_cast<double>(r.rays.primitiveTests) / rays);
+  }
 }
 
 std::string reportJson(const RenderReport& r) {
@@ -90,12 +96,13 @@ std::string reportJson(const RenderReport& r) {
                 "{\"backend\":%s,\"seconds\":%.6f,\"parse_s\":%.6f,\"build_s\":%.6f,\"render_s\":%.6f,"
                 "\"instance_s\":%.6f,\"device_s\":%.6f,\"upload_s\":%.6f,\"pipeline_ahead_s\":%.6f,\"pipeline_s\":%.6f,"
                 "\"first_dispatch_s\":%.6f,\"dispatch_s\":%.6f,\"readback_s\":%.6f,\"rays\":%llu,"
-                "\"shadow_rays\":%llu,\"secondary_rays\":%llu}",
+                "\"shadow_rays\":%llu,\"secondary_rays\":%llu,\"box_tests\":%llu,\"primitive_tests\":%llu}",
                 jsonQuoted(r.backend).c_str(), r.parseSeconds + r.buildSeconds + r.renderSeconds, r.parseSeconds, r.buildSeconds,
                 r.renderSeconds, r.instanceSeconds, r.deviceSeconds, v.uploadSeconds, r.pipelineAheadSeconds, v.pipelineSeconds,
                 v.firstDispatchSeconds, v.dispatchSeconds, v.readbackSeconds,
                 static_cast<unsigned long long>(r.rays.total()), static_cast<unsigned long long>(r.rays.shadow),
-                static_cast<unsigned long long>(r.rays.secondary));
+                static_cast<unsigned long long>(r.rays.secondary), static_cast<unsigned long long>(r.rays.boxTests),
+                static_cast<unsigned long long>(r.rays.primitiveTests));
   return buf;
 }
 

@@ -94,6 +94,12 @@ bool dispatchBand(ComputePipeline& pipeline, const void* push, std::uint32_t& re
     counter->shadowRays = 0;
     counter->secondaryRays = 0;
     counter->nonFinite = 0;
+    rays.boxTests += std::uint64_t{counter->boxTestsHigh} << 32 | counter->boxTestsLow;
+    rays.primitiveTests += std::uint64_t{counter->primitiveTestsHigh} << 32 | counter->primitiveTestsLow;
+    counter->boxTestsLow = 0;
+    counter->boxTestsHigh = 0;
+    counter->primitiveTestsLow = 0;
+    counter->primitiveTestsHigh = 0;
     const DispatchDone did{counter->finished, counter->steps, s};
     counter->finished = 0;
     counter->steps = 0;

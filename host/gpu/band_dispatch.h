@@ -21,7 +21,7 @@ namespace vkrt {
 // band never finishes (a bug guard: every pixel's work is bounded).
 //
 // What a dispatch did (GpuCounters): the pixels (raytrace.comp) or pixel samples
-// (pathtrace.comp) it finished, the steps it ran (pathtrace.comp; 0 for raytrace.comp), and
+// (pathtrace.comp) it finished, the steps it ran, and
 // its seconds.
 struct DispatchDone {
   std::uint64_t finished = 0, steps = 0;

@@ -12,12 +12,18 @@ struct RayCounts {
   // Pixels whose colour came out NaN or infinite (encoded as 0 or 1: image/encode.h); the
   // tests require 0 on every scene they render, and vkrt warns when it is not.
   std::uint64_t nonFinite = 0;
+  // The Vulkan backend's BVH walk (traverse.glsl): the child boxes and the leaves' primitives
+  // its rays tested (a shadow ray stops at its first hit); 0 where rays test every primitive,
+  // and from the CPU backend, which does not count them.
+  std::uint64_t boxTests = 0, primitiveTests = 0;
   std::uint64_t total() const { return primary + shadow + secondary; }
   RayCounts& operator+=(const RayCounts& o) {
     primary += o.primary;
     shadow += o.shadow;
     secondary += o.secondary;
     nonFinite += o.nonFinite;
+    boxTests += o.boxTests;
+    primitiveTests += o.primitiveTests;
     return *this;
   }
 };

@@ -96,10 +96,17 @@ struct GpuCounters {
   // Pixels (raytrace.comp) or pixel samples (pathtrace.comp) finished in this dispatch: the
   // progress bar moves with every dispatch, not only with every band.
   uint finished;
-  uint steps;               // pathtrace.comp's state-machine steps (the host sizes bands by their speed)
-  uint pad0, pad1;
+  uint steps;               // state-machine steps (the path renderer sizes its bands by their speed)
+  // The BVH walk's work (traverse.glsl; not counted where rays test every primitive): the
+  // child boxes tested (two a node entered) and the primitives tested in the leaves, each a
+  // 64-bit count as its low and high words (a GPU's dispatch may pass 2^32).
+  uint boxTestsLow, boxTestsHigh;
+  uint primitiveTestsLow, primitiveTestsHigh;
+  uint pad0, pad1;          // size 48
 };
-GPU_ASSERT_SIZE(GpuCounters, 32)
+GPU_ASSERT_SIZE(GpuCounters, 48)
+GPU_ASSERT_OFFSET(GpuCounters, boxTestsLow, 24)
+GPU_ASSERT_OFFSET(GpuCounters, primitiveTestsHigh, 36)
 
 // What both compute shaders save of a suspended traversal (traverse.glsl): the current ray and
 // its nearest hit so far, the shaded hit and the shadow ray leaving it, the phase of the state

@@ -201,6 +201,46 @@ TEST(GpuLoopBudget, SuspendingInTheMiddleOfADescentChangesNoPixel) {
   }
 }
 
+// The BVH walk's counts (RayCounts::boxTests and primitiveTests, which --stats prints a ray):
+// the work of the walk, the same whatever the step budget (a suspended walk goes on where it
+// stopped and tests nothing twice), the reads and the variant; a tree of one leaf tests its
+// primitives once a ray and no box.
+TEST(GpuWalkCounts, AreTheWalksWorkWhateverTheBudgetReadsAndVariant) {
+  VKRT_REQUIRE_GPU(context);
+  GpuScene deep = flatten(parseScene(loopBudgetScene(), "loop-budget.test"));
+  auto counts = [&](const GpuScene& scene, std::uint32_t budget, SceneReads reads, ShaderVariant variant) {
+    VulkanOptions o;
+    o.testAll = false;   // (a small scene would test every primitive instead of walking)
+    o.stepBudget = budget;
+    o.reads = reads;
+    o.variant = variant;
+    RayCounts rays;
+    renderVulkan(*context, scene, o, &rays, nullptr);
+    return rays;
+  };
+  const RayCounts whole = counts(deep, 0, SceneReads::Auto, ShaderVariant::Specialized);
+  EXPECT_GT(whole.boxTests, 2 * whole.total());   // several nodes a ray in a deep tree
+  EXPECT_GT(whole.primitiveTests, 0u);
+  for (std::uint32_t budget : {3u, 7u}) {
+    const RayCounts tiny = counts(deep, budget, SceneReads::Auto, ShaderVariant::Specialized);
+    EXPECT_EQ(tiny.boxTests, whole.boxTests) << "budget " << budget;
+    EXPECT_EQ(tiny.primitiveTests, whole.primitiveTests) << "budget " << budget;
+  }
+  const RayCounts storage = counts(deep, 0, SceneReads::Storage, ShaderVariant::General);
+  EXPECT_EQ(storage.boxTests, whole.boxTests);
+  EXPECT_EQ(storage.primitiveTests, whole.primitiveTests);
+
+  // One triangle: the root is a leaf, entered without a box test by every ray (camera and shadow).
+  GpuScene one = flatten(parseScene("size 24 16\ncamera 0 0 4 0 0 0 0 1 0 45\npoint 0 0 4 1 1 1\n"
+                                    "vertex -1 -1 0\nvertex 1 -1 0\nvertex 0 1 0\ntri 0 1 2\n",
+                                    "one.test"));
+  const RayCounts leaf = counts(one, 0, SceneReads::Auto, ShaderVariant::Specialized);
+  EXPECT_EQ(leaf.boxTests, 0u);
+  EXPECT_EQ(leaf.primitiveTests, leaf.total());
+  EXPECT_GT(leaf.shadow, 0u);
+  EXPECT_EQ(context->validationMessages(), 0);
+}
+
 // Small scenes (testsEveryPrimitive), each primitive in the BVH, test every primitive with
 // each ray instead of walking the BVH (kSpecTestAll, traverse.glsl's traceRay): the same bits
 // as the walk, specialised and general, and suspended after every few steps, where a ray

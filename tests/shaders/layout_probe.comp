@@ -78,7 +78,8 @@ void main() {
   put(ps.trace);
   GpuCounters c = counters[1];
   put(c.suspended); put(c.shadowRays); put(c.secondaryRays); put(c.nonFinite);
-  put(c.finished); put(c.steps); put(c.pad0); put(c.pad1);
+  put(c.finished); put(c.steps); put(c.boxTestsLow); put(c.boxTestsHigh); put(c.primitiveTestsLow);
+  put(c.primitiveTestsHigh); put(c.pad0); put(c.pad1);
   GpuPathPush pp2 = pathPush[1];
   put(pp2.bandY0); put(pp2.resume); put(pp2.pad0); put(pp2.pad1);
   // The push constants: one block, not an array.
