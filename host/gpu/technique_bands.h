@@ -69,9 +69,10 @@ struct TechniqueBatch {
   RowSink rows;
 };
 
-// Renders `batch` with `shader` over the scene's `upload`: `timings` holds the caller's upload
-// seconds, and gets the rest. Returns the image, incomplete when `batch.stop` ended it (rays
-// and timings are then left as they were). Throws as renderVulkan.
+// Renders `batch` with `shader` over the scene's `upload`. `t` comes with the caller's upload
+// seconds and gets the rest; `rays` and `timings` (may be null) receive the counts and `t` once
+// the render is whole. Returns the image, incomplete when `batch.stop` ended it (rays and
+// timings are then left as they were). Throws as renderVulkan.
 RadianceImage renderTechniqueBands(const Context& context, const SceneUpload& upload, const TechniqueShader& shader,
                                    const TechniqueBatch& batch, RayCounts* rays, VulkanTimings* timings,
                                    VulkanTimings t);

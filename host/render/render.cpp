@@ -368,6 +368,7 @@ RadianceImage renderPrepared(const RenderRequest& request, PreparedRender& prepa
       prepared.plan, report);
   report.renderSeconds += secondsSince(t0);
   backend->finish();
+  backend.reset();   // (the BVH, the GPU's arrays and buffers: nothing after this reads them)
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
   checkFinite(request, scene, report);
