@@ -1,8 +1,7 @@
 // The seam between the pipeline (render.cpp) and the backends: a RenderBackend validates a scene
 // against its own limits, builds what it renders from, and renders sample batches of the
 // scene's technique. render.cpp asks one (makeBackend) and knows nothing of which technique
-// or device renders: each backend chooses its technique for the scene's integrator in one
-// place (cpu_backend.cpp, vulkan_backend.cpp).
+// or device renders; the backends take the scene's technique from render/techniques.h.
 #pragma once
 
 #include <cstdint>

@@ -1,12 +1,11 @@
-// The CPU reference as a backend: the BVH, then each batch by the scene's technique, the
-// Whitted model (renderReference) or a path integrator (renderPathReference).
+// The CPU reference as a backend: the BVH, then each batch by the scene's technique
+// (render/techniques.h).
 #include <chrono>
 #include <thread>
 
-#include "cpu/path_reference.h"
-#include "cpu/reference.h"
 #include "render/backend.h"
 #include "render/cpu_backend.h"
+#include "render/techniques.h"
 #include "util/timing.h"
 
 namespace vkrt {
@@ -18,6 +17,7 @@ class CpuBackend : public RenderBackend {
 
   void build(SceneDesc& scene) override {
     scene_ = &scene;
+    technique_ = techniqueFor(scene).cpu(in_);
     auto t0 = std::chrono::steady_clock::now();
     bvh_ = buildBvh(scene);
     in_.report.buildSeconds = secondsSince(t0);
@@ -29,20 +29,7 @@ class CpuBackend : public RenderBackend {
 
   RadianceImage renderBatch(const SampleBatch& batch, const PixelProgress& px) override {
     RayCounts rays;
-    RadianceImage image;
-    if (scene_->path.integrator == Integrator::Raytracer) {
-      CpuOptions o;
-      o.threads = in_.request.threads;
-      if (in_.rows) o.rows = *in_.rows;
-      setBatch(o, in_.request, in_.plan, batch, batchProgress(in_.plan, in_.progress, px));
-      image = renderReference(*scene_, bvh_, o, &rays);
-    } else {
-      PathOptions o;
-      o.threads = in_.request.threads;
-      o.stratified = in_.request.stratified;
-      setBatch(o, in_.request, in_.plan, batch, batchProgress(in_.plan, in_.progress, px));
-      image = renderPathReference(*scene_, bvh_, o, &rays);
-    }
+    RadianceImage image = technique_(*scene_, bvh_, batch, batchProgress(in_.plan, in_.progress, px), &rays);
     in_.report.rays += rays;
     return image;
   }
@@ -50,6 +37,7 @@ class CpuBackend : public RenderBackend {
  private:
   const SceneDesc* scene_ = nullptr;
   Bvh bvh_;
+  CpuTechnique technique_;
 };
 
 }  // namespace

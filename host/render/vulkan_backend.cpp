@@ -1,6 +1,5 @@
 // The Vulkan renderers as a backend: the device, the GPU's arrays (the first batch's pipeline
-// made while the BVH builds), then each batch by the scene's technique, chosen in one place
-// (vulkanTechnique): the Whitted model (renderVulkan) or a path integrator (VulkanPathRender).
+// made while the BVH builds), then each batch by the scene's technique (render/techniques.h).
 #include "render/vulkan_backend.h"
 
 #include <chrono>
@@ -8,8 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "gpu/vulkan_path_renderer.h"
+#include "gpu/vulkan_path_renderer.h"   // lightSlotsProblem
 #include "gpu/vulkan_renderer.h"
+#include "render/techniques.h"
 #include "scene/diagnostic.h"
 #include "scene/emitters.h"
 #include "scene/flatten.h"
@@ -18,62 +18,6 @@
 
 namespace vkrt {
 namespace {
-
-// The settings both Vulkan renderers' options share (VulkanOptions, VulkanPathOptions), for one
-// batch: the request's step budget, reads and variant, and setBatch's.
-template <class Options>
-Options vulkanOptions(const RenderRequest& request, const SamplePlan& plan, const SampleBatch& batch,
-                      PixelProgress progress) {
-  Options o;
-  o.stepBudget = request.stepBudget;
-  o.reads = request.reads;
-  o.variant = request.variant;
-  setBatch(o, request, plan, batch, std::move(progress));
-  return o;
-}
-
-// A technique on the Vulkan backend: its pipeline made ahead (from the scene's arrays before
-// the BVH is built), and a batch rendered.
-struct VulkanTechnique {
-  std::function<void(const Context&, const GpuScene& arrays, const SampleBatch& first, bool eachPrimitiveOnce)> prepare;
-  std::function<RadianceImage(const Context&, const GpuScene&, const SampleBatch&, PixelProgress, RayCounts*,
-                              VulkanTimings*)>
-      render;
-};
-
-// The scene's technique: the Whitted model, or the path integrators (whose batches share one
-// upload of the scene: `pathRender`).
-VulkanTechnique vulkanTechnique(const RenderRequest& request, const SamplePlan& plan, const SceneDesc& scene,
-                                const RowSink* rows, std::unique_ptr<VulkanPathRender>& pathRender) {
-  if (scene.path.integrator == Integrator::Raytracer) {
-    auto options = [&request, &plan, rows](const SampleBatch& batch, PixelProgress pixels) {
-      VulkanOptions o = vulkanOptions<VulkanOptions>(request, plan, batch, std::move(pixels));
-      o.cutoff = request.cutoff;
-      if (rows) o.rows = *rows;
-      return o;
-    };
-    return {[options](const Context& context, const GpuScene& arrays, const SampleBatch& first, bool eachOnce) {
-              prepareVulkanPipeline(context, arrays, options(first, {}), eachOnce);
-            },
-            [options](const Context& context, const GpuScene& gpuScene, const SampleBatch& batch, PixelProgress px,
-                      RayCounts* rays, VulkanTimings* timings) {
-              return renderVulkan(context, gpuScene, options(batch, std::move(px)), rays, timings);
-            }};
-  }
-  auto options = [&request, &plan](const SampleBatch& batch, PixelProgress pixels) {
-    VulkanPathOptions o = vulkanOptions<VulkanPathOptions>(request, plan, batch, std::move(pixels));
-    o.stratified = request.stratified;
-    return o;
-  };
-  return {[options](const Context& context, const GpuScene& arrays, const SampleBatch& first, bool eachOnce) {
-            prepareVulkanPathPipeline(context, arrays, options(first, {}), eachOnce);
-          },
-          [options, &pathRender](const Context& context, const GpuScene& gpuScene, const SampleBatch& batch,
-                                 PixelProgress px, RayCounts* rays, VulkanTimings* timings) {
-            if (!pathRender) pathRender = std::make_unique<VulkanPathRender>(context, gpuScene);
-            return pathRender->render(options(batch, std::move(px)), rays, timings);
-          }};
-}
 
 class VulkanBackend : public RenderBackend {
  public:
@@ -92,7 +36,7 @@ class VulkanBackend : public RenderBackend {
     }
     in_.report.backend = std::string("vulkan (") + context_->properties().deviceName + ")";
     in_.report.renderSeconds = secondsSince(t0);   // the device's setup counts as the render's
-    technique_ = vulkanTechnique(in_.request, in_.plan, scene, in_.rows, pathRender_);
+    technique_ = techniqueFor(scene).vulkan(in_);
     pipelinesBefore_ = context_->pipelines().made();
 
     t0 = std::chrono::steady_clock::now();
@@ -133,9 +77,8 @@ class VulkanBackend : public RenderBackend {
  private:
   RenderSession& session_;
   const Context* context_ = nullptr;
-  VulkanTechnique technique_;
   GpuScene gpuScene_;
-  std::unique_ptr<VulkanPathRender> pathRender_;   // declared after gpuScene_, which it reads
+  VulkanTechnique technique_;   // declared after gpuScene_, which what it keeps reads
   std::size_t pipelinesBefore_ = 0;
 };
 
