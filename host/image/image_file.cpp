@@ -17,6 +17,7 @@
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/ppm.h"
+#include "util/text.h"   // escapedBytes
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
@@ -279,13 +280,18 @@ struct StbSource {
   std::FILE* file;
   unsigned char head[24] = {};
   std::size_t headSize = 0, headUsed = 0;
+  // stb asked for bytes past the end of the file (it then reads zeros): the file is cut short
+  // of what its own headers say it holds.
+  bool starved = false;
 
   static int read(void* user, char* data, int size) {
     auto* s = static_cast<StbSource*>(user);
     const std::size_t fromHead = std::min(s->headSize - s->headUsed, static_cast<std::size_t>(size));
     std::memcpy(data, s->head + s->headUsed, fromHead);
     s->headUsed += fromHead;
-    return static_cast<int>(fromHead + std::fread(data + fromHead, 1, static_cast<std::size_t>(size) - fromHead, s->file));
+    const std::size_t got = fromHead + std::fread(data + fromHead, 1, static_cast<std::size_t>(size) - fromHead, s->file);
+    if (got == 0 && size > 0) s->starved = true;
+    return static_cast<int>(got);
   }
   // stb skips forward only. A FIFO cannot seek: its bytes are read and dropped.
   static void skip(void* user, int n) {
@@ -301,9 +307,12 @@ struct StbSource {
       rest -= got;
     }
   }
+  // At the end once a read found nothing more: the end-of-file flag alone does not say so after
+  // a skip past the end (fseek clears it), and stb's JPEG reader then looked for a marker in
+  // the zeros it reads past the end for ever (a JPEG cut at 6 to 10 bytes hung vkrt).
   static int eof(void* user) {
     auto* s = static_cast<StbSource*>(user);
-    return s->headUsed == s->headSize && (std::feof(s->file) || std::ferror(s->file));
+    return s->headUsed == s->headSize && (s->starved || std::feof(s->file) || std::ferror(s->file));
   }
 };
 
@@ -330,21 +339,26 @@ void checkPngHasPixels(const StbSource& source, const std::string& path) {
   checkImageHasPixels(path, bigEndian(source.head + 16), bigEndian(source.head + 20));
 }
 
-// Why stb_image failed, in plain words where its terse reason is known; an unknown one as it
-// is. A failed read gives the system's reason whatever stb made of the bytes it got.
+// Why stb_image failed, in plain words where its terse reason is known, and always with a
+// reason. A failed read gives the system's reason whatever stb made of the bytes it got; a
+// file of no format stb knows is not an image; one that ended where stb wanted more is truncated, whatever stb then made of the zeros it
+// read instead (a chunk "first not IHDR", a bit depth, a chunk type of no letters); another
+// reason is named as stb's, escaped ("a damaged or unsupported PNG or JPEG (stb_image: ...)").
 IoError stbFailure(const StbSource& source, const std::string& path) {
-  const std::string reason = stbi_failure_reason() ? stbi_failure_reason() : "unknown failure";
-  std::string why = reason;
+  const std::string reason = stbi_failure_reason() ? stbi_failure_reason() : "";
+  std::string why;
   if (std::ferror(source.file))
     why = std::strerror(errno);
-  else if (reason == "outofdata")
-    why = "the file ends early (it is truncated)";
-  else if (reason == "unknown image type")
-    why = "not an image vkrt reads (PNG, PPM, PFM, EXR or JPEG)";
   else if (reason == "0 width")
     why = "the JPEG is 0 pixels wide, and an image has at least one pixel";
   else if (reason == "outofmem")
     why = "out of memory";
+  else if (reason == "unknown image type")
+    why = "not an image vkrt reads (PNG, PPM, PFM, EXR or JPEG)";
+  else if (reason == "outofdata" || source.starved)
+    why = "the file ends early (it is truncated)";
+  else
+    why = "a damaged or unsupported PNG or JPEG" + (reason.empty() ? std::string() : " (stb_image: '" + escapedBytes(reason) + "')");
   return imageReadError(path, why);
 }
 

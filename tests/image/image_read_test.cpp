@@ -12,8 +12,13 @@
 #include "util/errors.h"
 #include "image/image_file.h"
 #include "image/pfm.h"
+#include "image/image_read.h"
 #include "image/png.h"
 #include "test_support.h"
+
+#define STB_IMAGE_WRITE_STATIC   // (the test's own JPEG writer: vkrt reads JPEG, never writes it)
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb_image_write.h>
 
 using namespace vkrt;
 using namespace vkrt::test;
@@ -228,4 +233,56 @@ TEST(ReadErrors, UnopenableFileSaysTheSystemsReason) {
   writePngAtomic(gradient(2, 2), dir + "/plain.png");
   EXPECT_EQ(readFailure(dir + "/plain.png/inside.png"),
             "cannot read image '" + dir + "/plain.png/inside.png': Not a directory");
+}
+
+// Every reader gives a reason for every failure: a PNG, PPM, PFM, EXR and JPEG cut at every
+// length (and a PNG with a damaged byte in its image data) are refused with a message that
+// names the file and says why, never "cannot read image 'X': " with nothing after it; a cut
+// PNG is "truncated" from its eighth byte on (its signature whole), whatever stb_image then
+// made of the zeros it read instead (it said "first not IHDR", "1/2/4/8/16-bit only", "" ...).
+TEST(ReadErrors, EveryCutOfEveryFormatSaysWhy) {
+  const std::string dir = freshDir("image-read/cuts");
+  RadianceImage small(6, 5);
+  for (std::size_t i = 0; i < small.rgb.size(); ++i) small.rgb[i] = static_cast<float>(i % 7) / 7.0f;
+  std::vector<std::string> files;
+  for (const char* ext : {"png", "ppm", "pfm", "exr"}) {
+    files.push_back(dir + "/whole." + ext);
+    writeImageAtomic(small, files.back(), 1.0);
+  }
+  const Image bytes = gradient(6, 5);
+  files.push_back(dir + "/whole.jpg");
+  ASSERT_NE(stbi_write_jpg(files.back().c_str(), bytes.width, bytes.height, 3, bytes.rgb.data(), 90), 0);
+  for (const std::string& whole : files) {
+    const std::string data = readFile(whole);
+    ASSERT_NO_THROW(readAnyImage(whole)) << whole;
+    const std::string ext = whole.substr(whole.rfind('.'));
+    for (std::size_t n = 1; n < data.size(); ++n) {
+      const std::string cut = dir + "/cut-" + std::to_string(n) + ext;
+      writeFile(cut, data.substr(0, n));
+      std::string message;
+      try {
+        readAnyImage(cut);
+      } catch (const IoError& e) {
+        message = e.what();
+      }
+      // (A JPEG cut within its entropy-coded data may still decode: stb_image fills the rest.)
+      if (message.empty() && ext == ".jpg") continue;
+      const std::string prefix = "cannot read image '" + cut + "': ";
+      ASSERT_EQ(message.rfind(prefix, 0), 0u) << n << " bytes of " << whole << ": '" << message << "'";
+      EXPECT_GT(message.size(), prefix.size() + 5) << n << " bytes of " << whole << ": no reason in '" << message << "'";
+      if (ext == ".png" && n >= 8) {
+        EXPECT_NE(message.find("truncated"), std::string::npos) << n << " bytes: " << message;
+      }
+      std::filesystem::remove(cut);
+    }
+  }
+  // A PNG whole but for the first byte of its image data (the zlib stream's method): damaged,
+  // with stb_image's reason.
+  std::string damaged = readFile(dir + "/whole.png");
+  const std::size_t idat = damaged.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  damaged[idat + 4] = '\x7F';
+  writeFile(dir + "/damaged.png", damaged);
+  const std::string message = readFailure(dir + "/damaged.png");
+  EXPECT_NE(message.find("damaged or unsupported"), std::string::npos) << message;
 }
