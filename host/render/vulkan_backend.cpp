@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gpu/vulkan_path_renderer.h"   // lightSlotsProblem
-#include "gpu/vulkan_renderer.h"
+#include "gpu/vulkan_settings.h"       // VulkanTimings, addBatchTimings
 #include "render/techniques.h"
 #include "scene/diagnostic.h"
 #include "scene/emitters.h"
