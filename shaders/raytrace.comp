@@ -20,18 +20,10 @@
 layout(constant_id = kSpecHasSpecular) const bool kHasSpecular = true;
 layout(constant_id = kSpecCutoff) const bool kCutoff = true;
 
-// The push constants are copied, into the private `pc` (fewer instructions than reads where
-// used: bench/README.md, "Parameters in storage buffers").
-layout(push_constant) uniform Push { GpuPushConstants pcStored; };
-GpuPushConstants pc;
-void copyTechniqueParams() { pc = pcStored; }
-
-#define TechniqueState GpuWhittedState
-#include "technique.glsl"   // pixels[] (rgb radiance), states[], the scene, traversal, tiles
+#include "whitted_host.glsl"   // pc, states[], the scene, traversal; the lane's pixel of each tile in turn
 
 // ---- per-invocation state (registers; saved to states[] only on suspension) -----------------
 // (the ray, its hit, the shadow ray and the traversal stack: traverse.glsl)
-uint pixelX, pixelY;   // the lane's pixel's column and row in the band (not saved: tile tells them)
 vec3 throughput, radiance;
 vec3 lightColor;   // of the current shadow ray: the light's colour over its attenuation
 uint depth;
@@ -40,9 +32,7 @@ uint depth;
 
 // The nearest hit is known: ambient and emission, then the lights one by one.
 void beginShading() {
-  hitPoint = rayOrigin + bestT * rayDir;
-  surfaceAt(hitPrim, rayOrigin, rayDir, bestT, vec2(bestB1, bestB2), hitPoint, pc.camera.origin.xyz, hitNormal,
-            hitMaterial);
+  surfaceAtHit();
   GpuMaterial m = loadMaterial(hitMaterial);
   radiance += throughput * (m.ambient.rgb + m.emission.rgb);
   lightIndex = 0u;
@@ -146,50 +136,13 @@ void loadTechniqueState(uint slot) {
 
 // ---- pixels ----------------------------------------------------------------------------------
 
-// The camera ray through the pixel's centre, in the full image's pixel coordinates.
+// A pixel starts: no radiance yet, at full weight, and its camera ray.
 void startPixel() {
-  uvec2 pixel = uvec2(pixelX + params.originX, pc.bandY0 + pixelY + params.originY);
-  vec3 dir = cameraRayDirection(pc.camera, pixel, vec2(0.5));
-  throughput = vec3(1.0);
   radiance = vec3(0.0);
+  throughput = vec3(1.0);
   depth = 0u;
-  startRay(pc.camera.origin.xyz, dir, 0.0);
+  startCameraRay();
 }
-
-// The lane's pixel in `tile`: whether it lies inside the band (the last tiles of a row or of
-// the band may stick out).
-bool setPixel() {
-  pixelX = (tile % params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.x;
-  pixelY = (tile / params.tilesX) * kWorkgroupSize + gl_LocalInvocationID.y;
-  return pixelX < params.width && pixelY < bandRows;
-}
-uint bandSlot() { return pixelY * params.width + pixelX; }
-
-// The pixel is done: its radiance is written (a NaN or infinite one is counted, so that none
-// reaches the image unseen: the output encodes NaN as 0 and an infinity as 0 or 1), and the
-// invocation's next pixel starts: the same place in the next tile of its run, if any.
-// (The column and row are stepped, not divided out: a vector's integer division is a
-// division per lane on the CPU.)
-void endPath() {
-  if (any(isnan(radiance)) || any(isinf(radiance))) ++nonFinite;
-  pixels[pixelY * params.width + pixelX] = vec4(radiance, 1.0);
-  ++finished;
-  do {
-    ++tile;
-    pixelX += kWorkgroupSize;
-    if (pixelX >= params.tilesX * kWorkgroupSize) {
-      pixelX -= params.tilesX * kWorkgroupSize;
-      pixelY += kWorkgroupSize;
-    }
-  } while (tile < runEnd && (pixelX >= params.width || pixelY >= bandRows));
-  if (tile < runEnd)
-    startPixel();
-  else
-    phase = kPhaseDone;
-}
-
-// The lane's first pixel of its run, and how a suspended one goes on (its pixel is set).
-void startFirstPixel() { startPixel(); }
-void resumePixel() {}
+vec3 pixelColor() { return radiance; }
 
 #include "driver.glsl"   // main(): the step loop, suspension, the done marker, the counters

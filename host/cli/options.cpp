@@ -14,6 +14,7 @@
 #include "cli/option_values.h"
 #include "image/crop.h"
 #include "image/image_file.h"
+#include "render/techniques.h"
 #include "util/text.h"   // echoed, abbreviated
 #include "util/suggest.h"
 
@@ -55,6 +56,17 @@ void setOutput(R& o, const V& v) {
   o.output = v();
   if (o.output->empty()) throw UsageError("option " + v.name + " needs a non-empty file name");
   refuseStandardOutput(v.name, *o.output);
+}
+
+// --view NAME: one of the views of render/techniques.cpp.
+void setView(R& o, const V& v) {
+  const std::string name = v();
+  if (!viewNamed(name)) {
+    std::string names;
+    for (const Technique* t : views()) names += (names.empty() ? "" : ", ") + std::string(t->name);
+    throw UsageError("unknown view '" + echoed(name) + "' (expected: " + names + ")");
+  }
+  o.request.view = name;
 }
 
 void setCrop(R& o, const V& v) {
@@ -126,6 +138,7 @@ const OptionRow<R> kRenderRows[] = {
      }},
     {"--maxdepth", "N", "override the scene's maxdepth (fewer reflections: faster, less exact)",
      [](R& o, const V& v) { o.request.maxDepth = integerValue(v.name, v(), 0, 1000000); }},
+    {"--view", "NAME", "\frender a view of the scene instead of its image: {views}", setView},
     {"--spp", "N", "path integrators: N samples per pixel instead of the scene's spp", setSpp},
     {"--seed", "N",
      "path integrators: the random numbers' seed, 0 to 4294967295\n"

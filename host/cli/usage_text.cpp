@@ -8,6 +8,7 @@
 #include "cli/option_rows.h"
 #include "cli/option_values.h"   // floatExtension
 #include "image/image_file.h"
+#include "render/techniques.h"
 
 namespace vkrt {
 
@@ -53,14 +54,23 @@ std::string heatmapNamesText() {
   return std::string(imageFormats().front().name) + (others.empty() ? "" : ", or " + others);
 }
 
+// "normals (each pixel's surface normal ...)": the views, each with what it shows.
+std::string viewsText() {
+  std::string text;
+  for (const Technique* t : views()) text += (text.empty() ? "" : "; ") + std::string(t->name) + " (" + t->view + ")";
+  return text;
+}
+
 // The placeholders of a help text, replaced: {ext} (".png"), {extensions} (".png, .ppm, .pfm
-// or .exr"), {image names} (imageNamesHelpText("FILE")), {heatmap names} (heatmapNamesText()).
+// or .exr"), {image names} (imageNamesHelpText("FILE")), {heatmap names} (heatmapNamesText()),
+// {views} (viewsText()).
 std::string expanded(std::string_view text) {
   const std::pair<std::string_view, std::string> values[] = {
       {"{ext}", defaultImageExtension()},
       {"{extensions}", imageExtensionsText()},
       {"{image names}", imageNamesHelpText("FILE")},
-      {"{heatmap names}", heatmapNamesText()}};
+      {"{heatmap names}", heatmapNamesText()},
+      {"{views}", viewsText()}};
   std::string out(text);
   for (const auto& [key, value] : values)
     for (std::size_t at = out.find(key); at != std::string::npos; at = out.find(key, at + value.size()))

@@ -91,14 +91,10 @@ class Tracer {
 
 }  // namespace
 
-RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options,
-                              RayCounts* counts) {
+RadianceImage shadeEachPixelOnce(const SceneDesc& scene, const CpuOptions& options,
+                                 const std::function<dvec3(int x, int y, RayCounts& counts)>& shade,
+                                 RayCounts* counts) {
   const PixelRect region = options.crop ? *options.crop : PixelRect{0, 0, scene.width, scene.height};
-  Tracer tracer(scene, bvh);
-  auto shade = [&](int x, int y, RayCounts& local) {
-    ++local.primary;
-    return tracer.trace(tracer.cameraRay(x, y), local);
-  };
   if (!options.rows) {
     RadianceImage image(region.width(), region.height());
     image.samples = options.sampleCount;   // the mean of identical samples is the one traced
@@ -133,6 +129,18 @@ RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuO
   RadianceImage empty;
   empty.samples = options.sampleCount;
   return empty;
+}
+
+RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options,
+                              RayCounts* counts) {
+  Tracer tracer(scene, bvh);
+  return shadeEachPixelOnce(
+      scene, options,
+      [&](int x, int y, RayCounts& local) {
+        ++local.primary;
+        return tracer.trace(tracer.cameraRay(x, y), local);
+      },
+      counts);
 }
 
 }  // namespace vkrt

@@ -46,4 +46,11 @@ struct CpuOptions {
 // scene.path.integrator != Integrator::Raytracer).
 RadianceImage renderReference(const SceneDesc& scene, const Bvh& bvh, const CpuOptions& options, RayCounts* counts);
 
+// What every technique of one deterministic sample a pixel shares (the Whitted model, the views):
+// shade(x, y, counts) for each pixel of the options' region (crop) on its threads, into an image
+// whose samples are options.sampleCount, or with options.rows in bands handed there.
+RadianceImage shadeEachPixelOnce(const SceneDesc& scene, const CpuOptions& options,
+                                 const std::function<dvec3(int x, int y, RayCounts& counts)>& shade,
+                                 RayCounts* counts);
+
 }  // namespace vkrt

@@ -6,9 +6,17 @@
 #include "gpu/band_buffers.h"
 #include "gpu/compute_pipeline.h"
 #include "gpu/shader_variant.h"
+#include "util/errors.h"
 #include "util/timing.h"
+#include "all_techniques.comp.h"   // kTechniqueSpirv: every shaders/*.comp, compiled at build time
 
 namespace vkrt {
+
+const TechniqueSpirv& techniqueSpirv(std::string_view name) {
+  for (const TechniqueSpirv& row : kTechniqueSpirv)
+    if (name == row.name) return row;
+  throw InternalError("no shader shaders/" + std::string(name) + ".comp");
+}
 
 void prepareTechnique(const Context& context, const TechniqueShader& shader, SceneArrays arrays,
                       std::uint32_t pushBytes) {

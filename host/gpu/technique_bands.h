@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gpu/band_layout.h"
@@ -22,6 +23,18 @@
 #include "util/ray_counts.h"
 
 namespace vkrt {
+
+// The SPIR-V of a technique's shader, shaders/NAME.comp, built with storage reads and with
+// texel reads (VKRT_TEXEL_READS); CMakeLists.txt builds every one.
+struct TechniqueSpirv {
+  const char* name;
+  const std::uint32_t* words;
+  std::size_t bytes;
+  const std::uint32_t* texelWords;
+  std::size_t texelBytes;
+};
+// Throws InternalError when there is no shaders/NAME.comp.
+const TechniqueSpirv& techniqueSpirv(std::string_view name);
 
 // A technique's compute shader as chosen for a batch: the module (texel or storage reads, or
 // another build of it), the variant's specialization constants, and what --stats says of them.

@@ -18,8 +18,6 @@
 #include "gpu/scene_upload.h"
 #include "gpu/shader_variant.h"
 #include "gpu/technique_bands.h"
-#include "pathtrace.comp.h"         // kPathtraceSpirv: the shader, compiled at build time
-#include "pathtrace_texel.comp.h"   // kPathtraceTexelSpirv: the same with VKRT_TEXEL_READS
 #include "pathtrace_quad.comp.h"         // kPathtraceQuadSpirv: VKRT_QUAD_LIGHTS_ONLY
 #include "pathtrace_quad_texel.comp.h"   // kPathtraceQuadTexelSpirv: both
 #include "util/timing.h"
@@ -73,8 +71,8 @@ PathModule pathModule(bool texelReads, bool quadLightsOnly) {
   if (quadLightsOnly)
     return texelReads ? PathModule{kPathtraceQuadTexelSpirv, sizeof kPathtraceQuadTexelSpirv}
                       : PathModule{kPathtraceQuadSpirv, sizeof kPathtraceQuadSpirv};
-  return texelReads ? PathModule{kPathtraceTexelSpirv, sizeof kPathtraceTexelSpirv}
-                    : PathModule{kPathtraceSpirv, sizeof kPathtraceSpirv};
+  const TechniqueSpirv& whole = techniqueSpirv("pathtrace");
+  return texelReads ? PathModule{whole.texelWords, whole.texelBytes} : PathModule{whole.words, whole.bytes};
 }
 
 // Throws DeviceError for lightSlotsProblem (the render's caller says where in the scene first).

@@ -15,8 +15,6 @@
 #include "gpu/shader_variant.h"
 #include "gpu/technique_bands.h"
 #include "util/timing.h"
-#include "raytrace.comp.h"         // kRaytraceSpirv: the shader, compiled at build time
-#include "raytrace_texel.comp.h"   // kRaytraceTexelSpirv: the same with VKRT_TEXEL_READS
 
 namespace vkrt {
 namespace {
@@ -113,8 +111,9 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
   // Texel reads where every scene buffer fits the device's texel-count limit and the device
   // allows the shader that many storage texel buffers.
   s.texelReads = chooseTexelReads(options.reads, SceneArrays::Whitted, texelsFit, context.properties().limits);
-  s.words = s.texelReads ? kRaytraceTexelSpirv : kRaytraceSpirv;
-  s.bytes = s.texelReads ? sizeof(kRaytraceTexelSpirv) : sizeof(kRaytraceSpirv);
+  const TechniqueSpirv& spirv = techniqueSpirv(options.shader);
+  s.words = s.texelReads ? spirv.texelWords : spirv.words;
+  s.bytes = s.texelReads ? spirv.texelBytes : spirv.bytes;
   s.specializedKey = variantKey(context.properties(), s.words, s.bytes, specConstants(false));
   s.general = options.variant == ShaderVariant::General ||
               (options.variant == ShaderVariant::Auto &&

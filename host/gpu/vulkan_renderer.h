@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "util/ray_counts.h"
 #include "gpu/context.h"
@@ -19,6 +20,10 @@
 namespace vkrt {
 
 struct VulkanOptions {
+  // The shader: "raytrace" (shaders/raytrace.comp, the Whitted model), or a view's
+  // (render/techniques.cpp) that keeps this host's state and parameters (GpuWhittedState,
+  // GpuPushConstants) and walks its pixels the same way (shaders/whitted_host.glsl).
+  std::string_view shader = "raytrace";
   SceneReads reads = SceneReads::Auto;    // Auto: texel buffers where the device's limits allow
   std::uint32_t stepBudget = 0;           // steps per invocation per dispatch; 0: kDefaultStepBudget
   std::size_t maxStateBytes = 64u << 20;  // bounds a band's suspended-state buffer

@@ -17,7 +17,7 @@ class CpuBackend : public RenderBackend {
 
   void build(SceneDesc& scene) override {
     scene_ = &scene;
-    technique_ = techniqueFor(scene).cpu(in_);
+    technique_ = techniqueFor(scene, in_.request.view).cpu(in_);
     auto t0 = std::chrono::steady_clock::now();
     bvh_ = buildBvh(scene);
     in_.report.buildSeconds = secondsSince(t0);

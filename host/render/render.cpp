@@ -27,6 +27,7 @@
 #include "util/interrupt.h"
 #include "render/backend.h"
 #include "render/progressive.h"
+#include "render/techniques.h"
 #include "scene/emitters.h"
 #include "scene/flatten.h"
 #include "scene/diagnostic.h"
@@ -84,11 +85,12 @@ std::string applyEstimator(const RenderRequest& request, SceneDesc& scene) {
 }
 
 // The samples of this render, and the warnings for options that do not apply (the Whitted
-// model has one deterministic sample: --spp, --seed, --time and --sampler change nothing).
-SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, ProgressBar& progress) {
+// model and the views have one deterministic sample: --spp, --seed, --time and --sampler
+// change nothing).
+SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, bool sampled, ProgressBar& progress) {
   SamplePlan plan;
   plan.progressive.stop = [] { return pendingInterrupt() != 0; };
-  if (scene.path.integrator == Integrator::Raytracer) {
+  if (!sampled) {
     std::vector<std::string> given;
     if (request.spp > 0) given.push_back("--spp");
     if (request.seed) given.push_back("--seed");
@@ -98,8 +100,10 @@ SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, Prog
       std::string list;
       for (std::size_t i = 0; i < given.size(); ++i)
         list += (i == 0 ? "" : i + 1 == given.size() ? " and " : ", ") + given[i];
-      warnOption(request, list + (given.size() > 1 ? " do" : " does") + " not apply to " + scene.sourcePath +
-                              ": its integrator is raytracer (one deterministic sample per pixel)");
+      warnOption(request, list + (given.size() > 1 ? " do" : " does") + " not apply to " +
+                              (request.view.empty() ? scene.sourcePath + ": its integrator is raytracer"
+                                                    : "--view " + request.view) +
+                              " (one deterministic sample per pixel)");
     }
     plan.progressive.spp = 1;   // one batch; the bar counts pixels (the backend's progress)
     plan.progressive.progress = nullptr;
@@ -147,15 +151,16 @@ void checkImageFitsInMemory(const SceneDesc& scene, int width, int height, bool 
 
 // The render's identity (image/render_identity.h): the scene file's bytes and every setting
 // that changes the picture: the full image size (after --size or --scale), maxdepth (after
-// --maxdepth) and, for a path integrator, whether its camera samples pixel centres (spp 1:
-// gpu_types.h; --spp and --time decide). Left out: the crop (tiles of one render differ in
+// --maxdepth), the view (--view) and, for a path integrator, whether its camera samples pixel
+// centres (spp 1: gpu_types.h; --spp and --time decide). Left out: the crop (tiles of one render differ in
 // it), the seed and the samples (batches of one render differ in them; the samples record
 // keeps them apart), and what changes only rounding or speed (the backend and device,
 // threads, --reads, --step-budget, --no-specialize, --cutoff).
-std::uint64_t renderIdentity(const SceneDesc& scene, bool pathIntegrator) {
+std::uint64_t renderIdentity(const SceneDesc& scene, bool pathIntegrator, const std::string& view) {
   Fnv1a64 hash;
   hash.add("vkrt-render 1\nsize " + std::to_string(scene.width) + " " + std::to_string(scene.height) +
            "\nmaxdepth " + std::to_string(scene.maxDepth) + "\n");
+  if (!view.empty()) hash.add("view " + view + "\n");   // (none: the identities of before views)
   if (pathIntegrator) hash.add(std::string("pixel-centres ") + (scene.path.spp == 1 ? "1" : "0") + "\n");
   // The scene's text as it was parsed (hashed by the parser: the file is not read again, and a
   // scene read from a pipe has its identity too).
@@ -330,7 +335,7 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
       throw UsageError("--crop " + formatPixelRect(*request.crop) + ": " + problem +
                        " (" + scene.sourcePath + ")");
   }
-  report.pathIntegrator = scene.path.integrator != Integrator::Raytracer;
+  report.pathIntegrator = techniqueFor(scene, request.view).sampled;
   prepared.streamed = mayStream && !report.pathIntegrator;
   // The image written: the whole, or the crop.
   report.width = request.crop ? request.crop->width() : scene.width;
@@ -341,9 +346,10 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   report.lights = countLights(scene);
 
   // The Whitted model ignores `gamma` (doc/path-tracing.md, "Commands"): its bytes are doc/scene-format.md
-  // section 7's, and the shader's exactness cut-off reasons in those (gamma 1).
+  // section 7's, and the shader's exactness cut-off reasons in those (gamma 1); a view's are its
+  // values, linear.
   report.gamma = report.pathIntegrator ? scene.path.gamma : 1.0;
-  prepared.plan = samplePlan(request, scene, progress);
+  prepared.plan = samplePlan(request, scene, report.pathIntegrator, progress);
   const SamplePlan& plan = prepared.plan;
   // The render's total decides the camera rule (gpu_types.h: spp 1 samples pixel centres):
   // --spp N renders as a scene of spp N, and --time alone as one of unbounded spp.
@@ -351,7 +357,7 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
     scene.path.spp = plan.progressive.spp > 0 && plan.progressive.spp < kMaxSamplesPerPixel
                          ? static_cast<int>(plan.progressive.spp)
                          : kMaxSamplesPerPixel;
-  if (request.crop || report.pathIntegrator) prepared.identity = renderIdentity(scene, report.pathIntegrator);
+  if (request.crop || report.pathIntegrator) prepared.identity = renderIdentity(scene, report.pathIntegrator, request.view);
 }
 
 // Renders a prepared scene; with `rows`, each band goes there as it is finished (the image

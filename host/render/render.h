@@ -54,6 +54,9 @@ struct RenderRequest {
   ShaderVariant variant = ShaderVariant::Auto;    // Vulkan: the shader variant (gpu/shader_variant.h)
   Cutoff cutoff = Cutoff::Auto;        // Vulkan: the exactness cut-off of the mirror loop
   int maxDepth = -1;                   // overrides the scene's `maxdepth` when >= 0
+  // A view of the scene instead of its image (--view NAME: render/techniques.h, viewNamed), or
+  // "": the scene's own technique.
+  std::string view;
   // --dry-run: renderSceneFile parses the scene, applies the overrides and checks what a render
   // checks first (the output path and its file, the crop, the memory), fills the report's
   // facts of the scene (output, size, primitives, lights), and returns: no device is opened,
@@ -126,7 +129,7 @@ struct RenderReport {
   RayCounts rays;
   // The samples per pixel rendered, in how many batches; whether a time limit ended the render
   // before its spp; the gamma the image is encoded with at output (the scene's `gamma`).
-  bool pathIntegrator = false;   // false: the Whitted model (one deterministic sample)
+  bool pathIntegrator = false;   // batches of random samples (Technique::sampled); false: the Whitted model or a view (one deterministic sample)
   std::uint64_t samples = 1;
   std::uint32_t batches = 1;
   bool timeUp = false;

@@ -1,14 +1,18 @@
 // The rendering techniques: the Whitted model (cpu/reference, gpu/vulkan_renderer and
-// shaders/raytrace.comp) and the path integrators (cpu/path_reference, gpu/vulkan_path_renderer
-// and shaders/pathtrace.comp), each row with its glue on both backends.
+// shaders/raytrace.comp), the path integrators (cpu/path_reference, gpu/vulkan_path_renderer
+// and shaders/pathtrace.comp) and the views (cpu/<view>, shaders/<view>.comp on the Whitted
+// host), each row with its glue on both backends.
 #include "render/techniques.h"
 
+#include <string>
 #include <utility>
 
+#include "cpu/normals.h"
 #include "cpu/path_reference.h"
 #include "cpu/reference.h"
 #include "gpu/vulkan_path_renderer.h"
 #include "gpu/vulkan_renderer.h"
+#include "util/errors.h"
 
 namespace vkrt {
 namespace {
@@ -29,19 +33,11 @@ Options vulkanOptions(const BackendInputs& in, const SampleBatch& batch, PixelPr
 
 bool whittedRenders(const SceneDesc& scene) { return scene.path.integrator == Integrator::Raytracer; }
 
-CpuTechnique whittedCpu(const BackendInputs& in) {
-  return [in](const SceneDesc& scene, const Bvh& bvh, const SampleBatch& batch, PixelProgress px, RayCounts* rays) {
-    CpuOptions o;
-    o.threads = in.request.threads;
-    if (in.rows) o.rows = *in.rows;
-    setBatch(o, in.request, in.plan, batch, std::move(px));
-    return renderReference(scene, bvh, o, rays);
-  };
-}
-
-VulkanTechnique whittedVulkan(const BackendInputs& in) {
-  auto options = [in](const SampleBatch& batch, PixelProgress pixels) {
+// A technique on the Whitted host: raytrace.comp, or a view's shaders/<shader>.comp.
+VulkanTechnique onWhittedHost(const BackendInputs& in, std::string_view shader) {
+  auto options = [in, shader](const SampleBatch& batch, PixelProgress pixels) {
     VulkanOptions o = vulkanOptions<VulkanOptions>(in, batch, std::move(pixels));
+    o.shader = shader;
     o.cutoff = in.request.cutoff;
     if (in.rows) o.rows = *in.rows;
     return o;
@@ -53,6 +49,20 @@ VulkanTechnique whittedVulkan(const BackendInputs& in) {
                     RayCounts* rays, VulkanTimings* timings) {
             return renderVulkan(context, scene, options(batch, std::move(px)), rays, timings);
           }};
+}
+
+VulkanTechnique whittedVulkan(const BackendInputs& in) { return onWhittedHost(in, "raytrace"); }
+
+// A technique of one deterministic sample a pixel on the CPU: `render` as renderReference.
+template <RadianceImage (*render)(const SceneDesc&, const Bvh&, const CpuOptions&, RayCounts*)>
+CpuTechnique eachPixelOnceCpu(const BackendInputs& in) {
+  return [in](const SceneDesc& scene, const Bvh& bvh, const SampleBatch& batch, PixelProgress px, RayCounts* rays) {
+    CpuOptions o;
+    o.threads = in.request.threads;
+    if (in.rows) o.rows = *in.rows;
+    setBatch(o, in.request, in.plan, batch, std::move(px));
+    return render(scene, bvh, o, rays);
+  };
 }
 
 // ---- the path integrators: sample batches; on the GPU they share one upload of the scene ------
@@ -86,18 +96,48 @@ VulkanTechnique pathVulkan(const BackendInputs& in) {
           }};
 }
 
-// The rows, in the order they are asked; the last takes every scene.
+// ---- the views: one deterministic sample a pixel, their shaders on the Whitted host --------
+
+bool noScene(const SceneDesc&) { return false; }   // a view is only asked for by name
+
+VulkanTechnique normalsVulkan(const BackendInputs& in) { return onWhittedHost(in, "normals"); }
+
+// The rows: the scene's own techniques in the order they are asked (the last takes every
+// scene the others do not), then the views.
 const Technique kTechniques[] = {
-    {"whitted", whittedRenders, whittedCpu, whittedVulkan},
-    {"path", pathRenders, pathCpu, pathVulkan},
+    {"whitted", nullptr, whittedRenders, false, eachPixelOnceCpu<renderReference>, whittedVulkan},
+    {"path", nullptr, pathRenders, true, pathCpu, pathVulkan},
+    {"normals", "each pixel's surface normal n as the colour n * 0.5 + 0.5", noScene, false,
+     eachPixelOnceCpu<renderNormals>, normalsVulkan},
 };
 
 }  // namespace
 
-const Technique& techniqueFor(const SceneDesc& scene) {
+const Technique* viewNamed(std::string_view name) {
   for (const Technique& t : kTechniques)
+    if (t.view && name == t.name) return &t;
+  return nullptr;
+}
+
+std::vector<const Technique*> views() {
+  std::vector<const Technique*> out;
+  for (const Technique& t : kTechniques)
+    if (t.view) out.push_back(&t);
+  return out;
+}
+
+const Technique& techniqueFor(const SceneDesc& scene, std::string_view view) {
+  if (!view.empty()) {
+    if (const Technique* t = viewNamed(view)) return *t;
+    throw InternalError("no view named '" + std::string(view) + "'");   // the option's value is checked
+  }
+  const Technique* last = nullptr;
+  for (const Technique& t : kTechniques) {
+    if (t.view) continue;
     if (t.renders(scene)) return t;
-  return kTechniques[std::size(kTechniques) - 1];
+    last = &t;
+  }
+  return *last;
 }
 
 }  // namespace vkrt

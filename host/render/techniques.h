@@ -1,11 +1,14 @@
 // The rendering techniques, one row each (techniques.cpp): which scenes it renders, and how
 // each backend renders a batch of it. The backends (cpu_backend.cpp, vulkan_backend.cpp) ask
 // techniqueFor and know no technique by name; a new technique is its shader of hooks
-// (shaders/driver.glsl), its GPU host (gpu/), its CPU reference (cpu/) and its row here.
+// (shaders/driver.glsl), its CPU reference (cpu/) and its row here, whose Vulkan glue runs its
+// shader on a GPU host (gpu/: the Whitted one for a view, or one of its own).
 #pragma once
 
 #include <functional>
 #include <memory>
+#include <string_view>
+#include <vector>
 
 #include "image/radiance_image.h"
 #include "render/backend.h"
@@ -34,12 +37,24 @@ struct VulkanTechnique {
 
 struct Technique {
   const char* name;
+  // A view of the scene (vkrt --view NAME), with its --help line; null for the techniques a
+  // scene chooses by its integrator.
+  const char* view;
+  // For a scene's own technique: the scenes it renders (the first row that takes a scene renders it).
   bool (*renders)(const SceneDesc& scene);
+  // Batches of random samples, encoded with the scene's gamma; false: one deterministic sample
+  // a pixel, gamma 1, streamed to the file where the output allows.
+  bool sampled;
   CpuTechnique (*cpu)(const BackendInputs& in);
   VulkanTechnique (*vulkan)(const BackendInputs& in);
 };
 
-// The row whose `renders` takes `scene` (the first; the last row takes every scene).
-const Technique& techniqueFor(const SceneDesc& scene);
+// The technique of a render: the view named `view` (a name viewNamed knows), or with none the
+// scene's own.
+const Technique& techniqueFor(const SceneDesc& scene, std::string_view view);
+
+// The view named `name`, or null; and every view, in the table's order.
+const Technique* viewNamed(std::string_view name);
+std::vector<const Technique*> views();
 
 }  // namespace vkrt

@@ -36,7 +36,7 @@ class VulkanBackend : public RenderBackend {
     }
     in_.report.backend = std::string("vulkan (") + context_->properties().deviceName + ")";
     in_.report.renderSeconds = secondsSince(t0);   // the device's setup counts as the render's
-    technique_ = techniqueFor(scene).vulkan(in_);
+    technique_ = techniqueFor(scene, in_.request.view).vulkan(in_);
     pipelinesBefore_ = context_->pipelines().made();
 
     t0 = std::chrono::steady_clock::now();
