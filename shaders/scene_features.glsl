@@ -8,3 +8,4 @@ layout(constant_id = kSpecHasPointLights) const bool kHasPointLights = true;
 layout(constant_id = kSpecHasDirectionalLights) const bool kHasDirectionalLights = true;
 layout(constant_id = kSpecHasAttenuation) const bool kHasAttenuation = true;
 layout(constant_id = kSpecTestAll) const bool kTestAll = false;
+layout(constant_id = kSpecWideBvh) const bool kWideBvh = false;

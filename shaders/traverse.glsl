@@ -70,6 +70,36 @@ TracedRay tracedRay() {
   return r;
 }
 
+// A child of a node block: its stack entry, and where the ray enters its box (kInfinity: it
+// does not, or the child is unused).
+struct ChildHit {
+  uint entry;
+  float t;
+};
+
+ChildHit childHit(uint node, TracedRay r, vec3 invDir, float tMax) {
+  GpuBvhNode n = loadNode(node);
+  ChildHit c;
+  c.entry = stackEntry(n);
+  c.t = c.entry == 0u ? kInfinity : boxEntry(n, r.origin, invDir, r.tMin, tMax);
+  return c;
+}
+
+// Orders two children nearer first (a tie keeps their order).
+void nearerFirst(inout ChildHit a, inout ChildHit b) {
+  bool swap = b.t < a.t;
+  ChildHit lo = swap ? b : a, hi = swap ? a : b;
+  a = lo;
+  b = hi;
+}
+
+void pushChild(ChildHit c) {
+  if (c.t != kInfinity) {
+    stack[sp] = c.entry;
+    stackT[sp++] = c.t;
+  }
+}
+
 // The BVH traversal of ray r from the stack as it stands, as far as the step budget goes:
 // interior nodes down to a leaf, then that leaf's primitives, until the stack is empty (Aila
 // and Laine's while-while loop). A nearest-hit ray updates bestT, hitPrim, bestB1 and bestB2;
@@ -101,7 +131,7 @@ bool traverseBvh(TracedRay r, inout uint step) {
     // Down interior nodes: the nearer child the ray enters is the next node (in registers),
     // the farther one is pushed; the order of visits is that of pushing both. Each node
     // entered is a step.
-    while (visit && (entry & kStackLeafBit) == 0u && step < params.stepBudget) {
+    while (!kWideBvh && visit && (entry & kStackLeafBit) == 0u && step < params.stepBudget) {
       GpuBvhNode left = loadNode(entry), right = loadNode(entry + 1u);
       boxTests += 2u;
       float tl = boxEntry(left, r.origin, invDir, r.tMin, tMax);
@@ -115,6 +145,26 @@ bool traverseBvh(TracedRay r, inout uint step) {
       visit = tNear != kInfinity;
       entry = stackEntry(leftFirst ? left : right);
       entryT = tNear;
+      if (visit) ++step;
+    }
+    // Down interior nodes (blocks of four children, some unused: entry 0): the nearest child the
+    // ray enters is the next node (in registers), the others it enters are pushed, farthest
+    // first. Each node entered is a step.
+    while (kWideBvh && visit && (entry & kStackLeafBit) == 0u && step < params.stepBudget) {
+      ChildHit c0 = childHit(entry, r, invDir, tMax), c1 = childHit(entry + 1u, r, invDir, tMax);
+      ChildHit c2 = childHit(entry + 2u, r, invDir, tMax), c3 = childHit(entry + 3u, r, invDir, tMax);
+      boxTests += 4u;
+      nearerFirst(c0, c1);
+      nearerFirst(c2, c3);
+      nearerFirst(c0, c2);
+      nearerFirst(c1, c3);
+      nearerFirst(c1, c2);
+      pushChild(c3);
+      pushChild(c2);
+      pushChild(c1);
+      visit = c0.t != kInfinity;
+      entry = c0.entry;
+      entryT = c0.t;
       if (visit) ++step;
     }
     if (!visit) continue;

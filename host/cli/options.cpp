@@ -176,6 +176,11 @@ const OptionRow<R> kRenderRows[] = {
                                          "--cutoff", "auto, on or off");
      }},
     {"--no-cutoff", "", "the same as --cutoff off", [](R& o, const V&) { o.request.cutoff = Cutoff::Off; }},
+    {"--bvh", "binary|wide", "Vulkan: the BVH the shader walks, two or four children a node (for the benchmark)",
+     [](R& o, const V& v) {
+       o.request.wideBvh = choice<bool>(v(), {{"binary", false}, {"wide", true}}, "--bvh", "binary or wide");
+     },
+     Section::Hidden},
     {"--threads", "N", "worker threads for the CPU backend (default: all cores)", setThreads},
     {"--step-budget", "N", "the loop budget of a dispatch (for the tests of the budget)",
      [](R& o, const V& v) { o.request.stepBudget = static_cast<std::uint32_t>(integerValue(v.name, v(), 1, 8192)); },

@@ -64,7 +64,11 @@ bool bvhHoldsEachPrimitiveOnce(const GpuScene& scene) {
   return scene.bvh.primRefs.size() == primitiveCount(scene);
 }
 
-void checkShaderLimits(const GpuScene& scene) {
+void checkShaderLimits(const GpuScene& scene, bool wideBvh) {
+  // The shader walks the BVH as the upload holds it.
+  if (scene.bvh.wide != wideBvh)
+    throw InternalError(std::string("the shader walks a ") + (wideBvh ? "wide" : "binary") + " BVH, the scene's is " +
+                        (scene.bvh.wide ? "wide" : "binary"));
   // The shaders pack a leaf's first primRef into 28 bits (kStackFirstMask).
   if (scene.bvh.primRefs.size() > gpu::kStackFirstMask)
     throw DeviceError("the scene has " + std::to_string(scene.bvh.primRefs.size()) +

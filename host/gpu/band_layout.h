@@ -53,7 +53,8 @@ bool testsEveryPrimitive(const GpuScene& scene, bool allowed, bool eachPrimitive
 bool bvhHoldsEachPrimitiveOnce(const GpuScene& scene);
 
 // Throws DeviceError for a scene beyond what the shaders take (more primitives than a
-// traversal-stack entry can name), InternalError for a BVH deeper than their stack.
-void checkShaderLimits(const GpuScene& scene);
+// traversal-stack entry can name), InternalError for a BVH deeper than their stack, or of
+// another width than the shader's (`wideBvh`: VulkanOptions::wideBvh).
+void checkShaderLimits(const GpuScene& scene, bool wideBvh);
 
 }  // namespace vkrt

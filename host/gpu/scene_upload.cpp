@@ -114,9 +114,10 @@ bool texelsFitBeforeBvh(const GpuScene& scene, SceneArrays arrays, std::size_t m
   const std::size_t primitives = primitiveCount(scene);
   bool fit = true;
   // (The BVH's arrays are only sized here, by the primitives: another thread may be building
-  // them.)
+  // them. The wide BVH has the root and a block of 4 for each of at most primitives - 1
+  // interior nodes: wide_bvh.h.)
   forEachTexelArray(scene, arrays, [&](std::uint32_t binding, const auto& items) {
-    const std::size_t count = binding == gpu::kBindingBvhNodes  ? std::max<std::size_t>(1, 2 * primitives)
+    const std::size_t count = binding == gpu::kBindingBvhNodes  ? std::max<std::size_t>(1, 4 * primitives)
                               : binding == gpu::kBindingPrimRefs ? primitives
                                                                  : items.size();
     fit = fit && texelPaddedBytes(count * sizeof(items[0])) / texelBytesAt(binding) <= maxTexels;

@@ -28,9 +28,9 @@ namespace {
 // The features pathtrace.comp is specialised to (all on when not specializing), and what was
 // left out, for --stats; the integrator settings (kPathSpecFromParams when not specializing,
 // but for the sampler); and whether rays test every primitive instead of walking the BVH
-// (either way).
+// (either way), and the BVH's width (either way).
 std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPathParams& path, bool specialize,
-                                        bool testAll, std::string& leftOut) {
+                                        bool testAll, bool wideBvh, std::string& leftOut) {
   std::vector<std::uint32_t> spec(gpu::kPathSpecCount, 1u);   // bools as 0/1 (32-bit spec constants)
   for (std::uint32_t i = gpu::kPathSpecIntegrator; i <= gpu::kPathSpecJitter; ++i) spec[i] = gpu::kPathSpecFromParams;
   // The sampler is specialised in the general variant too: read from the parameters, the strata's
@@ -40,6 +40,7 @@ std::vector<std::uint32_t> pathFeatures(const GpuScene& scene, const gpu::GpuPat
   // whose renders use both samplers compiles a general variant for each.
   spec[gpu::kPathSpecSampler] = path.strataSide > 0 ? 1u : 0u;
   spec[gpu::kSpecTestAll] = testAll;
+  spec[gpu::kSpecWideBvh] = wideBvh;
   if (!specialize) return spec;
   bool ggx = false;
   for (const gpu::GpuMaterial& m : scene.materials) ggx = ggx || m.ambient.w == gpu::kBrdfGgx;
@@ -139,7 +140,7 @@ PathShader pathShader(const Context& context, const GpuScene& scene, const Vulka
                  (1.0 + (scene.path.nextEvent != gpu::kNextEventOff ? lightRays : 0.0));
   s.estimatedRays = static_cast<double>(layout.width) * layout.height * samples * perSample;
   std::string leftOut;
-  const std::vector<std::uint32_t> specialized = pathFeatures(scene, path, true, s.testAll, leftOut);
+  const std::vector<std::uint32_t> specialized = pathFeatures(scene, path, true, s.testAll, options.wideBvh, leftOut);
   // A scene whose lights are all quad lights, rendered by direct or pathtracer, takes the module
   // without the code of the other lights and of analyticdirect, specialised or general (whose
   // pipeline lavapipe then creates faster: bench/README.md, "Path tracing on lavapipe").
@@ -154,7 +155,7 @@ PathShader pathShader(const Context& context, const GpuScene& scene, const Vulka
               (options.variant == ShaderVariant::Auto &&
                !autoTakesSpecialised(cpuDevice, s.estimatedRays, true, s.specializedKey));
   // The general variant: every feature on, in the same module.
-  s.spec = s.general ? pathFeatures(scene, path, false, s.testAll, s.leftOut) : specialized;
+  s.spec = s.general ? pathFeatures(scene, path, false, s.testAll, options.wideBvh, s.leftOut) : specialized;
   if (!s.general) s.leftOut = leftOut;
   return p;
 }
@@ -209,7 +210,7 @@ RadianceImage VulkanPathRender::render(const VulkanPathOptions& options, RayCoun
   const std::uint32_t samples = options.sampleCount ? options.sampleCount : scene.spp;
   TechniqueBatch batch;
   batch.layout = pathLayout(context, scene, options, samples);
-  checkShaderLimits(scene);
+  checkShaderLimits(scene, options.wideBvh);
   checkLightSlots(scene);
 
   auto t0 = std::chrono::steady_clock::now();

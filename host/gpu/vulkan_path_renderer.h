@@ -40,6 +40,10 @@ struct VulkanPathOptions {
   // Small scenes (testsEveryPrimitive): every ray tests each primitive instead of walking the
   // BVH (kSpecTestAll); false: always the BVH. The same image either way.
   bool testAll = true;
+  // The BVH's interior nodes hold blocks of four children (scene/wide_bvh.h: GpuScene::bvh
+  // collapsed, Bvh::wide), walked four boxes at a time; false: two (bench/README.md, "Tried
+  // and not kept"). The same image but where two hits are equally near.
+  bool wideBvh = false;
   std::function<void(std::uint64_t, std::uint64_t)> progress;   // (pixel samples done, total)
   std::function<bool()> stop;   // polled before each dispatch: true stops early (image incomplete)
   // Only these pixels of the scene's image, as an image of the crop's size: the full render's

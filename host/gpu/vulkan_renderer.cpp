@@ -106,6 +106,7 @@ WhittedShader whittedShader(const Context& context, const GpuScene& scene, const
     }
     spec[gpu::kSpecCutoff] = general || w.cutoff;
     spec[gpu::kSpecTestAll] = s.testAll;   // in the general variant too: a second general variant
+    spec[gpu::kSpecWideBvh] = options.wideBvh;   // (the same)
     return spec;
   };
   // Texel reads where every scene buffer fits the device's texel-count limit and the device
@@ -140,7 +141,7 @@ RadianceImage renderVulkan(const Context& context, const GpuScene& scene, const 
   VulkanTimings t;
   TechniqueBatch batch;
   batch.layout = whittedLayout(context, scene, options);
-  checkShaderLimits(scene);
+  checkShaderLimits(scene, options.wideBvh);
 
   auto t0 = std::chrono::steady_clock::now();
   const SceneUpload upload(context, scene, SceneArrays::Whitted);

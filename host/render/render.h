@@ -53,6 +53,7 @@ struct RenderRequest {
   SceneReads reads = SceneReads::Auto; // Vulkan: how the shader reads the scene
   ShaderVariant variant = ShaderVariant::Auto;    // Vulkan: the shader variant (gpu/shader_variant.h)
   Cutoff cutoff = Cutoff::Auto;        // Vulkan: the exactness cut-off of the mirror loop
+  bool wideBvh = false;                // Vulkan: a BVH of four children a node (--bvh wide; VulkanOptions)
   int maxDepth = -1;                   // overrides the scene's `maxdepth` when >= 0
   // A view of the scene instead of its image (--view NAME: render/techniques.h, viewNamed), or
   // "": the scene's own technique.

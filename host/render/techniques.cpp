@@ -25,6 +25,7 @@ Options vulkanOptions(const BackendInputs& in, const SampleBatch& batch, PixelPr
   o.stepBudget = in.request.stepBudget;
   o.reads = in.request.reads;
   o.variant = in.request.variant;
+  o.wideBvh = in.request.wideBvh;
   setBatch(o, in.request, in.plan, batch, std::move(progress));
   return o;
 }

@@ -13,6 +13,7 @@
 #include "scene/diagnostic.h"
 #include "scene/emitters.h"
 #include "scene/flatten.h"
+#include "scene/wide_bvh.h"
 #include "scene/shapes/shape.h"
 #include "util/timing.h"
 
@@ -54,6 +55,7 @@ class VulkanBackend : public RenderBackend {
       }
       ahead = secondsSince(start);
     });
+    if (in_.request.wideBvh) collapseToFourWide(gpuScene_.bvh);
     in_.report.buildSeconds = secondsSince(t0);
     in_.report.pipelineAheadSeconds = ahead;
     in_.report.bvhNodes = gpuScene_.bvh.nodes.size();

@@ -23,6 +23,8 @@ struct Bvh {
   std::vector<std::uint32_t> primRefs;
   // Levels of the tree (1 for a lone root); a traversal stack needs at most depth + 1 entries.
   int depth = 1;
+  // Interior nodes hold blocks of four children (scene/wide_bvh.h), not pairs.
+  bool wide = false;
 };
 
 // Builds the hierarchy over the primitives that can be hit (degenerate ones are left out).

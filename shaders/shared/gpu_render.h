@@ -39,7 +39,12 @@ GPU_CONST uint kSpecHasAttenuation = 5u;     // a point light whose attenuation 
 // primitives (a sphere counting as two), each of them in the BVH and each a triangle or a
 // sphere (a scene with a shape of another kind walks the BVH).
 GPU_CONST uint kSpecTestAll = 6u;
-GPU_CONST uint kSpecSharedCount = 7u;        // each shader's own ids follow (gpu_whitted.h, gpu_path.h)
+// 1: the BVH's interior nodes hold blocks of four children (scene/wide_bvh.h), walked four
+// boxes at a time (traverse.glsl); 0: two. Set in the general variant too (it follows the
+// upload, not the scene's contents): chosen by --bvh, binary unless told (bench/README.md,
+// "Tried and not kept").
+GPU_CONST uint kSpecWideBvh = 7u;
+GPU_CONST uint kSpecSharedCount = 8u;        // each shader's own ids follow (gpu_whitted.h, gpu_path.h)
 
 // Phases of a pixel's state machine.
 GPU_CONST uint kPhaseTrace = 0u;     // nearest hit of the current ray (camera or mirror)
