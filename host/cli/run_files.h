@@ -33,13 +33,17 @@ class RunFiles {
   // checkOutput, then remembers `path` as an output of the run.
   void addOutput(const std::string& path, const std::string& role);
 
- private:
+  // A file as the run knows it. Two are the same when both exist and share device and inode
+  // (one file, whatever its names: a hard link, a link's target), or else by their
+  // canonical names.
   struct File {
     std::string path, role, canonical;
     bool exists = false;
     std::uint64_t device = 0, inode = 0;
   };
   static bool same(const File& a, const File& b);
+
+ private:
   // `path` as it is now: what stat() finds there (device and inode), else its canonical name.
   static File fileNamed(const std::string& path, const std::string& role);
   File resolvedOutput(const std::string& path, const std::string& role) const;

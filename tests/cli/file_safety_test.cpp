@@ -317,6 +317,37 @@ TEST(FileSafety, ASymbolicLinkIsWrittenThrough) {
   EXPECT_TRUE(leftovers(dir).empty());
 }
 
+// Every writer keeps an existing file's permission bits, whatever they are: a streamed render
+// (PNG), a whole one (PPM) and convert (PFM), each over files of modes 0600 and 0751; a new
+// file gets 0666 less the umask.
+TEST(FileSafety, EveryWriterKeepsTheModesOfTheFilesItReplaces) {
+  const std::string dir = freshDir("file-safety/modes");
+  writeFile(dir + "/s.test", kScene);
+  ASSERT_EQ(runVkrt("-q --backend cpu -o " + dir + "/source.png " + dir + "/s.test").exitCode, 0);
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  struct stat fresh {};
+  ASSERT_EQ(::stat((dir + "/source.png").c_str(), &fresh), 0);
+  EXPECT_EQ(fresh.st_mode & 07777, 0666u & ~mask);
+  for (unsigned mode : {0600u, 0751u}) {
+    const std::string m = std::to_string(mode);
+    const std::pair<std::string, std::string> writes[] = {
+        {dir + "/r" + m + ".png", "-q --backend cpu -o " + dir + "/r" + m + ".png " + dir + "/s.test"},
+        {dir + "/r" + m + ".ppm", "-q --backend cpu -o " + dir + "/r" + m + ".ppm " + dir + "/s.test"},
+        {dir + "/c" + m + ".pfm", "convert " + dir + "/source.png " + dir + "/c" + m + ".pfm"}};
+    for (const auto& [file, args] : writes) {
+      writeFile(file, kPrecious);
+      ASSERT_EQ(::chmod(file.c_str(), mode), 0);
+      RunResult r = runVkrt(args);
+      ASSERT_EQ(r.exitCode, 0) << args << ": " << r.output;
+      struct stat st {};
+      ASSERT_EQ(::stat(file.c_str(), &st), 0);
+      EXPECT_EQ(st.st_mode & 07777, mode) << file;
+      EXPECT_NE(readFile(file), kPrecious) << file << " was written";
+    }
+  }
+}
+
 // An existing output keeps its permission bits, and (vkrt run as root) its owner and group.
 TEST(FileSafety, AnExistingOutputKeepsItsModeAndOwner) {
   std::string dir = freshDir("file-safety/mode");

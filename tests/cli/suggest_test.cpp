@@ -2,6 +2,7 @@
 // that uses it: a subcommand, an option, a scene command; an image given as a scene; usage
 // errors in two lines, the usage text only for --help.
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <set>
 #include <string_view>
@@ -55,6 +56,35 @@ TEST(Suggest, EditDistanceCountsEditsIgnoringCase) {
   EXPECT_EQ(editDistance("kitten", "sitting"), 3u);
   EXPECT_EQ(editDistance("ca", "abc"), 3u);          // optimal string alignment: no edit of a swapped pair
   EXPECT_EQ(editDistance("abc", "ca"), editDistance("ca", "abc"));
+}
+
+// The optimal-string-alignment distance by its recursive definition (no table), for short
+// words: an oracle written apart from editDistance's rows.
+std::size_t osaDistance(std::string_view a, std::string_view b) {
+  if (a.empty()) return b.size();
+  if (b.empty()) return a.size();
+  auto low = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
+  const std::size_t i = a.size(), j = b.size();
+  std::size_t d = std::min({osaDistance(a.substr(0, i - 1), b) + 1, osaDistance(a, b.substr(0, j - 1)) + 1,
+                            osaDistance(a.substr(0, i - 1), b.substr(0, j - 1)) + (low(a[i - 1]) == low(b[j - 1]) ? 0 : 1)});
+  if (i > 1 && j > 1 && low(a[i - 1]) == low(b[j - 2]) && low(a[i - 2]) == low(b[j - 1]))
+    d = std::min(d, osaDistance(a.substr(0, i - 2), b.substr(0, j - 2)) + 1);
+  return d;
+}
+
+// Every pair of words of up to 3 letters from a 3-letter alphabet (case mixed in), empty words
+// included: the table's rows agree with the recursion, in both orders.
+TEST(Suggest, EditDistanceAgreesWithTheRecursiveDefinition) {
+  std::vector<std::string> words = {""};
+  for (std::size_t n = 0; words.size() < 40; ++n)
+    for (char c : {'a', 'B', 'c'}) words.push_back(words[n] + c);
+  std::size_t pairs = 0;
+  for (const std::string& a : words)
+    for (const std::string& b : words) {
+      ASSERT_EQ(editDistance(a, b), osaDistance(a, b)) << "'" << a << "' and '" << b << "'";
+      ++pairs;
+    }
+  EXPECT_EQ(pairs, 40u * 40u);
 }
 
 TEST(Suggest, ClosestMatchOnlyWhenNearForTheWordsLength) {

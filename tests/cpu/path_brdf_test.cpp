@@ -89,5 +89,38 @@ TEST(PathBrdf, ZeroBelowTheSurfaceAndSymmetric) {
   EXPECT_DOUBLE_EQ(evalBrdf(lambert, n, wi, wo).x, 0.5 / kPi);
 }
 
+// The Phong lobe's sampled directions (doc/path-tracing.md, "BRDFs": density cos^s(alpha) (s + 1)
+// / 2 pi about the mirror direction r): over a fine grid of the two numbers, the mean of
+// cos(alpha) is (s + 1) / (s + 2) and of cos^2(alpha) (s + 1) / (s + 3), and the azimuth about
+// r is even (the mean of the component along a vector perpendicular to r is 0).
+TEST(PathBrdf, PhongLobeSamplesHaveTheLobesMoments) {
+  const dvec3 n = glm::normalize(dvec3(0.1, 1.0, 0.2)), wo = glm::normalize(dvec3(0.4, 0.8, -0.3));
+  const dvec3 r = glm::normalize(2.0 * glm::dot(n, wo) * n - wo);
+  const dvec3 across = glm::normalize(glm::cross(r, n));
+  for (double s : {1.0, 10.0, 200.0}) {
+    Material m;
+    m.diffuse = dvec3(0.0);
+    m.specular = dvec3(0.8);
+    m.shininess = s;
+    ASSERT_DOUBLE_EQ(specularLobeProbability(m), 1.0);
+    // Fine in u, whose map u^(1/(s+1)) is steep near 0 (the midpoint rule's error there
+    // shrinks as the step to the power 1 + 1/(s+1)).
+    const int stepsU = 8192, stepsV = 32;
+    double c1 = 0, c2 = 0, side = 0;
+    for (int i = 0; i < stepsU; ++i)
+      for (int j = 0; j < stepsV; ++j) {
+        const dvec3 wi = sampleDirection(Sampling::Brdf, m, n, wo, (i + 0.5) / stepsU, (j + 0.5) / stepsV, 0.5);
+        const double c = glm::dot(wi, r);
+        c1 += c;
+        c2 += c * c;
+        side += glm::dot(wi, across);
+      }
+    const double count = static_cast<double>(stepsU) * stepsV;
+    EXPECT_NEAR(c1 / count, (s + 1) / (s + 2), 1e-5) << "shininess " << s;
+    EXPECT_NEAR(c2 / count, (s + 1) / (s + 3), 1e-5) << "shininess " << s;
+    EXPECT_NEAR(side / count, 0.0, 1e-9) << "shininess " << s;
+  }
+}
+
 }  // namespace
 }  // namespace vkrt

@@ -785,3 +785,32 @@ INSTANTIATE_TEST_SUITE_P(Cse168, GpuPathCourseScene,
                                            "hw3/dragon", "hw4/cornellBRDF", "hw4/cornellCosine", "hw4/cornellMIS",
                                            "hw4/dragon", "hw4/ggx", "hw4/mis"),
                          [](const auto& p) { return testName(std::string(p.param).replace(3, 1, "_")); });
+
+// The random numbers a path vertex draws for its light samples, counted against the slots the
+// shader has (gpu_rng.h): under `direct` as under the path tracer with next-event estimation,
+// two a quad-light sample; analyticdirect draws none, nor a path tracer without next-event
+// estimation. At the limit the scene renders; one sample past it is refused, said in the
+// scene's terms.
+TEST(LightSlots, DirectCountsItsQuadLightSamplesUpToTheLimit) {
+  const std::uint32_t slots = gpu::kRngBounceStride - gpu::kRngSlotLightBase;
+  for (std::uint32_t integrator : {gpu::kIntegratorDirect, gpu::kIntegratorPathTracer}) {
+    gpu::GpuPathParams p{};
+    p.integrator = integrator;
+    p.nextEvent = gpu::kNextEventOn;
+    p.quadLightCount = 4;
+    p.lightSamples = slots / 8;
+    EXPECT_EQ(lightSlotsProblem(p, false), "") << "integrator " << integrator;
+    p.lightSamples = slots / 8 + 1;
+    const std::string problem = lightSlotsProblem(p, false);
+    EXPECT_NE(problem.find("4 quad lights x " + std::to_string(slots / 8 + 1) + " lightsamples x 2"), std::string::npos)
+        << "integrator " << integrator << ": " << problem;
+  }
+  gpu::GpuPathParams p{};
+  p.quadLightCount = 4;
+  p.lightSamples = slots;
+  p.integrator = gpu::kIntegratorAnalyticDirect;
+  EXPECT_EQ(lightSlotsProblem(p, true), "");
+  p.integrator = gpu::kIntegratorPathTracer;
+  p.nextEvent = gpu::kNextEventOff;
+  EXPECT_EQ(lightSlotsProblem(p, true), "");
+}

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_support.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
 #include "scene/shapes/sphere.h"
@@ -334,4 +335,19 @@ TEST(Flatten, EmitterTableWeighsAreaTimesEmission) {
   EXPECT_FLOAT_EQ(g.path.emitterWeightScale, static_cast<float>(1.0 / total));
   // No emitters: an empty table.
   EXPECT_TRUE(flatten(randomScene(10, 3, 7)).emitters.empty());
+}
+
+// The SAH's trade of a traversal step against primitive tests (bvh.cpp, kTraversalCost = 1, one
+// primitive test's cost), in closed form on two unit spheres (cube boxes of area 24) d apart
+// along x, whose parent box has area 24 + 8d: the two split when 2 > cost + 48 / (24 + 8d).
+// Touching (d = 2: 48 / 40 = 1.2) they stay one leaf for any cost of at least 0.8; 100 apart
+// (48 / 824) they split for any cost below 1.94.
+TEST(Bvh, TwoSpheresSplitOrShareALeafAsTheTraversalCostSays) {
+  const Bvh touching = buildBvh(test::parseBody("sphere 0 0 0 1\nsphere 2 0 0 1\n"));
+  EXPECT_EQ(touching.nodes.size(), 1u);
+  EXPECT_EQ(touching.nodes[0].primCount, 2u);
+  const Bvh apart = buildBvh(test::parseBody("sphere 0 0 0 1\nsphere 100 0 0 1\n"));
+  ASSERT_EQ(apart.nodes.size(), 3u);
+  EXPECT_EQ(apart.nodes[0].primCount, 0u);
+  EXPECT_EQ(apart.nodes[1].primCount + apart.nodes[2].primCount, 2u);
 }
