@@ -89,16 +89,12 @@ TEST(WideBvh, KeepsEveryLeafOnceInsideItsBoxesWithinTheStack) {
 
 RadianceImage render(const std::string& path, bool wide, std::uint32_t stepBudget = 0, int width = 0,
                      int height = 0) {
-  RenderRequest request;
-  request.scenePath = path;
-  request.validation = true;
-  request.wideBvh = wide;
-  request.stepBudget = stepBudget;
-  request.width = width;
-  request.height = height;
-  ProgressBar quiet(false);
-  RenderReport report;
-  return renderSceneInMemory(request, quiet, report, false);
+  return renderFileQuietly(path, [&](RenderRequest& r) {
+    r.wideBvh = wide;
+    r.stepBudget = stepBudget;
+    r.width = width;
+    r.height = height;
+  });
 }
 
 // Walking the wide tree finds the same nearest hits: the same image but where two hits are

@@ -25,14 +25,10 @@ using namespace vkrt::test;
 namespace {
 
 RadianceImage renderView(const std::string& scenePath, Backend backend, const std::string& view = "normals") {
-  RenderRequest request;
-  request.scenePath = scenePath;
-  request.backend = backend;
-  request.validation = true;
-  request.view = view;
-  ProgressBar quiet(false);
-  RenderReport report;
-  return renderSceneInMemory(request, quiet, report, false);
+  return renderFileQuietly(scenePath, [&](RenderRequest& r) {
+    r.backend = backend;
+    r.view = view;
+  });
 }
 
 // An ellipsoid (a sphere under a translation and a non-uniform scale) in front of a triangle,

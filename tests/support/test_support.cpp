@@ -27,6 +27,7 @@
 #include "image/png.h"
 #include "util/ray_counts.h"
 #include "scene/bvh.h"
+#include "render/progress.h"
 #include "scene/flatten.h"
 #include "scene/parse.h"
 
@@ -174,6 +175,16 @@ Context* gpuContextOrSkip() {
         ::testing::Message();
   }
   return nullptr;
+}
+
+RadianceImage renderFileQuietly(const std::string& scenePath, const std::function<void(RenderRequest&)>& adjust) {
+  RenderRequest request;
+  request.scenePath = scenePath;
+  request.validation = true;
+  adjust(request);
+  ProgressBar quiet(false);
+  RenderReport report;
+  return renderSceneInMemory(request, quiet, report, false);
 }
 
 Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget, VulkanTimings* timings, SceneReads reads) {

@@ -13,6 +13,7 @@
 #include "image/radiance_image.h"
 #include "gpu/context.h"
 #include "gpu/vulkan_renderer.h"
+#include "render/render.h"
 #include "scene/scene_desc.h"
 
 namespace vkrt::test {
@@ -101,6 +102,10 @@ Context* gpuContextOrSkip();
 // would run after the validation layer's own globals are gone (the layer is loaded later
 // than the static is registered), and the layer's allocations would leak.
 void releaseGpuContext();
+
+// The scene file at `scenePath` rendered in memory as the command line would (no progress
+// bar, the validation layer on), with the request as `adjust` leaves it.
+RadianceImage renderFileQuietly(const std::string& scenePath, const std::function<void(RenderRequest&)>& adjust);
 
 // Renders with the Vulkan backend; `stepBudget` 0 is the default.
 Image renderGpu(const SceneDesc& scene, std::uint32_t stepBudget = 0, VulkanTimings* timings = nullptr,
