@@ -106,6 +106,13 @@ TEST(Flip, AShiftedEdgeIsAnErrorOnlyWithinTheFiltersReach) {
   const auto worst = std::max_element(map.error.begin() + 8 * 64, map.error.begin() + 9 * 64);
   EXPECT_NEAR(static_cast<double>(worst - (map.error.begin() + 8 * 64)), 30.0, 2.0);
   EXPECT_GT(*worst, 0.4f);
+  // Known answers, from NVIDIA's flip-evaluator 1.7 on the same two images (so that the feature
+  // pipeline, which no closed form above reaches, is guarded where Python is not installed):
+  // the mean 0.0456421 and the pixels beside the edge 0.716953, 0.503987, 0.452177.
+  EXPECT_NEAR(flipStats(map).mean, 0.0456421, 1e-5);
+  EXPECT_NEAR(map.error[8 * 64 + 29], 0.716953, 1e-3);
+  EXPECT_NEAR(map.error[8 * 64 + 30], 0.503987, 1e-3);
+  EXPECT_NEAR(map.error[8 * 64 + 31], 0.452177, 1e-3);
 }
 
 TEST(Flip, PercentilesAreNearestRank) {
