@@ -16,14 +16,14 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-// The constants of FLIP (HPG 2020, table 1): the colour error's exponent qc, the remapping's
+// The constants of FLIP (HPG 2020): the colour error's exponent qc, the remapping's
 // breakpoint pc (a share of the largest colour distance) and the error it maps to, pt; the
 // feature detectors' width w (degrees) and the feature error's exponent qf.
 constexpr float kQc = 0.7f, kPc = 0.4f, kPt = 0.95f, kFeatureWidthDegrees = 0.082f, kQf = 0.5f;
 
 // The contrast sensitivity of each opponent channel as a filter in the spatial domain:
-// a1 sqrt(pi/b1) exp(-pi^2 x^2/b1) + a2 sqrt(pi/b2) exp(-pi^2 x^2/b2), x in degrees
-// (section 4.1 of the paper). Only the blue-yellow channel's has a second term.
+// a1 sqrt(pi/b1) exp(-pi^2 x^2/b1) + a2 sqrt(pi/b2) exp(-pi^2 x^2/b2), x in degrees (the
+// paper's fit of the contrast sensitivity functions). Only the blue-yellow channel's has a second term.
 struct Csf {
   float a1, b1, a2, b2;
 };
@@ -321,7 +321,7 @@ FlipMap ldrFlipLinear(const std::vector<float>& testLinear, const std::vector<fl
     const float point = std::fabs(pointsReference[i] - pointsTest[i]);
     const float feature = std::pow(std::max(edge, point) / std::sqrt(2.0f), kQf);
     // Features sharpen the colour error: the larger the feature difference, the nearer
-    // the error is raised to 1 (the paper's Equation 11).
+    // the error is raised to 1 (colour^(1 - feature)).
     map.error[i] = std::pow(color, 1.0f - feature);
   }
   return map;
