@@ -223,8 +223,8 @@ const OptionRow<R> kRenderRows[] = {
      Section::Comparison},
     {"--max-flip", "X",
      "fail when the mean FLIP error exceeds X (0 to 1): LDR-FLIP of the\n"
-     "8-bit images, HDR-FLIP for diff of two float images; 67 pixels\n"
-     "per degree",
+     "8-bit images, HDR-FLIP of the radiance when the reference (and\n"
+     "diff's other image) is float; 67 pixels per degree",
      [](R& o, const V& v) { o.comparison.thresholds.maxFlip = parseFlipThreshold(v()); }, Section::Comparison},
     {"--json", "", "print the metrics as one JSON object on stdout", [](R& o, const V&) { o.comparison.json = true; },
      Section::Comparison},

@@ -281,4 +281,14 @@ TEST(FlipCli, CheckReportsFlipOfTheRenderAgainstItsReference) {
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("LDR-FLIP mean 0.0000"), std::string::npos) << r.output;
   EXPECT_EQ(readImage(dir + "/map.png").width, readImage(dir + "/ref.png").width);
+  // A float reference: HDR-FLIP of the render's radiance against it.
+  ASSERT_EQ(runVkrt("-q --backend cpu -o " + dir + "/ref.pfm " + scene).exitCode, 0);
+  RunResult hdr = runVkrt("-q --backend cpu -o " + dir + "/out2.png --check " + dir + "/ref.pfm --json " + scene);
+  EXPECT_EQ(hdr.exitCode, 0) << hdr.output;
+  EXPECT_NE(hdr.output.find("\"flip\":{\"kind\":\"hdr\",\"mean\":0,"), std::string::npos) << hdr.output;
+  // ... against another scene's radiance: an error.
+  RunResult other = runVkrt("-q --backend cpu -o " + dir + "/out3.png --check " + dir + "/ref.pfm --max-flip 0.01 " +
+                            sourcePath("scenes/shadows.test"));
+  EXPECT_EQ(other.exitCode, 5) << other.output;
+  EXPECT_NE(other.output.find("FAIL: HDR-FLIP mean error"), std::string::npos) << other.output;
 }
