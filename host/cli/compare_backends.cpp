@@ -35,20 +35,20 @@ int compareBackends(const RenderOptions& o) {
     if (o.stats && !o.comparison.json && !o.quiet) printStats(request, reports[i]);
     warnNonFinite(o.quiet, reports[i], i == 0 ? "vulkan" : "cpu");
   }
-  ImageDiff diff = compare(images[0], images[1]);
-  std::vector<std::string> failures = failedThresholds(diff, o.comparison.thresholds);
+  ImageComparison c = compareImages(images[0], images[1]);
+  std::vector<std::string> failures = failedThresholds(c.diff, c.flip, o.comparison.thresholds);
   if (!o.comparison.thresholds.any()) failures.clear();   // --compare reports; it gates only when asked to
   auto total = [](const RenderReport& r) { return r.parseSeconds + r.buildSeconds + r.renderSeconds; };
   if (o.comparison.json) {
-    writeHeatmap(o.comparison, diff);
+    writeHeatmap(o.comparison, c);
     std::printf("{\"scene\":%s,\"vulkan\":%s,\"cpu\":%s,\"difference\":%s}\n",
                 jsonQuoted(o.request.scenePath).c_str(),
                 reportJson(reports[0]).c_str(), reportJson(reports[1]).c_str(),
-                diffReportJson(diff, failures).c_str());
+                diffReportJson(c.diff, c.flip, failures).c_str());
   } else {
     std::printf("%s: vulkan %.3f s, cpu %.3f s (without writing); vulkan vs cpu:\n", o.request.scenePath.c_str(),
                 total(reports[0]), total(reports[1]));
-    printComparisonText(o.comparison, diff, failures);
+    printComparisonText(o.comparison, c, failures);
   }
   return failures.empty() ? kExitOk : kExitDiffers;
 }

@@ -20,7 +20,10 @@ int diffImages(const DiffOptions& options) {
   std::optional<LinearDifference> linear;
   if (a.radiance && b.radiance) linear = linearDifference(*a.radiance, *b.radiance);
   auto bytes = [](const AnyImage& image) { return image.radiance ? asBytes(*image.radiance) : image.bytes; };
-  return reportComparison(options.comparison, bytes(a), bytes(b), options.a + " vs " + options.b, linear);
+  // Two float images: HDR-FLIP of their radiance; otherwise LDR-FLIP of the 8-bit images.
+  const bool hdr = a.radiance && b.radiance;
+  return reportComparison(options.comparison, bytes(a), bytes(b), options.a + " vs " + options.b, linear,
+                          hdr ? &*a.radiance : nullptr, hdr ? &*b.radiance : nullptr);
 }
 
 }  // namespace vkrt

@@ -300,7 +300,8 @@ void gradeOne(const Job& job, const Image& reference, const GradeThresholds& t, 
     image = &loaded;
   }
   ImageDiff diff;
-  entry.grade = gradeImage(*image, reference, t, &diff);
+  FlipMap flipMap;
+  entry.grade = gradeImage(*image, reference, t, &diff, &flipMap);
   auto write = [&](const Image& img, ReportImage which) {
     writeImageAtomic(img, folder + "/" + entryImagePath(job.submission, job.scene, which));
   };
@@ -313,6 +314,7 @@ void gradeOne(const Job& job, const Image& reference, const GradeThresholds& t, 
   entry.hasImage = true;
   if (diff.width > 0) {
     write(differenceHeatmap(diff, heatmapScale), ReportImage::Difference);
+    write(flipMagmaImage(flipMap), ReportImage::Flip);
     entry.hasDiff = true;
   }
 }

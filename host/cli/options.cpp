@@ -83,6 +83,12 @@ void setHeatmap(R& o, const V& v) {
   refuseStandardOutput(v.name, *o.comparison.heatmapPath);
 }
 
+void setFlipMap(R& o, const V& v) {
+  o.comparison.flipMapPath = v();
+  if (o.comparison.flipMapPath->empty()) throw UsageError("option --flip-map needs a non-empty file name");
+  refuseStandardOutput(v.name, *o.comparison.flipMapPath);
+}
+
 using Section = HelpSection;
 
 // The render command's options (and diff's), in --help's order; "did you mean" takes the
@@ -220,12 +226,19 @@ const OptionRow<R> kRenderRows[] = {
      "(with neither, any difference fails)",
      [](R& o, const V& v) { o.comparison.thresholds.maxDiff = integerValue(v.name, v(), 0, 255); },
      Section::Comparison},
+    {"--max-flip", "X",
+     "fail when the mean FLIP error exceeds X (0 to 1): LDR-FLIP of the\n"
+     "8-bit images, HDR-FLIP of the radiance when the reference (and\n"
+     "diff's other image) is float; 67 pixels per degree",
+     [](R& o, const V& v) { o.comparison.thresholds.maxFlip = parseFlipThreshold(v()); }, Section::Comparison},
     {"--json", "", "print the metrics as one JSON object on stdout", [](R& o, const V&) { o.comparison.json = true; },
      Section::Comparison},
     {"--diff", "FILE{ext}", "\fwrite a heatmap of the differences, with its legend ({heatmap names})", setHeatmap,
      Section::Comparison},
     {"--diff-scale", "N", "differences of N/255 or more are red in the heatmap (default 16)",
      [](R& o, const V& v) { o.comparison.heatmapScale = integerValue(v.name, v(), 1, 255); }, Section::Comparison},
+    {"--flip-map", "FILE{ext}", "\fwrite FLIP's error map in its colour map, magma ({heatmap names})", setFlipMap,
+     Section::Comparison},
     {"-q, --quiet", "", "print nothing but errors (no warnings, no progress)", setQuiet, Section::Last},
     {"-h, --help", "", "show this help", setHelp, Section::Last},
     {"--version", "", "show the version", [](R& o, const V&) { o.version = true; }, Section::Last},
@@ -267,6 +280,8 @@ const OptionRow<GradeOptions> kGradeRows[] = {
      "--max-pixels-over S:L, --max-diff N"},
     {"--max-diff", "N", "", [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); },
      Section::Grade},
+    {"--max-flip", "X", "fail when the mean LDR-FLIP error exceeds X (0 to 1)",
+     [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade},
     {"--max-bias", "B", "fail when |mean(reference - image)| exceeds B (8-bit units)",
      [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade},
     {"--max-variance", "V", "fail when the variance of (image - reference) exceeds V",
@@ -347,6 +362,12 @@ R parseRenderArguments(const std::vector<std::string>& args, std::size_t first, 
                        imageExtensionsText(FormatsOf::Bytes));
     warnOfItsName("heatmap file", *heatmap, FormatsOf::Bytes, o.request.strict, o.warnings);
   }
+  if (const std::optional<std::string>& map = o.comparison.flipMapPath) {
+    if (holdsLinearFloat(*map))
+      throw UsageError("--flip-map " + abbreviated(*map) + ": the FLIP map is an 8-bit image; name it " +
+                       imageExtensionsText(FormatsOf::Bytes));
+    warnOfItsName("FLIP map file", *map, FormatsOf::Bytes, o.request.strict, o.warnings);
+  }
   return o;
 }
 
@@ -366,9 +387,11 @@ DiffOptions parseDiffOptions(const std::vector<std::string>& args) {
 
 // The options that do not go together, and the comparison options without a comparison.
 void refuseCombinations(const R& o, const std::vector<std::string>& scenes) {
-  const bool comparing = o.comparison.thresholds.any() || o.comparison.json || o.comparison.heatmapPath;
+  const bool comparing =
+      o.comparison.thresholds.any() || o.comparison.json || o.comparison.heatmapPath || o.comparison.flipMapPath;
   if (comparing && !o.checkAgainst && !o.compare)
-    throw UsageError("--max-pixels-over, --max-diff, --json and --diff need --check REF" + defaultImageExtension() +
+    throw UsageError("--max-pixels-over, --max-diff, --max-flip, --json, --diff and --flip-map need --check REF" +
+                     defaultImageExtension() +
                      " or --compare (or vkrt diff)");
   if (o.compare && o.checkAgainst) throw UsageError("--compare and --check do not go together");
   if (o.compare && o.output)
@@ -385,12 +408,14 @@ void refuseModeCombinations(const R& o, const std::vector<std::string>& scenes) 
   if (scenes.size() > 1 && (o.compare || o.checkAgainst || o.watch))
     throw UsageError(std::string(o.compare ? "--compare" : o.watch ? "--watch" : "--check") + " takes one scene, got " +
                      std::to_string(scenes.size()));
-  if (o.watch && (o.compare || o.checkAgainst || o.comparison.json || o.comparison.heatmapPath))
+  if (o.watch && (o.compare || o.checkAgainst || o.comparison.json || o.comparison.heatmapPath ||
+                  o.comparison.flipMapPath))
     throw UsageError(std::string("--watch renders and writes the image at each change; ") +
-                     (o.compare        ? "--compare"
-                      : o.checkAgainst ? "--check"
-                      : o.comparison.json ? "--json"
-                                          : "--diff") +
+                     (o.compare               ? "--compare"
+                      : o.checkAgainst        ? "--check"
+                      : o.comparison.json     ? "--json"
+                      : o.comparison.heatmapPath ? "--diff"
+                                                 : "--flip-map") +
                      " does not go with it");
   if (o.request.dryRun && (o.watch || o.compare || o.checkAgainst))
     throw UsageError(std::string("--dry-run renders nothing; ") +

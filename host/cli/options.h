@@ -30,6 +30,7 @@ struct ComparisonOptions {
   CheckThresholds thresholds;
   bool json = false;                        // the comparison as one JSON object on stdout
   std::optional<std::string> heatmapPath;   // --diff FILE.png
+  std::optional<std::string> flipMapPath;   // --flip-map FILE.png
   int heatmapScale = 16;                    // --diff-scale N: steps at which the heatmap turns red
 };
 

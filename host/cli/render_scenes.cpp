@@ -89,14 +89,27 @@ int renderOne(RenderOptions& options) {
   files.addInput(options.request.scenePath, "the scene file");
   if (options.checkAgainst) files.addInput(*options.checkAgainst, "the reference image (--check)");
   claimHeatmap(options.comparison, files);
+  // A float reference (PFM, EXR) is kept as radiance too: the render's radiance is compared
+  // with it by HDR-FLIP (the 8-bit figures compare the two encoded).
   std::optional<Image> reference;
-  if (options.checkAgainst) reference = readImageAsBytes(*options.checkAgainst);
+  std::optional<RadianceImage> referenceRadiance;
+  if (options.checkAgainst) {
+    AnyImage any = readAnyImage(*options.checkAgainst);
+    if (any.radiance) {
+      reference = asBytes(*any.radiance);
+      referenceRadiance = std::move(any.radiance);
+    } else {
+      reference = std::move(any.bytes);
+    }
+  }
   options.request.onOutput = [&files](const std::string& path) { files.checkOutput(path, "the image"); };
   ProgressBar progress(!options.quiet);
   Image image;
   options.request.onWarnings = warningPrinter(options.quiet);
   options.request.onOptionWarning = optionWarningPrinter(options.quiet);
-  RenderReport report = renderSceneFile(options.request, progress, reference ? &image : nullptr);
+  RadianceImage radiance;
+  RenderReport report = renderSceneFile(options.request, progress, reference ? &image : nullptr, nullptr,
+                                        referenceRadiance ? &radiance : nullptr);
   if (options.request.dryRun) {
     if (!options.quiet)
       std::fprintf(stderr, "vkrt: %s -> %s (%dx%d), not rendered (--dry-run)\n", options.request.scenePath.c_str(),
@@ -108,8 +121,11 @@ int renderOne(RenderOptions& options) {
   if (!options.quiet)
     std::fprintf(stderr, "vkrt: wrote %s (%dx%d%s) in %.2f s\n", report.outputPath.c_str(), report.width,
                  report.height, samplesNote(report).c_str(), totalSeconds(report));
-  if (reference)
-    return reportComparison(options.comparison, image, *reference, report.outputPath + " vs " + *options.checkAgainst);
+  if (reference) {
+    const bool hdr = referenceRadiance && radiance.width == image.width && radiance.height == image.height;
+    return reportComparison(options.comparison, image, *reference, report.outputPath + " vs " + *options.checkAgainst,
+                            std::nullopt, hdr ? &radiance : nullptr, hdr ? &*referenceRadiance : nullptr);
+  }
   return kExitOk;
 }
 

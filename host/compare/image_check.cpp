@@ -35,6 +35,15 @@ PixelThreshold parsePixelThreshold(const std::string& text) {
   return t;
 }
 
+double parseFlipThreshold(const std::string& text) {
+  double v = 0.0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !(v >= 0.0 && v <= 1.0))
+    throw UsageError("--max-flip expects a number from 0 to 1 (the largest mean FLIP error that passes), got '" +
+                     echoed(text) + "'");
+  return v;
+}
+
 namespace {
 
 double share(long long count, long long pixels) {
@@ -49,7 +58,8 @@ std::string format(const char* fmt, double a, double b = 0.0) {
 
 }  // namespace
 
-std::vector<std::string> failedThresholds(const ImageDiff& diff, const CheckThresholds& thresholds) {
+std::vector<std::string> failedThresholds(const ImageDiff& diff, const FlipStats& flip,
+                                          const CheckThresholds& thresholds) {
   std::vector<std::string> failures;
   if (!thresholds.any()) {
     if (!diff.differing.empty())
@@ -69,10 +79,32 @@ std::vector<std::string> failedThresholds(const ImageDiff& diff, const CheckThre
   if (thresholds.maxDiff >= 0 && diff.maxChannelDiff > thresholds.maxDiff)
     failures.push_back("largest channel difference " + std::to_string(diff.maxChannelDiff) + "/255 exceeds " +
                        std::to_string(thresholds.maxDiff) + "/255 (--max-diff)");
+  if (thresholds.maxFlip >= 0.0 && flip.mean > thresholds.maxFlip)
+    failures.push_back(std::string(flip.hdr ? "HDR-FLIP" : "LDR-FLIP") + " mean error " + format("%.4g", flip.mean) +
+                       " exceeds " + format("%g", thresholds.maxFlip) + " (--max-flip)");
   return failures;
 }
 
-std::string diffReportText(const ImageDiff& d) {
+std::string flipReportText(const FlipStats& f) {
+  std::string s = std::string(f.hdr ? "HDR-FLIP " : "LDR-FLIP ") + flipStatsText(f);
+  if (f.hdr)
+    s += format(" (%.3g to %.3g stops, ", f.exposures.start, f.exposures.stop) +
+         counted(f.exposures.count, "exposure", "exposures") + ")";
+  return s;
+}
+
+std::string flipReportJson(const FlipStats& f) {
+  std::string s = std::string("{\"kind\":") + (f.hdr ? "\"hdr\"" : "\"ldr\"") + ",\"mean\":" + format("%.6g", f.mean) +
+                  ",\"median\":" + format("%.6g", f.median) + ",\"p95\":" + format("%.6g", f.p95) +
+                  ",\"p99\":" + format("%.6g", f.p99) + ",\"max\":" + format("%.6g", f.max) +
+                  ",\"pixels_per_degree\":" + format("%.6g", kFlipDefaultPixelsPerDegree);
+  if (f.hdr)
+    s += ",\"start_exposure\":" + format("%.6g", f.exposures.start) + ",\"stop_exposure\":" +
+         format("%.6g", f.exposures.stop) + ",\"exposures\":" + std::to_string(f.exposures.count);
+  return s + "}";
+}
+
+std::string diffReportText(const ImageDiff& d, const FlipStats& flip) {
   long long over1 = d.countOver(1), over2 = d.countOver(2);
   std::string psnr = std::isinf(d.psnr()) ? "inf (identical)" : format("%.2f dB", d.psnr());
   return "  size        " + std::to_string(d.width) + "x" + std::to_string(d.height) + "\n" +
@@ -81,10 +113,11 @@ std::string diffReportText(const ImageDiff& d) {
          counted(d.differing.size(), "pixel", "pixels") +
          format(" (%.4g%%)", share(static_cast<long long>(d.differing.size()), d.pixels)) + "\n" + "  over 1/255  " +
          counted(over1, "pixel", "pixels") + format(" (%.4g%%)", share(over1, d.pixels)) + "\n" + "  over 2/255  " +
-         counted(over2, "pixel", "pixels") + format(" (%.4g%%)", share(over2, d.pixels)) + "\n";
+         counted(over2, "pixel", "pixels") + format(" (%.4g%%)", share(over2, d.pixels)) + "\n" + "  FLIP        " +
+         flipReportText(flip) + "\n";
 }
 
-std::string diffReportJson(const ImageDiff& d, const std::vector<std::string>& failures) {
+std::string diffReportJson(const ImageDiff& d, const FlipStats& flip, const std::vector<std::string>& failures) {
   long long over1 = d.countOver(1), over2 = d.countOver(2);
   std::string psnr = std::isinf(d.psnr()) ? "null" : format("%.6g", d.psnr());
   std::string s = "{\"width\":" + std::to_string(d.width) + ",\"height\":" + std::to_string(d.height) +
@@ -93,7 +126,7 @@ std::string diffReportJson(const ImageDiff& d, const std::vector<std::string>& f
                   ",\"pixels_differing\":" + std::to_string(d.differing.size()) +
                   ",\"pixels_over_1\":" + std::to_string(over1) + ",\"share_over_1\":" +
                   format("%.6g", share(over1, d.pixels) / 100.0) + ",\"pixels_over_2\":" + std::to_string(over2) +
-                  ",\"share_over_2\":" + format("%.6g", share(over2, d.pixels) / 100.0) + ",\"pass\":" +
+                  ",\"share_over_2\":" + format("%.6g", share(over2, d.pixels) / 100.0) + ",\"flip\":" + flipReportJson(flip) + ",\"pass\":" +
                   (failures.empty() ? "true" : "false") + ",\"failures\":[";
   for (std::size_t i = 0; i < failures.size(); ++i) s += (i ? "," : "") + jsonQuoted(failures[i]);
   return s + "]}";

@@ -35,7 +35,7 @@ int failingStep(const GradeThresholds& t) {
   return t.any() ? -1 : 0;
 }
 
-KeyFigure keyFigure(const GradeThresholds& t, const ImageDiff& d, const GraderStats& s) {
+KeyFigure keyFigure(const GradeThresholds& t, const ImageDiff& d, const GraderStats& s, const FlipStats& flip) {
   KeyFigure k;
   k.label = keyFigureLabel(t);
   if (!t.pixels.pixelsOver.empty()) {
@@ -43,6 +43,8 @@ KeyFigure keyFigure(const GradeThresholds& t, const ImageDiff& d, const GraderSt
     k.value = static_cast<double>(n), k.text = countAndShare(n, d.pixels);
   } else if (t.pixels.maxDiff >= 0) {
     k.value = d.maxChannelDiff, k.text = std::to_string(d.maxChannelDiff);
+  } else if (t.pixels.maxFlip >= 0.0) {
+    k.value = flip.mean, k.text = format("%.4f", flip.mean);
   } else if (t.maxVariance) {
     k.value = s.variance, k.text = format("%.4g", s.variance);
   } else if (t.maxBias) {
@@ -69,12 +71,14 @@ const char* outcomeName(GradeOutcome o) {
 std::string keyFigureLabel(const GradeThresholds& t) {
   if (!t.pixels.pixelsOver.empty()) return "pixels over " + std::to_string(t.pixels.pixelsOver.front().steps) + "/255";
   if (t.pixels.maxDiff >= 0) return "largest difference (/255)";
+  if (t.pixels.maxFlip >= 0.0) return "mean FLIP error";
   if (t.maxVariance) return "variance";
   if (t.maxBias) return "bias";
   return "pixels that differ";
 }
 
-Grade gradeImage(const Image& submission, const Image& reference, const GradeThresholds& t, ImageDiff* diff) {
+Grade gradeImage(const Image& submission, const Image& reference, const GradeThresholds& t, ImageDiff* diff,
+                 FlipMap* flipMap) {
   Grade g;
   g.width = submission.width, g.height = submission.height;
   g.key.label = keyFigureLabel(t);
@@ -90,8 +94,10 @@ Grade gradeImage(const Image& submission, const Image& reference, const GradeThr
   g.maxDiff = d.maxChannelDiff, g.rmse = d.rmse, g.psnr = d.psnr();
   g.differing = static_cast<long long>(d.differing.size()), g.over1 = d.countOver(1), g.over2 = d.countOver(2);
   g.stats = graderStats(submission, reference);
-  g.key = keyFigure(t, d, g.stats);
-  if (t.pixels.any() || !t.any()) g.failures = failedThresholds(d, t.pixels);
+  FlipMap map = ldrFlip(submission, reference);
+  g.flip = flipStats(map);
+  g.key = keyFigure(t, d, g.stats, g.flip);
+  if (t.pixels.any() || !t.any()) g.failures = failedThresholds(d, g.flip, t.pixels);
   if (t.maxBias && std::fabs(g.stats.bias) > *t.maxBias)
     g.failures.push_back("bias " + format("%.4g", g.stats.bias) + " exceeds " + format("%g", *t.maxBias) +
                          " in magnitude (--max-bias)");
@@ -102,6 +108,7 @@ Grade gradeImage(const Image& submission, const Image& reference, const GradeThr
   if (int step = failingStep(t); step >= 0 && g.outcome == GradeOutcome::Fail)
     g.regions = failingRegions(d, step, kRegionCell, kMaxRegions, &g.moreRegions);
   if (diff) *diff = std::move(d);
+  if (flipMap) *flipMap = std::move(map);
   return g;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "grade/grade_thresholds.h"
+#include "compare/flip.h"
 #include "compare/image_diff.h"
 #include "image/crop.h"
 #include "image/grader_stats.h"
@@ -17,8 +18,8 @@ enum class GradeOutcome { Pass, Fail, Missing, Unreadable };
 const char* outcomeName(GradeOutcome o);   // "pass", "fail", "missing", "unreadable"
 
 // The one figure an overview shows for a scene, named by its thresholds: the pixels over the
-// first --max-pixels-over step, else the largest difference, else the variance, else |bias|;
-// with no threshold, the pixels that differ at all.
+// first --max-pixels-over step, else the largest difference, else the mean FLIP error, else
+// the variance, else |bias|; with no threshold, the pixels that differ at all.
 struct KeyFigure {
   std::string label;   // "pixels over 2/255"
   double value = 0;
@@ -35,14 +36,17 @@ struct Grade {
   double rmse = 0, psnr = 0;
   long long differing = 0, over1 = 0, over2 = 0;
   GraderStats stats;
+  FlipStats flip;   // LDR-FLIP of the two 8-bit images
   KeyFigure key;
   std::vector<PixelRect> regions;   // boxes around the failing pixels, largest first
   long long moreRegions = 0;        // boxes left out of `regions`
 };
 
-// The grade of `submission` against `reference` under `t`; `diff` receives the comparison
-// (for the difference image) when the sizes agree. A size that differs fails.
-Grade gradeImage(const Image& submission, const Image& reference, const GradeThresholds& t, ImageDiff* diff);
+// The grade of `submission` against `reference` under `t`; `diff` and `flipMap` (each may be
+// null) receive the comparison and FLIP's error map (for the report's images) when the sizes
+// agree. A size that differs fails.
+Grade gradeImage(const Image& submission, const Image& reference, const GradeThresholds& t, ImageDiff* diff,
+                 FlipMap* flipMap = nullptr);
 
 // The boxes around the pixels of `diff` that differ by more than `steps`: the image cut into
 // `cell` x `cell` squares, the squares holding such pixels joined where they touch (sides or

@@ -224,6 +224,12 @@ std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
       s += "<figure><div class=\"frame\"><img src=\"../" + entryImagePath(i, c, ReportImage::Difference) +
            "\" alt=\"the difference: black where equal, blue to red as it grows\"></div><figcaption>difference: black "
            "where equal, blue to red as it grows (legend below it)</figcaption></figure>\n";
+    if (e.hasDiff)
+      s += "<figure><div class=\"frame\"><img src=\"../" + entryImagePath(i, c, ReportImage::Flip) +
+           "\" width=\"" + std::to_string(g.width) + "\" height=\"" + std::to_string(g.height) +
+           "\" alt=\"the FLIP error map: black for none, through purple and orange to pale yellow for the "
+           "largest\"></div><figcaption>FLIP error (LDR-FLIP, mean " +
+           format("%.4f", g.flip.mean) + "): black none, purple, orange, pale yellow 1</figcaption></figure>\n";
     s += "</div>\n";
     if (sameSize)
       s += "<section class=\"compare\" hidden>\n<h2>Reference and submission in one frame</h2>\n<div class=\"split\"><div class=\"frame\"><img src=\"" +
@@ -245,6 +251,10 @@ std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
     s += figureRow("pixels over 2/255", share(g.over2));
     s += figureRow("bias, mean(reference &minus; image)", format("%.4f", g.stats.bias));
     s += figureRow("variance of (image &minus; reference)", format("%.4f", g.stats.variance));
+    s += figureRow("FLIP error (LDR-FLIP, 67 pixels per degree): mean", format("%.4f", g.flip.mean));
+    s += figureRow("FLIP error: median, 95th, 99th percentile, max",
+                   format("%.4f", g.flip.median) + ", " + format("%.4f", g.flip.p95) + ", " + format("%.4f", g.flip.p99) +
+                       ", " + format("%.4f", g.flip.max));
     s += "</table>\n";
   }
   return s + foot("../");
@@ -282,7 +292,10 @@ std::string summaryJson(const GradeReport& r) {
         s += ", \"max_channel_diff\": " + std::to_string(g.maxDiff) + ", \"rmse\": " + jsonNumber(g.rmse) +
              ", \"psnr_db\": " + jsonNumber(g.psnr) + ", \"pixels_differing\": " + std::to_string(g.differing) +
              ", \"pixels_over_1\": " + std::to_string(g.over1) + ", \"pixels_over_2\": " + std::to_string(g.over2) +
-             ", \"bias\": " + jsonNumber(g.stats.bias) + ", \"variance\": " + jsonNumber(g.stats.variance);
+             ", \"bias\": " + jsonNumber(g.stats.bias) + ", \"variance\": " + jsonNumber(g.stats.variance) +
+             ", \"flip\": {\"mean\": " + jsonNumber(g.flip.mean) + ", \"median\": " + jsonNumber(g.flip.median) +
+             ", \"p95\": " + jsonNumber(g.flip.p95) + ", \"p99\": " + jsonNumber(g.flip.p99) +
+             ", \"max\": " + jsonNumber(g.flip.max) + "}";
       }
       s += ", \"failures\": [";
       for (std::size_t k = 0; k < g.failures.size(); ++k) s += (k ? ", " : "") + jsonQuoted(g.failures[k]);
@@ -306,7 +319,7 @@ std::string csvField(std::string v) {
 
 std::string summaryCsv(const GradeReport& r) {
   std::string s = "submission,scene,status,key_figure,max_channel_diff,rmse,psnr_db,pixels_differing,pixels_over_1,"
-                  "pixels_over_2,bias,variance,image,failures\n";
+                  "pixels_over_2,bias,variance,flip_mean,flip_median,flip_p95,flip_p99,flip_max,image,failures\n";
   for (const ReportSubmission& sub : r.submissions)
     for (std::size_t c = 0; c < sub.entries.size(); ++c) {
       const Grade& g = sub.entries[c].grade;
@@ -318,9 +331,10 @@ std::string summaryCsv(const GradeReport& r) {
         s += format("%.6g", g.key.value) + "," + std::to_string(g.maxDiff) + "," + format("%.6g", g.rmse) + "," +
              (std::isfinite(g.psnr) ? format("%.6g", g.psnr) : "inf") + "," + std::to_string(g.differing) + "," +
              std::to_string(g.over1) + "," + std::to_string(g.over2) + "," + format("%.6g", g.stats.bias) + "," +
-             format("%.6g", g.stats.variance) + ",";
+             format("%.6g", g.stats.variance) + "," + format("%.6g", g.flip.mean) + "," + format("%.6g", g.flip.median) +
+             "," + format("%.6g", g.flip.p95) + "," + format("%.6g", g.flip.p99) + "," + format("%.6g", g.flip.max) + ",";
       else
-        s += ",,,,,,,,,";
+        s += ",,,,,,,,,,,,,,";
       s += csvField(sub.entries[c].source) + "," + csvField(failures) + "\n";
     }
   return s;
@@ -352,7 +366,13 @@ std::string referenceImagePath(std::size_t scene) {
 }
 
 std::string entryImagePath(std::size_t submission, std::size_t scene, ReportImage which) {
-  const char* suffix = which == ReportImage::Submission ? "" : which == ReportImage::Thumbnail ? "-thumb" : "-diff";
+  const char* suffix = "";
+  switch (which) {
+    case ReportImage::Submission: suffix = ""; break;
+    case ReportImage::Thumbnail: suffix = "-thumb"; break;
+    case ReportImage::Difference: suffix = "-diff"; break;
+    case ReportImage::Flip: suffix = "-flip"; break;
+  }
   char buf[64];
   std::snprintf(buf, sizeof buf, "/c%03zu%s.png", scene + 1, suffix);
   return submissionFolder(submission) + buf;
@@ -376,7 +396,7 @@ bool isReportPath(const std::string& relative) {
     return digitsAfter(relative, at = 11, "c") && rest(relative, at, {".png"});
   if (relative.rfind("images/", 0) == 0 && digitsAfter(relative, at = 7, "s")) {   // images/sNNNN[/cNNN[-x].png]
     if (at == relative.size()) return true;
-    return digitsAfter(relative, at, "/c") && rest(relative, at, {".png", "-thumb.png", "-diff.png"});
+    return digitsAfter(relative, at, "/c") && rest(relative, at, {".png", "-thumb.png", "-diff.png", "-flip.png"});
   }
   return false;
 }

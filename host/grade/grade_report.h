@@ -24,7 +24,7 @@ struct ReportEntry {
   Grade grade;
   std::string source;   // the submitted image's path, or the scene file rendered; empty when missing
   bool hasImage = false;   // the submission's image (and its thumbnail) written
-  bool hasDiff = false;    // the difference image written
+  bool hasDiff = false;    // the difference image and the FLIP map written
   int renderStatus = 0;    // a scene file that could not be rendered: its exit status
 };
 
@@ -43,8 +43,9 @@ struct GradeReport {
 
 // Where a comparison's images go inside the report folder (relative paths):
 // the reference once per scene, and per comparison the submission, its thumbnail and the
-// difference image (compare/image_diff.h's heatmap, with its legend).
-enum class ReportImage { Submission, Thumbnail, Difference };
+// difference image (compare/image_diff.h's heatmap, with its legend) and FLIP's error map
+// (compare/flip.h's magma picture).
+enum class ReportImage { Submission, Thumbnail, Difference, Flip };
 std::string referenceImagePath(std::size_t scene);
 std::string entryImagePath(std::size_t submission, std::size_t scene, ReportImage which);
 // The folders those paths lie in, to make before writing them.

@@ -42,6 +42,7 @@ std::string GradeThresholds::text() const {
   auto add = [&](const std::string& part) { s += (s.empty() ? "" : " ") + part; };
   for (const PixelThreshold& p : pixels.pixelsOver) add("--max-pixels-over " + p.text);
   if (pixels.maxDiff >= 0) add("--max-diff " + std::to_string(pixels.maxDiff));
+  if (pixels.maxFlip >= 0.0) add("--max-flip " + number(pixels.maxFlip));
   if (maxBias) add("--max-bias " + number(*maxBias));
   if (maxVariance) add("--max-variance " + number(*maxVariance));
   return s;
@@ -61,6 +62,8 @@ bool applyThresholdOption(const std::string& name, const std::string& value, Gra
     if (ec != std::errc() || end != value.data() + value.size() || n < 0 || n > 255)
       throw UsageError("--max-diff expects an integer from 0 to 255, got '" + echoed(value) + "'");
     t.pixels.maxDiff = n;
+  } else if (name == "--max-flip") {
+    t.pixels.maxFlip = parseFlipThreshold(value);
   } else if (name == "--max-bias") {
     t.maxBias = nonNegative(name, value);
   } else if (name == "--max-variance") {

@@ -14,7 +14,7 @@
 namespace vkrt {
 
 struct GradeThresholds {
-  CheckThresholds pixels;              // --max-pixels-over, --max-diff
+  CheckThresholds pixels;              // --max-pixels-over, --max-diff, --max-flip
   std::optional<double> maxBias;       // fails when |bias| exceeds it (8-bit units)
   std::optional<double> maxVariance;   // fails when the variance exceeds it (8-bit units squared)
   // None at all: any difference fails, as in `vkrt diff`.

@@ -414,7 +414,7 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
 }
 
 RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image,
-                             RenderSession* session) {
+                             RenderSession* session, RadianceImage* radiance) {
   RenderReport report;
   RenderSession ownSession;
   RenderSession& vulkan = session ? *session : ownSession;
@@ -428,6 +428,7 @@ RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress
     writeImageAtomic(rendered, report.outputPath, report.gamma);
     report.writeSeconds = secondsSince(t0);
     if (image) *image = encodeImage(rendered, report.gamma);
+    if (image && radiance) *radiance = std::move(rendered);
     return report;
   }
   // Streamed: the file is open while the render runs, and each band is encoded as it comes;

@@ -172,10 +172,12 @@ class RenderSession {
 // as PPM, else PNG). A Whitted render is streamed: each band of rows is encoded into the
 // temporary file as the renderer finishes it (image/row_sink.h), so memory does not grow with
 // the image; a path integrator's (its running mean) is held whole. `image`, when given,
-// receives the rendered image (for --check; the render is then held whole too). `session`, when
-// given, lends the Vulkan context of earlier renders (without: one is made and destroyed).
+// receives the rendered image (for --check; the render is then held whole too), and
+// `radiance`, when given with it, the linear image before encoding (--check against a float
+// reference: HDR-FLIP). `session`, when given, lends the Vulkan context of earlier renders
+// (without: one is made and destroyed).
 RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress, Image* image = nullptr,
-                             RenderSession* session = nullptr);
+                             RenderSession* session = nullptr, RadianceImage* radiance = nullptr);
 
 // The same without writing the image (--compare): the linear image, with its records (the
 // crop's, and a path integrator's vkrt-samples: image/samples.h); report.gamma encodes it.

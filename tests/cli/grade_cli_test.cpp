@@ -102,10 +102,10 @@ TEST(GradeCli, AClassOfFoldersGradedIntoAReport) {
   // The figures for scripts, a row per comparison.
   const std::string csv = readFile(report + "/summary.csv");
   EXPECT_TRUE(contains(csv, "submission,scene,status,key_figure,max_channel_diff,")) << csv;
-  EXPECT_TRUE(contains(csv, "alice,b,pass,0,0,0,inf,0,0,0,0,0," + k.subs + "/alice/hw/b.png,\n")) << csv;
+  EXPECT_TRUE(contains(csv, "alice,b,pass,0,0,0,inf,0,0,0,0,0,0,0,0,0,0," + k.subs + "/alice/hw/b.png,\n")) << csv;
   EXPECT_TRUE(contains(csv, "bob,a,fail,5,10,")) << csv;
-  EXPECT_TRUE(contains(csv, "bob,b,missing,,,,,,,,,,,\n")) << csv;
-  EXPECT_TRUE(contains(csv, "bob,c,fail,,,,,,,,,," + k.subs + "/bob/c.png,\"the image is 41x30, the reference 40x30\"\n"))
+  EXPECT_TRUE(contains(csv, "bob,b,missing,,,,,,,,,,,,,,,,\n")) << csv;
+  EXPECT_TRUE(contains(csv, "bob,c,fail,,,,,,,,,,,,,,," + k.subs + "/bob/c.png,\"the image is 41x30, the reference 40x30\"\n"))
       << csv;
   EXPECT_TRUE(contains(csv, "bob,d,pass,2,10,")) << csv;
   EXPECT_TRUE(contains(csv, "carol,a,unreadable,")) << csv;
@@ -133,6 +133,13 @@ TEST(GradeCli, AClassOfFoldersGradedIntoAReport) {
   EXPECT_EQ(readImage(report + "/images/ref/c003.png").rgb, k.c.rgb);
   EXPECT_EQ(readImage(report + "/images/s0003/c001-thumb.png").width, 64);   // fits 96x72 already
   EXPECT_TRUE(fileExists(report + "/images/s0003/c001-diff.png"));
+  // FLIP's map beside the heatmap, of the image's size, and its figures on the page and in the summary.
+  EXPECT_EQ(readImage(report + "/images/s0003/c001-flip.png").width, k.a.width);
+  EXPECT_TRUE(contains(bobA, "src=\"../images/s0003/c001-flip.png\"")) << bobA;
+  EXPECT_TRUE(contains(bobA, "FLIP error (LDR-FLIP, mean 0.")) << bobA;
+  EXPECT_TRUE(contains(bobA, "FLIP error: median, 95th, 99th percentile, max")) << bobA;
+  EXPECT_TRUE(contains(json, "\"variance\": 0, \"flip\": {\"mean\": 0, \"median\": 0, \"p95\": 0, \"p99\": 0, \"max\": 0}"))
+      << json;
   EXPECT_FALSE(fileExists(report + "/pages/s0003-c002.html"));
   EXPECT_TRUE(fileExists(report + "/pages/s0004-c001.html"));   // carol's unreadable a
   // What it read is as it was; nothing temporary is left.

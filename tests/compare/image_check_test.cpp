@@ -46,20 +46,33 @@ TEST(ImageCheck, ThresholdsParseAndDecide) {
     EXPECT_THROW(parsePixelThreshold(bad), UsageError) << bad;
 
   ImageDiff d = compare(changed(5, 3), grey());   // 5 of 100 pixels off by 3
+  const FlipStats noFlip;
   CheckThresholds none;
-  EXPECT_EQ(failedThresholds(d, none).size(), 1u) << "no threshold: any difference fails";
+  EXPECT_EQ(failedThresholds(d, noFlip, none).size(), 1u) << "no threshold: any difference fails";
   CheckThresholds count{{parsePixelThreshold("2:5")}, -1};
-  EXPECT_TRUE(failedThresholds(d, count).empty());
+  EXPECT_TRUE(failedThresholds(d, noFlip, count).empty());
   CheckThresholds fewer{{parsePixelThreshold("2:4")}, -1};
-  EXPECT_EQ(failedThresholds(d, fewer).size(), 1u);
+  EXPECT_EQ(failedThresholds(d, noFlip, fewer).size(), 1u);
   CheckThresholds share{{parsePixelThreshold("2:5%")}, -1};
-  EXPECT_TRUE(failedThresholds(d, share).empty());
+  EXPECT_TRUE(failedThresholds(d, noFlip, share).empty());
   CheckThresholds smallerShare{{parsePixelThreshold("2:4.9%")}, -1};
-  EXPECT_EQ(failedThresholds(d, smallerShare).size(), 1u);
+  EXPECT_EQ(failedThresholds(d, noFlip, smallerShare).size(), 1u);
   CheckThresholds steps{{parsePixelThreshold("3:0")}, -1};
-  EXPECT_TRUE(failedThresholds(d, steps).empty()) << "off by 3 is not more than 3";
+  EXPECT_TRUE(failedThresholds(d, noFlip, steps).empty()) << "off by 3 is not more than 3";
   CheckThresholds maxDiff{{}, 2};
-  EXPECT_EQ(failedThresholds(d, maxDiff).size(), 1u);
+  EXPECT_EQ(failedThresholds(d, noFlip, maxDiff).size(), 1u);
+
+  // --max-flip judges the mean FLIP error alone: a mean above X fails, one equal to it passes.
+  FlipStats flip;
+  flip.mean = 0.25;
+  CheckThresholds maxFlip;
+  maxFlip.maxFlip = parseFlipThreshold("0.25");
+  EXPECT_TRUE(failedThresholds(d, flip, maxFlip).empty()) << "0.25 does not exceed 0.25";
+  maxFlip.maxFlip = parseFlipThreshold("0.2");
+  ASSERT_EQ(failedThresholds(d, flip, maxFlip).size(), 1u);
+  EXPECT_NE(failedThresholds(d, flip, maxFlip)[0].find("(--max-flip)"), std::string::npos);
+  for (const char* bad : {"", "-0.1", "1.5", "x", "0.1x", "nan"})
+    EXPECT_THROW(parseFlipThreshold(bad), UsageError) << bad;
 }
 
 TEST(ImageCheck, HeatmapColoursAndLegend) {

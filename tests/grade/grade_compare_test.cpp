@@ -109,6 +109,30 @@ TEST(GradeImage, PixelThresholdsAndTheKeyFigure) {
   EXPECT_EQ(size.failures[0], "the image is 41x30, the reference 40x30");
 }
 
+// --max-flip: the mean LDR-FLIP error of the two 8-bit images, its key figure, its text in the
+// thresholds and a thresholds file.
+TEST(GradeImage, MaxFlipJudgesTheMeanFlipError) {
+  Image ref = filled(40, 30, 10, 10, 10), img = ref;
+  for (int x = 0; x < 40; ++x) img.pixel(x, 15)[1] = 200;   // a green line
+  FlipMap map;
+  Grade loose = gradeImage(img, ref, thresholds({{"--max-flip", "0.5"}}), nullptr, &map);
+  const double mean = flipStats(ldrFlip(img, ref)).mean;
+  ASSERT_GT(mean, 0.01);
+  EXPECT_DOUBLE_EQ(loose.flip.mean, mean);
+  EXPECT_EQ(loose.outcome, GradeOutcome::Pass);
+  EXPECT_EQ(loose.key.label, "mean FLIP error");
+  EXPECT_DOUBLE_EQ(loose.key.value, mean);
+  EXPECT_EQ(map.error.size(), 40u * 30u);
+  Grade tight = gradeImage(img, ref, thresholds({{"--max-flip", "0.01"}}), nullptr);
+  EXPECT_EQ(tight.outcome, GradeOutcome::Fail);
+  ASSERT_EQ(tight.failures.size(), 1u);
+  EXPECT_NE(tight.failures[0].find("LDR-FLIP mean error"), std::string::npos) << tight.failures[0];
+  EXPECT_EQ(thresholds({{"--max-flip", "0.05"}}).text(), "--max-flip 0.05");
+  GradeThresholds t;
+  EXPECT_THROW(applyThresholdOption("--max-flip", "2", t), UsageError);
+  EXPECT_DOUBLE_EQ(gradeImage(ref, ref, GradeThresholds{}, nullptr).flip.max, 0.0);
+}
+
 // Two blobs of failing pixels, one of them two squares that touch at a corner: two boxes,
 // the one with more pixels first, each the bounding box of its squares (cut at the image's
 // edge); pixels under the step are no region; the limit keeps the largest.
