@@ -89,7 +89,7 @@ bool BandBuffers::run(ComputePipeline& pipeline, const void* push, std::uint32_t
     finished = std::uint64_t{y0 + rows} * layout.width * samples;
     if (firstBandRows && pace.budget && bandSeconds > 0)
       next = timedBandRows(static_cast<double>(bandSteps) / bandSeconds,
-                           static_cast<double>(bandSteps) / (std::uint64_t{rows} * layout.width),
+                           static_cast<double>(bandSteps) / static_cast<double>(std::uint64_t{rows} * layout.width),
                            *pace.budget / layout.tilesPerGroup, layout.width, layout.bandHeight);
   }
   rays.primary = total;

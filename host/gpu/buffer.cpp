@@ -32,7 +32,7 @@ std::uint32_t chooseMemoryType(const VkPhysicalDeviceMemoryProperties& mem, std:
 
 Buffer::Buffer(const Context& context, std::size_t bytes, bool readback)
     : device_(context.device()), size_(std::max(bytes, kMinBufferBytes)) {
-  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  auto info = vk::make<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
   info.size = size_;
   info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT |
                VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -41,7 +41,7 @@ Buffer::Buffer(const Context& context, std::size_t bytes, bool readback)
   try {
     VkMemoryRequirements req;
     vk::vkGetBufferMemoryRequirements(device_, buffer_, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    auto alloc = vk::make<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = chooseMemoryType(
         context.memoryProperties(), req.memoryTypeBits,

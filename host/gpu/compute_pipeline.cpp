@@ -26,20 +26,20 @@ CompiledPipeline compile(VkDevice device, const PipelineKey& key) {
     std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
     for (std::uint32_t i = 0; i < bindingCount; ++i)
       bindings[i] = {i, key.bindingTypes[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    auto setInfo = vk::make<VkDescriptorSetLayoutCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
     setInfo.bindingCount = bindingCount;
     setInfo.pBindings = bindings.data();
     VK_CHECK(vk::vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &made.setLayout));
 
     VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, key.pushConstantBytes};
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    auto layoutInfo = vk::make<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
     layoutInfo.setLayoutCount = 1;
     layoutInfo.pSetLayouts = &made.setLayout;
     layoutInfo.pushConstantRangeCount = key.pushConstantBytes ? 1 : 0;
     layoutInfo.pPushConstantRanges = &range;
     VK_CHECK(vk::vkCreatePipelineLayout(device, &layoutInfo, nullptr, &made.layout));
 
-    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    auto moduleInfo = vk::make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
     moduleInfo.codeSize = key.spirvBytes;
     moduleInfo.pCode = key.spirv;
     VkShaderModule module = VK_NULL_HANDLE;
@@ -50,8 +50,9 @@ CompiledPipeline compile(VkDevice device, const PipelineKey& key) {
       entries[i] = {i, i * static_cast<std::uint32_t>(sizeof(std::uint32_t)), sizeof(std::uint32_t)};
     VkSpecializationInfo spec{static_cast<std::uint32_t>(entries.size()), entries.data(),
                               specConstants.size() * sizeof(std::uint32_t), specConstants.data()};
-    VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    pipelineInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    auto pipelineInfo = vk::make<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    pipelineInfo.stage =
+        vk::make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
     pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipelineInfo.stage.module = module;
     pipelineInfo.stage.pName = "main";
@@ -68,9 +69,11 @@ CompiledPipeline compile(VkDevice device, const PipelineKey& key) {
 }
 
 // The context's pipeline of `key`, made now (its bindings checked against the device's limits)
-// if it has none.
-const CompiledPipeline& compiled(const Context& context, const PipelineKey& key) {
-  return context.pipelines().get(key, [&] {
+// if it has none. It lives in the context's cache, not in `key`: a pointer, because GCC 14's
+// -Wdangling-reference takes a reference returned from a call given a temporary key (as the
+// callers below give it) for one into that temporary.
+const CompiledPipeline* compiled(const Context& context, const PipelineKey& key) {
+  return &context.pipelines().get(key, [&] {
     checkBindingLimits(context.properties().limits, context.properties().deviceName, key.bindingTypes);
     return compile(context.device(), key);
   });
@@ -113,11 +116,11 @@ ComputePipeline::ComputePipeline(const Context& context, const std::uint32_t* sp
                                  const std::vector<std::uint32_t>& specConstants, std::uint32_t pushConstantBytes)
     : context_(context), device_(context.device()), pushConstantBytes_(pushConstantBytes) {
   try {
-    const CompiledPipeline& made =
+    const CompiledPipeline* made =
         compiled(context, PipelineKey{spirv, spirvBytes, bindingTypes, specConstants, pushConstantBytes});
-    setLayout_ = made.setLayout;
-    layout_ = made.layout;
-    pipeline_ = made.pipeline;
+    setLayout_ = made->setLayout;
+    layout_ = made->layout;
+    pipeline_ = made->pipeline;
 
     std::vector<VkDescriptorPoolSize> poolSizes;
     for (VkDescriptorType type : bindingTypes) {
@@ -127,27 +130,27 @@ ComputePipeline::ComputePipeline(const Context& context, const std::uint32_t* sp
       else
         ++it->descriptorCount;
     }
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    auto poolInfo = vk::make<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
     poolInfo.maxSets = 1;
     poolInfo.poolSizeCount = static_cast<std::uint32_t>(poolSizes.size());
     poolInfo.pPoolSizes = poolSizes.data();
     VK_CHECK(vk::vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
-    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    auto allocInfo = vk::make<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
     allocInfo.descriptorPool = pool_;
     allocInfo.descriptorSetCount = 1;
     allocInfo.pSetLayouts = &setLayout_;
     VK_CHECK(vk::vkAllocateDescriptorSets(device_, &allocInfo, &set_));
 
-    VkCommandPoolCreateInfo cmdPoolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    auto cmdPoolInfo = vk::make<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
     cmdPoolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     cmdPoolInfo.queueFamilyIndex = context.queueFamily();
     VK_CHECK(vk::vkCreateCommandPool(device_, &cmdPoolInfo, nullptr, &commandPool_));
-    VkCommandBufferAllocateInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    auto cmdInfo = vk::make<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
     cmdInfo.commandPool = commandPool_;
     cmdInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     cmdInfo.commandBufferCount = 1;
     VK_CHECK(vk::vkAllocateCommandBuffers(device_, &cmdInfo, &commands_));
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    auto fenceInfo = vk::make<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
     VK_CHECK(vk::vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
   } catch (...) {
     release();   // the destructor does not run for an object whose constructor threw
@@ -174,7 +177,7 @@ void ComputePipeline::release() {
 
 void ComputePipeline::write(std::uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* buffer,
                             const VkBufferView* view) {
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  auto write = vk::make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
   write.dstSet = set_;
   write.dstBinding = binding;
   write.descriptorCount = 1;
@@ -191,7 +194,7 @@ void ComputePipeline::bind(std::uint32_t binding, const Buffer& buffer) {
 
 void ComputePipeline::bindTexels(std::uint32_t binding, const Buffer& buffer, VkFormat format,
                                  std::size_t texelBytes) {
-  VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+  auto info = vk::make<VkBufferViewCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO);
   info.buffer = buffer.handle();
   info.format = format;
   info.offset = 0;
@@ -204,12 +207,12 @@ void ComputePipeline::bindTexels(std::uint32_t binding, const Buffer& buffer, Vk
 
 void ComputePipeline::run(const void* pushConstants, std::uint32_t groups, const Buffer* clear) {
   VK_CHECK(vk::vkResetCommandBuffer(commands_, 0));
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  auto begin = vk::make<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   VK_CHECK(vk::vkBeginCommandBuffer(commands_, &begin));
   // Earlier dispatches' writes (a suspended pixel's state) and the host's writes to the
   // mappings must be visible to this dispatch's reads.
-  VkMemoryBarrier earlier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  auto earlier = vk::make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
   earlier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_WRITE_BIT;
   earlier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
   vk::vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
@@ -218,7 +221,7 @@ void ComputePipeline::run(const void* pushConstants, std::uint32_t groups, const
   if (clear) {
     vk::vkCmdFillBuffer(commands_, clear->handle(), 0, 4, 0);
     // The cleared counter must be in place before the shader increments it.
-    VkMemoryBarrier fill{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    auto fill = vk::make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     fill.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     fill.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
     vk::vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
@@ -230,13 +233,13 @@ void ComputePipeline::run(const void* pushConstants, std::uint32_t groups, const
     vk::vkCmdPushConstants(commands_, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes_, pushConstants);
   vk::vkCmdDispatch(commands_, groups, 1, 1);
   // The host reads the shader's writes (pixels, counters) through the mapping after the fence.
-  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  auto toHost = vk::make<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
   toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
   vk::vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost,
                            0, nullptr, 0, nullptr);
   VK_CHECK(vk::vkEndCommandBuffer(commands_));
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  auto submit = vk::make<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &commands_;
   VK_CHECK(vk::vkQueueSubmit(context_.queue(), 1, &submit, fence_));

@@ -10,10 +10,12 @@ namespace {
 
 // The drivers that reach their GPUs through DRM render nodes only, by their manifests' file
 // names (the loader's globs): Mesa's for Intel, Radeon, Nouveau, virtio, Apple, Qualcomm,
-// Arm, Broadcom and Imagination GPUs, and AMD's own.
+// Arm, Broadcom and Imagination GPUs, AMD's own, and gfxstream's (virtual GPUs of emulators,
+// in Debian 13's Mesa; without a render node it loads and finds nothing). Debian 12 names the
+// manifests intel_icd.x86_64.json, Debian 13 intel_icd.json: the globs match both.
 constexpr const char* kRenderNodeDrivers =
     "intel_icd*,intel_hasvk_icd*,radeon_icd*,nouveau_icd*,virtio_icd*,asahi_icd*,freedreno_icd*,panfrost_icd*,"
-    "broadcom_icd*,powervr_mesa_icd*,amd_icd*";
+    "broadcom_icd*,powervr_mesa_icd*,amd_icd*,gfxstream_vk_icd*";
 constexpr const char* kDeviceSelectLayer = "VK_LAYER_MESA_device_select";
 
 // The loader's variables that choose drivers, and those that choose layers (or the device

@@ -77,4 +77,15 @@ void loadInstanceFunctions(VkInstance instance);
 // "VK_ERROR_OUT_OF_DEVICE_MEMORY" and so on.
 const char* resultName(VkResult result);
 
+// A Vulkan struct of type `sType`, every other member zero (pNext null):
+// `auto info = vk::make<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);`. Written
+// `VkBufferCreateInfo info{VK_STRUCTURE_TYPE_...}` the members after sType are zero too, but
+// clang's -Wmissing-field-initializers (in -Wextra) reports each such struct.
+template <class T>
+T make(VkStructureType sType) {
+  T s{};
+  s.sType = sType;
+  return s;
+}
+
 }  // namespace vkrt::vk

@@ -199,7 +199,7 @@ TEST(ExitStatus, OutOfMemoryIs6WheneverFound) {
   EXPECT_EQ(before.exitCode, 6) << before.output;
   EXPECT_NE(before.output.find("vkrt: error: out of memory: a 16384x16384 image"), std::string::npos)
       << before.output;
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(VKRT_SANITIZE_BUILD)   // GCC defines __SANITIZE_ADDRESS__, clang 14 does not
   // (AddressSanitizer reserves more address space than the limit, and ends the process
   // itself when an allocation fails: this half runs in the plain build only.) A path
   // integrator holds its running mean whole (a Whitted render streams in bands and fits).

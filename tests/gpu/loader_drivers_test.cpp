@@ -1,7 +1,9 @@
 // The drivers vkrt asks the Vulkan loader to skip (gpu/loader_drivers.h): those that reach GPUs
 // only through DRM render nodes, on a machine without one; never a user's own choice.
+#include <algorithm>
 #include <filesystem>
 #include <map>
+#include <system_error>
 
 #include <gtest/gtest.h>
 
@@ -29,6 +31,30 @@ bool hasSetting(const std::vector<std::pair<std::string, std::string>>& settings
   return false;
 }
 
+// The manifests in `dir` that vkrt asks the loader to skip without a render node: those whose
+// names match one of VK_LOADER_DRIVERS_DISABLE's globs (each a prefix and '*', as vkrt writes
+// them). Debian 12 names Mesa's manifests intel_icd.x86_64.json, Debian 13 intel_icd.json.
+std::vector<std::string> installedSkippedManifests(const std::filesystem::path& dir) {
+  const std::string globs = settingsWith({}, false).at(0).second;
+  std::vector<std::string> found;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    for (std::size_t start = 0; start <= globs.size();) {
+      std::size_t comma = globs.find(',', start);
+      if (comma == std::string::npos) comma = globs.size();
+      std::string glob = globs.substr(start, comma - start);
+      if (!glob.empty() && glob.back() == '*') glob.pop_back();
+      if (name.rfind(glob, 0) == 0) {
+        found.push_back(name);
+        break;
+      }
+      start = comma + 1;
+    }
+  }
+  return found;
+}
+
 }  // namespace
 
 TEST(LoaderDrivers, WithoutARenderNodeTheGpuDriversAreSkipped) {
@@ -40,6 +66,22 @@ TEST(LoaderDrivers, WithoutARenderNodeTheGpuDriversAreSkipped) {
   for (const char* kept : {"lvp", "nvidia", "swiftshader"})   // drivers that need no render node
     EXPECT_EQ(settings[0].second.find(kept), std::string::npos) << kept;
   EXPECT_EQ(settings[1], std::make_pair(std::string("VK_LOADER_LAYERS_DISABLE"), std::string("VK_LAYER_MESA_device_select")));
+}
+
+// Mesa's manifests as Debian 12 names them (intel_icd.x86_64.json) and as Debian 13 does
+// (intel_icd.json, and gfxstream_vk_icd.json for virtio GPUs): the render-node drivers of both
+// are found to be skipped, and lavapipe is not.
+TEST(LoaderDrivers, BothReleasesManifestNamesAreRecognised) {
+  const std::string dir = freshDir("loader-manifests");
+  for (const char* name : {"intel_icd.x86_64.json", "radeon_icd.x86_64.json", "intel_hasvk_icd.x86_64.json",
+                           "lvp_icd.x86_64.json", "intel_icd.json", "radeon_icd.json", "intel_hasvk_icd.json",
+                           "gfxstream_vk_icd.json", "lvp_icd.json", "nvidia_icd.json"})
+    writeFile(dir + "/" + name, "{}");
+  std::vector<std::string> found = installedSkippedManifests(dir);
+  std::sort(found.begin(), found.end());
+  EXPECT_EQ(found, (std::vector<std::string>{"gfxstream_vk_icd.json", "intel_hasvk_icd.json", "intel_hasvk_icd.x86_64.json",
+                                            "intel_icd.json", "intel_icd.x86_64.json", "radeon_icd.json",
+                                            "radeon_icd.x86_64.json"}));
 }
 
 TEST(LoaderDrivers, WithARenderNodeNothingIsSkipped) { EXPECT_TRUE(settingsWith({}, true).empty()); }
@@ -64,9 +106,7 @@ TEST(LoaderDrivers, TheUsersChoiceStands) {
 // loader lists with every driver (a user's VK_LOADER_DRIVERS_SELECT, obeyed as given).
 TEST(LoaderDrivers, TheBinarySkipsThemAndFindsTheSameDevices) {
   if (hasDrmRenderNode()) GTEST_SKIP() << "this machine has a DRM render node: nothing is skipped here";
-  bool installed = false;
-  for (const char* name : {"intel_icd.x86_64.json", "radeon_icd.x86_64.json"})
-    installed = installed || std::filesystem::exists(std::string("/usr/share/vulkan/icd.d/") + name);
+  const bool installed = !installedSkippedManifests("/usr/share/vulkan/icd.d").empty();
   if (!installed) VKRT_SKIP_UNLESS_CI("no Mesa Intel or Radeon Vulkan driver installed to be skipped");
   if (!installed) return;
   RunResult logged = runVkrt("--list-devices", "VK_LOADER_DEBUG=driver");

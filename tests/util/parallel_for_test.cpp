@@ -4,6 +4,7 @@
 #include "util/parallel_for.h"
 
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -41,12 +42,17 @@ TEST(ParallelFor, UsesTheThreadsItIsGivenAndTheCallers) {
   EXPECT_EQ(seen.count(std::this_thread::get_id()), 1u) << "the caller's thread works too";
 }
 
+// Every other job takes 20 us or more, so that the other thread cannot run all of them (2 s
+// or more) while the failing one is descheduled between its throw and the stop: with jobs of
+// an increment alone, on a loaded machine (CI beside other builds), it once did, and the
+// test failed with all 100000 run.
 TEST(ParallelFor, AJobsExceptionStopsTheRestAndReachesTheCaller) {
   std::atomic<int> ran{0};
   try {
     parallelFor(100000, 2, [&](std::size_t i) {
       ++ran;
       if (i == 10) throw std::runtime_error("job 10 failed");
+      std::this_thread::sleep_for(std::chrono::microseconds(20));
     });
     FAIL() << "no exception";
   } catch (const std::runtime_error& e) {
