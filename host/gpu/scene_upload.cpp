@@ -110,14 +110,15 @@ SceneUpload::~SceneUpload() {
   }
 }
 
-bool texelsFitBeforeBvh(const GpuScene& scene, SceneArrays arrays, std::size_t maxTexels) {
+bool texelsFitBeforeBvh(const GpuScene& scene, SceneArrays arrays, std::size_t maxTexels, bool wideBvh) {
   const std::size_t primitives = primitiveCount(scene);
   bool fit = true;
   // (The BVH's arrays are only sized here, by the primitives: another thread may be building
   // them. The wide BVH has the root and a block of 4 for each of at most primitives - 1
   // interior nodes: wide_bvh.h.)
+  const std::size_t nodesPerPrimitive = wideBvh ? 4 : 2;
   forEachTexelArray(scene, arrays, [&](std::uint32_t binding, const auto& items) {
-    const std::size_t count = binding == gpu::kBindingBvhNodes  ? std::max<std::size_t>(1, 4 * primitives)
+    const std::size_t count = binding == gpu::kBindingBvhNodes  ? std::max<std::size_t>(1, nodesPerPrimitive * primitives)
                               : binding == gpu::kBindingPrimRefs ? primitives
                                                                  : items.size();
     fit = fit && texelPaddedBytes(count * sizeof(items[0])) / texelBytesAt(binding) <= maxTexels;

@@ -56,9 +56,9 @@ class SceneUpload {
 };
 
 // SceneUpload::texelsFit of `scene` before its BVH is built (scene.bvh empty), with the BVH
-// at its largest: 2n nodes and n references for n primitives (a guess for a pipeline made
-// ahead, which the render's own check confirms).
-bool texelsFitBeforeBvh(const GpuScene& scene, SceneArrays arrays, std::size_t maxTexels);
+// at its largest: 2n nodes (4n when `wideBvh`: scene/wide_bvh.h) and n references for n
+// primitives (a guess for a pipeline made ahead, which the render's own check confirms).
+bool texelsFitBeforeBvh(const GpuScene& scene, SceneArrays arrays, std::size_t maxTexels, bool wideBvh);
 
 // Whether the shader reads the scene through texel buffers: as `reads` says, Auto where
 // `fit` (SceneUpload::texelsFit with the device's maxTexelBufferElements) and the device

@@ -189,7 +189,7 @@ void prepareVulkanPathPipeline(const Context& context, const GpuScene& scene, co
   checkLightSlots(scene);
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const PathShader p = pathShader(context, scene, options, pathLayout(context, scene, options, samples), samples,
-                                  texelsFitBeforeBvh(scene, SceneArrays::Path, maxTexels), eachPrimitiveOnce);
+                                  texelsFitBeforeBvh(scene, SceneArrays::Path, maxTexels, options.wideBvh), eachPrimitiveOnce);
   prepareTechnique(context, p.shader, SceneArrays::Path, sizeof(gpu::GpuPathPush));
 }
 

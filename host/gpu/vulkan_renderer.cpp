@@ -132,7 +132,7 @@ void prepareVulkanPipeline(const Context& context, const GpuScene& scene, const 
                            bool eachPrimitiveOnce) {
   const std::size_t maxTexels = context.properties().limits.maxTexelBufferElements;
   const WhittedShader w = whittedShader(context, scene, options, whittedLayout(context, scene, options),
-                                        texelsFitBeforeBvh(scene, SceneArrays::Whitted, maxTexels), eachPrimitiveOnce);
+                                        texelsFitBeforeBvh(scene, SceneArrays::Whitted, maxTexels, options.wideBvh), eachPrimitiveOnce);
   prepareTechnique(context, w.shader, SceneArrays::Whitted, sizeof(gpu::GpuPushConstants));
 }
 

@@ -99,8 +99,6 @@ VulkanTechnique pathVulkan(const BackendInputs& in) {
 
 // ---- the views: one deterministic sample a pixel, their shaders on the Whitted host --------
 
-bool noScene(const SceneDesc&) { return false; }   // a view is only asked for by name
-
 VulkanTechnique normalsVulkan(const BackendInputs& in) { return onWhittedHost(in, "normals"); }
 
 // The rows: the scene's own techniques in the order they are asked (the last takes every
@@ -108,7 +106,7 @@ VulkanTechnique normalsVulkan(const BackendInputs& in) { return onWhittedHost(in
 const Technique kTechniques[] = {
     {"whitted", nullptr, whittedRenders, false, eachPixelOnceCpu<renderReference>, whittedVulkan},
     {"path", nullptr, pathRenders, true, pathCpu, pathVulkan},
-    {"normals", "each pixel's surface normal n as the colour n * 0.5 + 0.5", noScene, false,
+    {"normals", "each pixel's surface normal n as the colour n * 0.5 + 0.5", nullptr, false,
      eachPixelOnceCpu<renderNormals>, normalsVulkan},
 };
 

@@ -40,7 +40,8 @@ struct Technique {
   // A view of the scene (vkrt --view NAME), with its --help line; null for the techniques a
   // scene chooses by its integrator.
   const char* view;
-  // For a scene's own technique: the scenes it renders (the first row that takes a scene renders it).
+  // For a scene's own technique: the scenes it renders (the first row that takes a scene
+  // renders it); null for a view, which only --view asks for.
   bool (*renders)(const SceneDesc& scene);
   // Batches of random samples, encoded with the scene's gamma; false: one deterministic sample
   // a pixel, gamma 1, streamed to the file where the output allows.
