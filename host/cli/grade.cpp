@@ -27,6 +27,8 @@
 #include "util/errors.h"
 #include "grade/grade_inputs.h"
 #include "grade/grade_report.h"
+#include "grade/gradescope.h"
+#include "image/atomic_file.h"
 #include "image/encode.h"
 #include "image/image_file.h"
 #include "image/image_read.h"
@@ -36,6 +38,7 @@
 #include "util/parallel_for.h"
 #include "render/progress.h"
 #include "render/render.h"
+#include "scene/parse.h"
 #include "util/text.h"   // abbreviated
 
 namespace vkrt {
@@ -106,6 +109,22 @@ fs::path checkReportFolder(const std::string& output, const std::vector<std::str
     throw IoError("cannot write the report '" + abbreviated(output) + "': the folder '" + abbreviated(parent.string()) +
                   "' does not exist");
   return out;
+}
+
+// Where --gradescope's file goes: refused (RefusedOutput) when it is or lies in something the
+// run reads or the report folder (which is replaced whole), IoError when it cannot be written
+// (a folder, a missing folder on the way: atomic_file.h). Checked before anything is graded.
+void checkGradescopeFile(const std::string& path, const std::vector<std::string>& inputs, const fs::path& report) {
+  const fs::path file = canonicalFolder(resolveOutputFile(path).target);
+  std::vector<std::string> around = inputs;
+  around.push_back(report.string());
+  for (const std::string& in : around)
+    if (inside(file, canonicalFolder(in)))
+      throw RefusedOutput("--gradescope " + abbreviated(path) + ": " +
+                          (file == canonicalFolder(in) ? "is" : "lies in") + " '" + abbreviated(in) +
+                          "', which this run " + (in == report.string() ? "writes whole" : "reads") +
+                          "; name a file apart from them");
+  checkOutputWritable(path);
 }
 
 // A fresh folder in `folder`, named .vkrt-grade-XXXXXX, readable as a new folder would be.
@@ -276,9 +295,21 @@ Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& sce
     } catch (...) {
       std::exception_ptr e = std::current_exception();
       if (int signal = pendingInterrupt()) throw Interrupted(signal);
-      int s = reportError(e, {scene, o.quiet}, stderr);
+      // The messages go to the terminal and, for the report (and a student on Gradescope), into the entry.
+      char* text = nullptr;
+      std::size_t length = 0;
+      std::FILE* messages = open_memstream(&text, &length);
+      int s = messages ? reportError(e, {scene, o.quiet}, messages) : reportError(e, {scene, o.quiet}, stderr);
+      std::string said;
+      if (messages) {
+        std::fclose(messages);
+        said.assign(text, length);
+        std::free(text);
+        std::fputs(said.c_str(), stderr);
+      }
+      while (!said.empty() && said.back() == '\n') said.pop_back();
       status = worseExitStatus(status, s);
-      r.errors[key] = {"cannot be rendered: " + exitStatusName(s) + " (its messages are on the terminal)", s};
+      r.errors[key] = {"cannot be rendered: " + exitStatusName(s) + (said.empty() ? "" : ":\n" + said), s};
     }
   }
   return r;
@@ -389,6 +420,36 @@ int printOutcomes(const GradeOptions& o, const GradeReport& report, int status) 
 
 }  // namespace
 
+// What a scene file tells the grading of its images: whether it renders by Monte Carlo
+// (`integrator direct` or `pathtracer`: noise around the reference, not the reference itself)
+// and its images' `gamma`. Nothing when it cannot be read (its render, if any, says why).
+struct SceneGrading {
+  bool monteCarlo = false;
+  double gamma = 1.0;
+};
+std::optional<SceneGrading> sceneGrading(const std::string& path) {
+  try {
+    const PathSettings p = parseSceneFile(path).path;
+    return SceneGrading{p.integrator == Integrator::Direct || p.integrator == Integrator::PathTracer, p.gamma};
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+// The scene files that say which scenes are path-traced, by scene key: those given to render,
+// and those in the references' folder beside their images (REFS/cornellNEE.test).
+std::map<std::string, std::string> sceneFilesByKey(const std::vector<std::string>& scenes, const std::string& refs) {
+  std::map<std::string, std::string> files;
+  std::error_code ec;
+  for (fs::directory_iterator it(refs, ec), end; !ec && it != end; it.increment(ec)) {
+    std::string ext = it->path().extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".test" && it->is_regular_file(ec)) files[sceneKey(sceneOfFileName(it->path().string()))] = it->path().string();
+  }
+  for (const std::string& scene : scenes) files[sceneKey(sceneOfFileName(scene))] = scene;
+  return files;
+}
+
 int gradeCommand(const GradeOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::string> folders, scenes;
@@ -397,6 +458,7 @@ int gradeCommand(const GradeOptions& o) {
   inputs.push_back(o.references);
   if (o.thresholdsFile) inputs.push_back(*o.thresholdsFile);
   const fs::path out = checkReportFolder(o.output, inputs);
+  if (o.gradescopePath) checkGradescopeFile(*o.gradescopePath, inputs, out);
 
   const std::vector<SceneReference> refs = findReferences(o.references);
   std::vector<std::string> keys;
@@ -404,8 +466,23 @@ int gradeCommand(const GradeOptions& o) {
   ThresholdTable thresholds;
   thresholds.all = o.thresholds;
   if (o.thresholdsFile) thresholds = readThresholdFile(*o.thresholdsFile, o.thresholds, keys);
+  // A path-traced scene that nothing else judges is judged by its noise: square by square,
+  // bias against its own standard error (compare/bias_test.h), not "any difference fails".
+  // Its images' gamma, known from its file, is what the test decodes.
+  for (const auto& [key, file] : sceneFilesByKey(scenes, o.references)) {
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) continue;
+    const std::optional<SceneGrading> g = sceneGrading(file);
+    if (!g) continue;
+    GradeThresholds t = thresholds.forScene(key);
+    if (!t.any() && g->monteCarlo) {
+      t.maxBiasZ = kDefaultMaxBiasZ;
+      t.monteCarloDefault = true;
+    }
+    t.gamma = g->gamma;
+    thresholds.byScene[key] = t;
+  }
   std::vector<Submission> submissions;
-  if (!folders.empty()) submissions = findSubmissions(folders, refs);
+  if (!folders.empty()) submissions = findSubmissions(folders, refs, o.oneStudent);
 
   // The references, read before anything is rendered: one that cannot be read stops the run.
   std::vector<Image> references;
@@ -465,6 +542,14 @@ int gradeCommand(const GradeOptions& o) {
   throwIfInterrupted();
   swapIntoPlace(folder.path(), out);
   folder.release();
+  if (o.gradescopePath) {
+    std::vector<double> points;
+    for (const std::string& key : keys) points.push_back(thresholds.forScene(key).points);
+    const std::string json = gradescopeResults(report, points);
+    writeFileAtomic(*o.gradescopePath, ".json.tmp", [&](int fd) {
+      writeAll(fd, reinterpret_cast<const std::uint8_t*>(json.data()), json.size(), *o.gradescopePath);
+    });
+  }
 
   return printOutcomes(o, report, status);
 }

@@ -275,7 +275,7 @@ const OptionRow<GradeOptions> kGradeRows[] = {
        if (o.output.empty()) throw UsageError("option -o needs a non-empty folder name");
      },
      Section::Elsewhere},
-    {"--max-pixels-over", "S:L", "as for diff (with no threshold: any difference fails)",
+    {"--max-pixels-over", "S:L", "as for diff (no threshold: any difference fails,\nbut a path-traced scene defaults to --max-bias-z 6)",
      [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade,
      "--max-pixels-over S:L, --max-diff N"},
     {"--max-diff", "N", "", [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); },
@@ -286,8 +286,29 @@ const OptionRow<GradeOptions> kGradeRows[] = {
      [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade},
     {"--max-variance", "V", "fail when the variance of (image - reference) exceeds V",
      [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade},
+    {"--max-bias-z", "Z",
+     "fail when the mean of (image - reference) over a 16x16 square, in\n"
+     "a channel, is more than half a level plus Z of its standard errors\n"
+     "from 0: passes a Monte Carlo image's noise, fails its bias. The\n"
+     "default (6) of a path-traced scene (rendered here, or its SCENE.test\n"
+     "beside the reference) when no other threshold judges it",
+     [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade},
     {"--thresholds", "FILE", "per scene: lines 'SCENE OPTIONS...' replace the ones above",
      [](GradeOptions& o, const V& v) { o.thresholdsFile = v(); }, Section::Grade},
+    {"--gradescope", "FILE",
+     "also write Gradescope's results.json to FILE: a test per scene (and\n"
+     "per student), worth --points P (default 1; per scene in FILE of\n"
+     "--thresholds) when it passes, its output what failed and where",
+     [](GradeOptions& o, const V& v) {
+       o.gradescopePath = v();
+       if (o.gradescopePath->empty()) throw UsageError("option --gradescope needs a non-empty file name");
+     },
+     Section::Grade},
+    {"--points", "P", "", [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); },
+     Section::Elsewhere},
+    {"--one-student", "", "each SUBMISSIONS/ given is one student's, its images looked for\n"
+     "four levels down, whatever its folders are named (Gradescope's)",
+     [](GradeOptions& o, const V&) { o.oneStudent = true; }, Section::Grade},
     {"--diff-scale", "N",
      "as for diff; --backend, --device, --spp, --seed, --threads: for\n"
      "the scenes rendered (--threads also grades on that many)",

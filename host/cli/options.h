@@ -74,6 +74,8 @@ struct GradeOptions : CommonOptions {
   std::vector<std::string> inputs;
   std::string output;
   std::optional<std::string> thresholdsFile;   // --thresholds FILE: per scene
+  std::optional<std::string> gradescopePath;   // --gradescope FILE: Gradescope's results.json
+  bool oneStudent = false;                      // --one-student: each folder given is one student's
   GradeThresholds thresholds;                  // given once on the command line
   int heatmapScale = 16;
 };

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "grade/grade_thresholds.h"
+#include "compare/bias_test.h"
 #include "compare/flip.h"
 #include "compare/image_diff.h"
 #include "image/crop.h"
@@ -19,7 +20,8 @@ const char* outcomeName(GradeOutcome o);   // "pass", "fail", "missing", "unread
 
 // The one figure an overview shows for a scene, named by its thresholds: the pixels over the
 // first --max-pixels-over step, else the largest difference, else the mean FLIP error, else
-// the variance, else |bias|; with no threshold, the pixels that differ at all.
+// the variance, else |bias|, else the largest z of the squares' bias; with no threshold, the
+// pixels that differ at all.
 struct KeyFigure {
   std::string label;   // "pixels over 2/255"
   double value = 0;
@@ -37,6 +39,7 @@ struct Grade {
   long long differing = 0, over1 = 0, over2 = 0;
   GraderStats stats;
   FlipStats flip;   // LDR-FLIP of the two 8-bit images
+  BiasTest bias;    // square by square (compare/bias_test.h); its `over` filled under --max-bias-z
   KeyFigure key;
   std::vector<PixelRect> regions;   // boxes around the failing pixels, largest first
   long long moreRegions = 0;        // boxes left out of `regions`
@@ -53,5 +56,9 @@ Grade gradeImage(const Image& submission, const Image& reference, const GradeThr
 // corners), each group's bounding box; at most `limit`, those with the most pixels first
 // (`more` receives how many were left out).
 std::vector<PixelRect> failingRegions(const ImageDiff& diff, int steps, int cell, std::size_t limit, long long* more);
+
+// The same of the squares of `bias.over` (an image of `width` x `height`): the biased squares,
+// those with the most biased channels first.
+std::vector<PixelRect> biasedRegions(const BiasTest& bias, int width, int height, std::size_t limit, long long* more);
 
 }  // namespace vkrt

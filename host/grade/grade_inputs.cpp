@@ -171,7 +171,7 @@ std::vector<SceneReference> findReferences(const std::string& folder) {
 }
 
 std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
-                                        const std::vector<SceneReference>& references) {
+                                        const std::vector<SceneReference>& references, bool oneStudentEach) {
   std::set<std::string> keys;
   for (const SceneReference& r : references) keys.insert(sceneKey(r.scene));
   std::vector<Submission> found;
@@ -180,6 +180,15 @@ std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
     if (!fs::is_directory(folder, ec))
       throw IoError("the submissions '" + abbreviated(folder) + "' are not a folder (a folder per student, or a "
                     "folder of images)");
+    if (oneStudentEach) {   // the folder is one student's, whatever its sub-folders are called
+      std::vector<std::string> images, others;
+      collectImages(folder, kSubmissionDepth, images, others);
+      Submission s = matched(baseName(folder), folder, images, keys);
+      if (images.empty()) s.notes.push_back("no image in " + abbreviated(folder));
+      noteOthers(s, others);
+      found.push_back(std::move(s));
+      continue;
+    }
     const std::vector<fs::directory_entry> entries = entriesOf(folder);
     std::vector<std::string> own, ownOthers;
     for (const fs::directory_entry& e : entries) {

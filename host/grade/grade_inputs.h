@@ -43,9 +43,11 @@ struct Submission {
 // (every image missing). Noted: images that match no reference, second images for one scene
 // (the first in path order is graded), and files vkrt does not read as images. Names that
 // repeat across folders get the folder's name in front. Throws IoError for a folder that
-// cannot be listed, UsageError when no submission is found.
+// cannot be listed, UsageError when no submission is found. With `oneStudentEach` each folder
+// is one student's submission, its images looked for down to four levels, and one without an
+// image is a submission with every image missing (as Gradescope hands a submission over).
 std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
-                                        const std::vector<SceneReference>& references);
+                                        const std::vector<SceneReference>& references, bool oneStudentEach = false);
 
 // a < b in the order people count: runs of digits compared as numbers ("scene2" < "scene10").
 bool naturalLess(const std::string& a, const std::string& b);

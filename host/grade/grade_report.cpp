@@ -177,6 +177,16 @@ std::string indexPage(const GradeReport& r) {
   return s + foot("");
 }
 
+// The bias test's worst square: "2.31: green, square (32,16), -1.8 levels, standard error 0.77".
+std::string biasZText(const BiasTest& b) {
+  static const char* const kChannels[] = {"red", "green", "blue"};
+  const SquareBias& w = b.worst;
+  return (std::isfinite(w.z) ? format("%.3g", w.z) : std::string("infinite")) + ": " + kChannels[w.channel] +
+         ", square (" + std::to_string(w.square.x0) + "," + std::to_string(w.square.y0) + "), " +
+         format("%+.3g", w.mean) + " levels, standard error " + format("%.3g", w.standardError) +
+         (w.saturated && w.mean < 0 ? " (clamped at 255: darkness excused)" : "");
+}
+
 std::string figureRow(const std::string& name, const std::string& value) {
   return "<tr><th scope=\"row\">" + name + "</th><td class=\"num\">" + value + "</td></tr>\n";
 }
@@ -251,6 +261,8 @@ std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
     s += figureRow("pixels over 2/255", share(g.over2));
     s += figureRow("bias, mean(reference &minus; image)", format("%.4f", g.stats.bias));
     s += figureRow("variance of (image &minus; reference)", format("%.4f", g.stats.variance));
+    s += figureRow("bias z: the largest of the 16x16 squares' (per channel, against its standard error)",
+                   biasZText(g.bias));
     s += figureRow("FLIP error (LDR-FLIP, 67 pixels per degree): mean", format("%.4f", g.flip.mean));
     s += figureRow("FLIP error: median, 95th, 99th percentile, max",
                    format("%.4f", g.flip.median) + ", " + format("%.4f", g.flip.p95) + ", " + format("%.4f", g.flip.p99) +
@@ -296,6 +308,11 @@ std::string summaryJson(const GradeReport& r) {
              ", \"flip\": {\"mean\": " + jsonNumber(g.flip.mean) + ", \"median\": " + jsonNumber(g.flip.median) +
              ", \"p95\": " + jsonNumber(g.flip.p95) + ", \"p99\": " + jsonNumber(g.flip.p99) +
              ", \"max\": " + jsonNumber(g.flip.max) + "}";
+        const SquareBias& w = g.bias.worst;
+        s += ", \"bias_z\": {\"z\": " + jsonNumber(w.z) + ", \"square\": [" + std::to_string(w.square.x0) + ", " +
+             std::to_string(w.square.y0) + ", " + std::to_string(w.square.x1) + ", " + std::to_string(w.square.y1) +
+             "], \"channel\": " + std::to_string(w.channel) + ", \"mean\": " + jsonNumber(w.mean) +
+             ", \"standard_error\": " + jsonNumber(w.standardError) + "}";
       }
       s += ", \"failures\": [";
       for (std::size_t k = 0; k < g.failures.size(); ++k) s += (k ? ", " : "") + jsonQuoted(g.failures[k]);
@@ -319,7 +336,7 @@ std::string csvField(std::string v) {
 
 std::string summaryCsv(const GradeReport& r) {
   std::string s = "submission,scene,status,key_figure,max_channel_diff,rmse,psnr_db,pixels_differing,pixels_over_1,"
-                  "pixels_over_2,bias,variance,flip_mean,flip_median,flip_p95,flip_p99,flip_max,image,failures\n";
+                  "pixels_over_2,bias,variance,flip_mean,flip_median,flip_p95,flip_p99,flip_max,bias_z,image,failures\n";
   for (const ReportSubmission& sub : r.submissions)
     for (std::size_t c = 0; c < sub.entries.size(); ++c) {
       const Grade& g = sub.entries[c].grade;
@@ -332,9 +349,10 @@ std::string summaryCsv(const GradeReport& r) {
              (std::isfinite(g.psnr) ? format("%.6g", g.psnr) : "inf") + "," + std::to_string(g.differing) + "," +
              std::to_string(g.over1) + "," + std::to_string(g.over2) + "," + format("%.6g", g.stats.bias) + "," +
              format("%.6g", g.stats.variance) + "," + format("%.6g", g.flip.mean) + "," + format("%.6g", g.flip.median) +
-             "," + format("%.6g", g.flip.p95) + "," + format("%.6g", g.flip.p99) + "," + format("%.6g", g.flip.max) + ",";
+             "," + format("%.6g", g.flip.p95) + "," + format("%.6g", g.flip.p99) + "," + format("%.6g", g.flip.max) + "," +
+             (std::isfinite(g.bias.worst.z) ? format("%.6g", g.bias.worst.z) : "inf") + ",";
       else
-        s += ",,,,,,,,,,,,,,";
+        s += ",,,,,,,,,,,,,,,";
       s += csvField(sub.entries[c].source) + "," + csvField(failures) + "\n";
     }
   return s;

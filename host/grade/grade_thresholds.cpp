@@ -24,7 +24,8 @@ double nonNegative(const std::string& name, const std::string& v) {
   double f = 0;
   auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
   if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || f < 0)
-    throw UsageError(name + " expects a number of 0 or more (8-bit units), got '" + echoed(v) + "'");
+    throw UsageError(name + " expects a number of 0 or more (" +
+                     (name == "--max-bias-z" ? "standard errors" : name == "--points" ? "points" : "8-bit units") + "), got '" + echoed(v) + "'");
   return f;
 }
 
@@ -45,6 +46,8 @@ std::string GradeThresholds::text() const {
   if (pixels.maxFlip >= 0.0) add("--max-flip " + number(pixels.maxFlip));
   if (maxBias) add("--max-bias " + number(*maxBias));
   if (maxVariance) add("--max-variance " + number(*maxVariance));
+  if (maxBiasZ) add("--max-bias-z " + number(*maxBiasZ));
+  if (monteCarloDefault) s += " (the default of a path-traced scene)";
   return s;
 }
 
@@ -68,6 +71,10 @@ bool applyThresholdOption(const std::string& name, const std::string& value, Gra
     t.maxBias = nonNegative(name, value);
   } else if (name == "--max-variance") {
     t.maxVariance = nonNegative(name, value);
+  } else if (name == "--max-bias-z") {
+    t.maxBiasZ = nonNegative(name, value);
+  } else if (name == "--points") {
+    t.points = nonNegative(name, value);
   } else {
     return false;
   }
@@ -126,7 +133,7 @@ ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds&
       try {
         if (!applyThresholdOption(name, value, t))
           throw fail("unknown threshold '" + echoed(name) +
-                     "' (expected --max-pixels-over, --max-diff, --max-bias or --max-variance)");
+                     "' (expected --max-pixels-over, --max-diff, --max-flip, --max-bias, --max-variance, --max-bias-z or --points)");
       } catch (const UsageError& e) {
         if (std::string(e.what()).rfind(abbreviated(path) + ":", 0) == 0) throw;
         throw fail(e.what());

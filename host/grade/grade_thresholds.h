@@ -17,8 +17,14 @@ struct GradeThresholds {
   CheckThresholds pixels;              // --max-pixels-over, --max-diff, --max-flip
   std::optional<double> maxBias;       // fails when |bias| exceeds it (8-bit units)
   std::optional<double> maxVariance;   // fails when the variance exceeds it (8-bit units squared)
+  // fails when a square's mean difference exceeds this many of its standard errors
+  // (compare/bias_test.h): the test of a Monte Carlo image
+  std::optional<double> maxBiasZ;
+  bool monteCarloDefault = false;   // maxBiasZ is the default of a path-traced scene (text() says so)
+  double gamma = 1.0;               // the images' encoding, which maxBiasZ's test decodes (the scene's `gamma`)
+  double points = 1.0;              // --points: what passing is worth (Gradescope's max_score); no threshold
   // None at all: any difference fails, as in `vkrt diff`.
-  bool any() const { return pixels.any() || maxBias || maxVariance; }
+  bool any() const { return pixels.any() || maxBias || maxVariance || maxBiasZ; }
   // The options that give these thresholds ("--max-pixels-over 2:0.1% --max-bias 1"), or
   // "any difference fails".
   std::string text() const;

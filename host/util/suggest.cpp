@@ -12,6 +12,14 @@ char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + '
 // The distance a word of `length` characters may be from the name it was meant to be.
 std::size_t allowedDistance(std::size_t length) { return std::min<std::size_t>(length <= 4 ? 1 : 2, length - 1); }
 
+// Whether `name` begins with `word` (any case): a word cut short names it.
+bool startsWith(std::string_view name, std::string_view word) {
+  if (name.size() < word.size()) return false;
+  for (std::size_t i = 0; i < word.size(); ++i)
+    if (lower(name[i]) != lower(word[i])) return false;
+  return true;
+}
+
 }  // namespace
 
 std::size_t editDistance(std::string_view a, std::string_view b) {
@@ -43,9 +51,10 @@ std::optional<std::string_view> closestMatch(std::string_view word, std::span<co
   for (std::string_view c : candidates) {
     // The lengths alone bound the distance from below: a long token costs no full comparison.
     const std::size_t lengthGap = c.size() > word.size() ? c.size() - word.size() : word.size() - c.size();
-    if (lengthGap >= bestDistance) continue;
+    if (lengthGap > bestDistance) continue;
     const std::size_t d = editDistance(word, c);
-    if (d < bestDistance) {
+    // Of two names as near, the one the word begins ("--max-bias-" is --max-bias-z cut short).
+    if (d < bestDistance || (d == bestDistance && best && startsWith(c, word) && !startsWith(*best, word))) {
       best = c;
       bestDistance = d;
     }

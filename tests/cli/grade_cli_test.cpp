@@ -102,10 +102,10 @@ TEST(GradeCli, AClassOfFoldersGradedIntoAReport) {
   // The figures for scripts, a row per comparison.
   const std::string csv = readFile(report + "/summary.csv");
   EXPECT_TRUE(contains(csv, "submission,scene,status,key_figure,max_channel_diff,")) << csv;
-  EXPECT_TRUE(contains(csv, "alice,b,pass,0,0,0,inf,0,0,0,0,0,0,0,0,0,0," + k.subs + "/alice/hw/b.png,\n")) << csv;
+  EXPECT_TRUE(contains(csv, "alice,b,pass,0,0,0,inf,0,0,0,0,0,0,0,0,0,0,0," + k.subs + "/alice/hw/b.png,\n")) << csv;
   EXPECT_TRUE(contains(csv, "bob,a,fail,5,10,")) << csv;
-  EXPECT_TRUE(contains(csv, "bob,b,missing,,,,,,,,,,,,,,,,\n")) << csv;
-  EXPECT_TRUE(contains(csv, "bob,c,fail,,,,,,,,,,,,,,," + k.subs + "/bob/c.png,\"the image is 41x30, the reference 40x30\"\n"))
+  EXPECT_TRUE(contains(csv, "bob,b,missing,,,,,,,,,,,,,,,,,\n")) << csv;
+  EXPECT_TRUE(contains(csv, "bob,c,fail,,,,,,,,,,,,,,,," + k.subs + "/bob/c.png,\"the image is 41x30, the reference 40x30\"\n"))
       << csv;
   EXPECT_TRUE(contains(csv, "bob,d,pass,2,10,")) << csv;
   EXPECT_TRUE(contains(csv, "carol,a,unreadable,")) << csv;
@@ -285,4 +285,41 @@ TEST(GradeCourse, TheTenCourseScenesRenderedAndGraded) {
   const std::string csv = readFile(dir + "/report/summary.csv");
   EXPECT_TRUE(contains(csv, "vkrt,scene7,pass,")) << csv;
   std::printf("%s", csv.c_str());
+}
+
+// --gradescope for a class: a test per student and scene, named for both, worth its points
+// when it passes; the score their sum; the file written whole, never over what the run reads.
+TEST(GradeCli, GradescopeResultsForAClass) {
+  Class k = makeClass("grade/gradescope-class");
+  const std::string results = k.dir + "/results.json";
+  writeFile(k.dir + "/t.txt", "a --max-pixels-over 2:3 --points 4\nd --max-pixels-over 2:3 --points 0.5\n");
+  RunResult r = runVkrt("grade " + k.refs + " " + k.subs + " -q -o " + k.dir + "/report --thresholds " + k.dir +
+                        "/t.txt --gradescope " + results);
+  EXPECT_EQ(r.exitCode, 5) << r.output;
+  const std::string json = readFile(results);
+  // alice passes a (4), b (1), c (1), d (0.5); bob d (0.5): 7.
+  EXPECT_TRUE(contains(json, "{\"score\": 7, \"execution_time\": ")) << json;
+  EXPECT_TRUE(contains(json, "{\"name\": \"alice: a\", \"score\": 4, \"max_score\": 4, \"status\": \"passed\"")) << json;
+  EXPECT_TRUE(contains(json, "{\"name\": \"bob: a\", \"score\": 0, \"max_score\": 4, \"status\": \"failed\", \"output\": "
+                             "\"fail (--max-pixels-over 2:3)\\u000a5 pixels")) << json;
+  EXPECT_TRUE(contains(json, "where (pixels, x right and y down from the top left): (0,0)-(16,16)")) << json;
+  EXPECT_TRUE(contains(json, "{\"name\": \"bob: b\", \"score\": 0, \"max_score\": 1, \"status\": \"failed\", \"output\": "
+                             "\"missing: the submission has no image for b")) << json;
+  EXPECT_TRUE(contains(json, "{\"name\": \"carol: a\", \"score\": 0, \"max_score\": 4, \"status\": \"failed\", \"output\": "
+                             "\"unreadable: " + k.subs + "/carol/a.png\\u000acannot read image")) << json;
+  EXPECT_TRUE(contains(json, "{\"name\": \"bob: d\", \"score\": 0.5, \"max_score\": 0.5, \"status\": \"passed\"")) << json;
+  EXPECT_TRUE(contains(json, "bob: " + k.subs + "/bob/e.png: no reference image is named for this scene")) << json;
+
+  // Never over what the run reads or the report it replaces; nothing written then.
+  for (const std::string& refused : {k.refs + "/a.png", k.subs + "/alice/results.json", k.dir + "/t.txt",
+                                     k.dir + "/report/results.json"}) {
+    r = runVkrt("grade " + k.refs + " " + k.subs + " -q -o " + k.dir + "/report --thresholds " + k.dir +
+                "/t.txt --gradescope " + refused);
+    EXPECT_EQ(r.exitCode, 1) << refused << "\n" << r.output;
+    EXPECT_TRUE(contains(r.output, "--gradescope " + refused + ": ")) << r.output;
+    EXPECT_FALSE(fs::exists(k.subs + "/alice/results.json"));
+  }
+  r = runVkrt("grade " + k.refs + " " + k.subs + " -q -o " + k.dir + "/report2 --gradescope " + k.dir + "/no/such/r.json");
+  EXPECT_EQ(r.exitCode, 4) << r.output;
+  EXPECT_FALSE(fs::exists(k.dir + "/report2"));
 }

@@ -104,6 +104,11 @@ TEST(Suggest, ClosestMatchOnlyWhenNearForTheWordsLength) {
   EXPECT_EQ(closestMatch("seod", tie), "seed");
   constexpr std::string_view nearer[] = {"seeds", "seed"};
   EXPECT_EQ(closestMatch("seed", nearer), "seed");
+  // Of two equally near, the one the word begins: a name cut short, wherever it stands.
+  constexpr std::string_view cut[] = {"max-bias", "max-bias-z"}, cutBackwards[] = {"max-bias-z", "max-bias"};
+  EXPECT_EQ(closestMatch("max-bias-", cut), "max-bias-z");
+  EXPECT_EQ(closestMatch("max-bias-", cutBackwards), "max-bias-z");
+  EXPECT_EQ(closestMatch("max-bias", cut), "max-bias");
   // A long token is refused by its length, without a full comparison.
   EXPECT_EQ(closestMatch(std::string(500000, 'q'), kNames), std::nullopt);
   EXPECT_EQ(didYouMean("bakcend", kNames, "--"), "; did you mean '--backend'?");
@@ -187,7 +192,9 @@ TEST(Suggest, EveryLongOptionOfHelpIsSuggested) {
   ASSERT_GT(options.size(), 25u);
   for (const std::string& option : options) {
     const std::string typo = option.substr(0, option.size() - 1);
-    const bool gradeOnly = option == "--max-bias" || option == "--max-variance" || option == "--thresholds";
+    const bool gradeOnly = option == "--max-bias" || option == "--max-variance" || option == "--max-bias-z" ||
+                           option == "--thresholds" || option == "--gradescope" || option == "--points" ||
+                           option == "--one-student";
     std::vector<std::string> args = option == "--allow-gaps" ? std::vector<std::string>{"merge", typo}
                                     : gradeOnly              ? std::vector<std::string>{"grade", typo}
                                                              : std::vector<std::string>{typo, "x.test"};
