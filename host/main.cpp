@@ -3,6 +3,8 @@
 // reportError: host/cli/exit_status.h).
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "cli/merge_images.h"
 #include "cli/options.h"
 #include "cli/render_scenes.h"
+#include "cli/tev_display.h"
 #include "cli/watch.h"
 #include "gpu/loader_drivers.h"
 #include "util/interrupt.h"
@@ -23,6 +26,16 @@ namespace {
 
 int run(vkrt::RenderOptions& o) {
   if (o.listDevices) return vkrt::printDevices();
+  // The viewer (--display-server): an image per render, named for its output file, updated as
+  // it refines; sent on a thread of its own, finished (at most 2 s) when the run ends.
+  std::optional<vkrt::TevDisplay> display;
+  if (o.display) {
+    display.emplace(*o.display, o.quiet);
+    o.request.onImageStart = [&display](const std::string& output, int width, int height) {
+      display->begin(std::filesystem::path(output).filename().string(), width, height);
+    };
+    o.request.onImageRows = [&display](int y0, const vkrt::RadianceImage& rows) { display->update(y0, rows); };
+  }
   if (o.compare) return vkrt::compareBackends(o);
   if (o.watch) return vkrt::watchScene(o);
   if (o.scenes.size() > 1) return vkrt::renderBatch(o);

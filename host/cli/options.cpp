@@ -200,6 +200,11 @@ const OptionRow<R> kRenderRows[] = {
      "render with both backends (nothing written) and print each\n"
      "one's times and the difference between their images",
      [](R& o, const V&) { o.compare = true; }},
+    {"--display-server", "HOST:PORT",
+     "show the render in tev (or HDRView) as it refines, over tev's\n"
+     "protocol (tev listens on localhost:14158): bands and batches as\n"
+     "they finish; a viewer not there costs a warning, never the render",
+     [](R& o, const V& v) { o.display = parseDisplayAddress(v()); }},
     {"--watch", "",
      "render, then render again each time the scene file changes (one\n"
      "process: the device and compiled shaders kept); a path-traced\n"

@@ -11,6 +11,7 @@
 #include "compare/image_check.h"
 #include "grade/grade_thresholds.h"
 #include "util/errors.h"   // UsageError
+#include "cli/tev_display.h"
 #include "render/render.h"
 
 namespace vkrt {
@@ -45,6 +46,7 @@ struct RenderOptions : CommonOptions {
   bool watch = false;     // --watch: render again at each change of the scene file (cli/watch.h)
   std::optional<std::string> checkAgainst;   // --check REF.png: compare the render with REF
   ComparisonOptions comparison;
+  std::optional<DisplayAddress> display;     // --display-server HOST:PORT (cli/tev_display.h)
 };
 
 // `vkrt diff A.png B.png`: compare two images. Its command line is the render command's.

@@ -89,12 +89,15 @@ class Watcher {
       more.seed = seed + static_cast<std::uint32_t>(batch);
       more.onWarnings = nullptr;
       more.onOptionWarning = nullptr;
+      more.onImageStart = nullptr;   // the viewer's image is the round's, refined below
+      more.onImageRows = nullptr;
       RenderReport batchReport;
       ProgressBar quietBar(false);
       RadianceImage next = renderSceneInMemory(more, quietBar, batchReport, true, &session_);
       const SampleRecord added = samplesOf(next);
       record.ranges.insert(record.ranges.end(), added.ranges.begin(), added.ranges.end());
       accumulateMean(mean, std::move(next));
+      if (request.onImageRows) request.onImageRows(0, mean);
       setSampleRecord(mean.text, record);
       writeImageAtomic(mean, report.outputPath, report.gamma);
       if (!o_.quiet)

@@ -67,6 +67,7 @@ RadianceImage renderProgressive(const BatchRenderer& render, const ProgressiveOp
       throw InternalError("a backend returned " + std::to_string(batch.samples) + " samples for a batch of " +
                           std::to_string(count));
     accumulateMean(mean, std::move(batch));
+    if (options.onBatch) options.onBatch(mean);
     r.samples += count;
     ++r.batches;
     if (timed && r.batches == 1) r.firstBatchPastLimit = std::max(now() - start - options.timeLimitSeconds, 0.0);

@@ -39,6 +39,8 @@ struct ProgressiveOptions {
   double targetBatchSeconds = 0.5;
   // Polled between batches (the backends poll it inside theirs): true stops early.
   std::function<bool()> stop;
+  // Called after each batch with the running mean (may be empty).
+  std::function<void(const RadianceImage& mean)> onBatch;
   // Drawn in samples ("N/M samples", or "N samples" under a time limit without spp).
   ProgressBar* progress = nullptr;
   // The clock, for tests (default: steady_clock seconds since an arbitrary start).

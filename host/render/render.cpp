@@ -114,7 +114,8 @@ SamplePlan samplePlan(const RenderRequest& request, const SceneDesc& scene, bool
                          : request.timeLimitSeconds > 0 ? 0
                                                         : static_cast<std::uint64_t>(scene.path.spp);
   plan.progressive.timeLimitSeconds = request.timeLimitSeconds;
-  if (request.timeLimitSeconds <= 0)
+  if (request.onImageRows) plan.progressive.onBatch = [&request](const RadianceImage& mean) { request.onImageRows(0, mean); };
+  if (request.timeLimitSeconds <= 0 && !request.onImageRows)   // a viewer sees batches grow from one sample
     plan.progressive.firstBatchSamples =
         static_cast<std::uint32_t>(std::min<std::uint64_t>(plan.progressive.spp, plan.progressive.maxBatchSamples));
   plan.progressive.progress = &progress;
@@ -408,7 +409,9 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
   RenderSession& vulkan = session ? *session : ownSession;
   PreparedRender prepared;
   prepareRender(request, progress, report, checkOutput, false, vulkan, prepared);
+  if (request.onImageStart) request.onImageStart(report.outputPath, report.width, report.height);
   RadianceImage image = renderPrepared(request, prepared, progress, report, vulkan, nullptr);
+  if (request.onImageRows) request.onImageRows(0, image);
   image.text = imageRecords(request, prepared, report);
   return image;
 }
@@ -421,8 +424,10 @@ RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress
   PreparedRender prepared;
   prepareRender(request, progress, report, true, image == nullptr, vulkan, prepared);
   if (request.dryRun) return report;
+  if (request.onImageStart) request.onImageStart(report.outputPath, report.width, report.height);
   if (!prepared.streamed) {
     RadianceImage rendered = renderPrepared(request, prepared, progress, report, vulkan, nullptr);
+    if (request.onImageRows) request.onImageRows(0, rendered);
     rendered.text = imageRecords(request, prepared, report);
     auto t0 = std::chrono::steady_clock::now();
     writeImageAtomic(rendered, report.outputPath, report.gamma);
@@ -437,6 +442,7 @@ RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress
   writeImageStreamed(report.outputPath, report.gamma, report.width, report.height,
                      imageRecords(request, prepared, report), [&](const RowSink& sink) {
                        RowSink timed = [&](int y0, const RadianceImage& band) {
+                         if (request.onImageRows) request.onImageRows(y0, band);
                          auto t0 = std::chrono::steady_clock::now();
                          RadianceImage copy;
                          sink(y0, finiteBand(band, copy));

@@ -95,6 +95,13 @@ struct RenderRequest {
   // for a Whitted scene), before the render starts. With `strict` such a warning is a
   // UsageError instead.
   std::function<void(const std::string&)> onOptionWarning;
+  // For a viewer of the render as it refines (--display-server): the output path and the
+  // image's size once known, before the render starts; then its linear rows as they are finished: each band of a
+  // streamed (Whitted) render, the running mean after each batch of a sampled one (y0 0: the
+  // batches then grow from one sample, as under --time), and the whole image at the end. Both
+  // must return soon: the render waits for them.
+  std::function<void(const std::string& output, int width, int height)> onImageStart;
+  std::function<void(int y0, const RadianceImage& rows)> onImageRows;
 };
 
 struct RenderReport {
