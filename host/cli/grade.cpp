@@ -418,7 +418,6 @@ int printOutcomes(const GradeOptions& o, const GradeReport& report, int status) 
   return status;
 }
 
-}  // namespace
 
 // What a scene file tells the grading of its images: whether it renders by Monte Carlo
 // (`integrator direct` or `pathtracer`: noise around the reference, not the reference itself)
@@ -450,6 +449,39 @@ std::map<std::string, std::string> sceneFilesByKey(const std::vector<std::string
   return files;
 }
 
+// What the scene files known to the run say of the grading of their scenes (sceneGrading):
+// their images' gamma, which the bias test decodes, and for a path-traced scene that nothing
+// else judges, judgement by its noise: square by square, bias against its own standard error
+// (compare/bias_test.h), not "any difference fails".
+void applySceneFiles(ThresholdTable& thresholds, const std::vector<std::string>& keys,
+                     const std::vector<std::string>& scenes, const std::string& references) {
+  for (const auto& [key, file] : sceneFilesByKey(scenes, references)) {
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) continue;
+    const std::optional<SceneGrading> g = sceneGrading(file);
+    if (!g) continue;
+    GradeThresholds t = thresholds.forScene(key);
+    if (!t.any() && g->monteCarlo) {
+      t.maxBiasZ = kDefaultMaxBiasZ;
+      t.monteCarloDefault = true;
+    }
+    t.gamma = g->gamma;
+    thresholds.byScene[key] = t;
+  }
+}
+
+// Gradescope's results.json of the report, written whole (--gradescope).
+void writeGradescope(const std::string& path, const GradeReport& report, const ThresholdTable& thresholds,
+                     const std::vector<std::string>& keys) {
+  std::vector<double> points;
+  for (const std::string& key : keys) points.push_back(thresholds.forScene(key).points);
+  const std::string json = gradescopeResults(report, points);
+  writeFileAtomic(path, ".json.tmp", [&](int fd) {
+    writeAll(fd, reinterpret_cast<const std::uint8_t*>(json.data()), json.size(), path);
+  });
+}
+
+}  // namespace
+
 int gradeCommand(const GradeOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::string> folders, scenes;
@@ -466,21 +498,7 @@ int gradeCommand(const GradeOptions& o) {
   ThresholdTable thresholds;
   thresholds.all = o.thresholds;
   if (o.thresholdsFile) thresholds = readThresholdFile(*o.thresholdsFile, o.thresholds, keys);
-  // A path-traced scene that nothing else judges is judged by its noise: square by square,
-  // bias against its own standard error (compare/bias_test.h), not "any difference fails".
-  // Its images' gamma, known from its file, is what the test decodes.
-  for (const auto& [key, file] : sceneFilesByKey(scenes, o.references)) {
-    if (std::find(keys.begin(), keys.end(), key) == keys.end()) continue;
-    const std::optional<SceneGrading> g = sceneGrading(file);
-    if (!g) continue;
-    GradeThresholds t = thresholds.forScene(key);
-    if (!t.any() && g->monteCarlo) {
-      t.maxBiasZ = kDefaultMaxBiasZ;
-      t.monteCarloDefault = true;
-    }
-    t.gamma = g->gamma;
-    thresholds.byScene[key] = t;
-  }
+  applySceneFiles(thresholds, keys, scenes, o.references);
   std::vector<Submission> submissions;
   if (!folders.empty()) submissions = findSubmissions(folders, refs, o.oneStudent);
 
@@ -542,14 +560,7 @@ int gradeCommand(const GradeOptions& o) {
   throwIfInterrupted();
   swapIntoPlace(folder.path(), out);
   folder.release();
-  if (o.gradescopePath) {
-    std::vector<double> points;
-    for (const std::string& key : keys) points.push_back(thresholds.forScene(key).points);
-    const std::string json = gradescopeResults(report, points);
-    writeFileAtomic(*o.gradescopePath, ".json.tmp", [&](int fd) {
-      writeAll(fd, reinterpret_cast<const std::uint8_t*>(json.data()), json.size(), *o.gradescopePath);
-    });
-  }
+  if (o.gradescopePath) writeGradescope(*o.gradescopePath, report, thresholds, keys);
 
   return printOutcomes(o, report, status);
 }

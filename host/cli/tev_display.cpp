@@ -181,14 +181,19 @@ void TevDisplay::warn(const std::string& why) {
                address_.host.c_str(), address_.port, why.c_str());
 }
 
-void TevDisplay::run() {
-  // Connect, within kConnectSeconds (a host that never answers must not hold the end of the render).
+namespace {
+
+// A connected socket to `address`, within kConnectSeconds (a host that never answers must not
+// hold the end of the render), or -1 with `why` set.
+int connectTo(const DisplayAddress& address, std::string& why) {
   addrinfo hints{};
   hints.ai_family = AF_UNSPEC;
   hints.ai_socktype = SOCK_STREAM;
   addrinfo* found = nullptr;
-  if (int e = ::getaddrinfo(address_.host.c_str(), std::to_string(address_.port).c_str(), &hints, &found); e != 0)
-    return warn(std::string("cannot find the host: ") + ::gai_strerror(e));
+  if (int e = ::getaddrinfo(address.host.c_str(), std::to_string(address.port).c_str(), &hints, &found); e != 0) {
+    why = std::string("cannot find the host: ") + ::gai_strerror(e);
+    return -1;
+  }
   int fd = -1, error = 0;
   for (addrinfo* a = found; a && fd < 0; a = a->ai_next) {
     fd = ::socket(a->ai_family, a->ai_socktype | SOCK_CLOEXEC | SOCK_NONBLOCK, a->ai_protocol);
@@ -196,16 +201,16 @@ void TevDisplay::run() {
       error = errno;
       continue;
     }
-    if (::connect(fd, a->ai_addr, a->ai_addrlen) != 0 && errno == EINPROGRESS) {
-      pollfd w{fd, POLLOUT, 0};
-      if (::poll(&w, 1, static_cast<int>(kConnectSeconds * 1000)) == 1) {
-        socklen_t n = sizeof error;
-        ::getsockopt(fd, SOL_SOCKET, SO_ERROR, &error, &n);
+    error = 0;
+    if (::connect(fd, a->ai_addr, a->ai_addrlen) != 0) {
+      if (errno != EINPROGRESS) {
+        error = errno;
       } else {
-        error = ETIMEDOUT;
+        pollfd w{fd, POLLOUT, 0};
+        socklen_t n = sizeof error;
+        if (::poll(&w, 1, static_cast<int>(kConnectSeconds * 1000)) != 1) error = ETIMEDOUT;
+        else ::getsockopt(fd, SOL_SOCKET, SO_ERROR, &error, &n);
       }
-    } else if (errno != 0 && errno != EINPROGRESS) {
-      error = errno;
     }
     if (error != 0) {
       ::close(fd);
@@ -213,7 +218,16 @@ void TevDisplay::run() {
     }
   }
   ::freeaddrinfo(found);
-  if (fd < 0) return warn(std::string("cannot connect: ") + std::strerror(error ? error : ECONNREFUSED));
+  if (fd < 0) why = std::string("cannot connect: ") + std::strerror(error ? error : ECONNREFUSED);
+  return fd;
+}
+
+}  // namespace
+
+void TevDisplay::run() {
+  std::string why;
+  const int fd = connectTo(address_, why);
+  if (fd < 0) return warn(why);
   ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);   // sends wait (on this thread only)
   {
     std::lock_guard<std::mutex> lock(mutex_);
