@@ -145,6 +145,36 @@ TEST(Watch, FollowsALinkAFolderMadeAgainAndADeletion) {
   EXPECT_EQ(readFile(log2).find("[6]"), std::string::npos) << readFile(log2);
 }
 
+// The folder holding the scene swapped in by rename (a deployment, a checkout): the watch on
+// the folder follows the old one away, so no event names the scene; only the file's identity
+// (another device and inode) tells vkrt, which renders again, and follows later edits there.
+TEST(Watch, AFolderSwappedInByRenameIsSeenByTheFilesIdentity) {
+  const std::string dir = freshDir("watch/folder-swap");
+  fs::create_directories(dir + "/live");
+  const std::string scene = dir + "/live/s.test", out = dir + "/out.png", log = dir + "/log";
+  writeFile(scene, whittedScene("0.8 0.2 0.2"));
+  Spawned watching = spawnVkrt({"--watch", "--backend", "cpu", "-o", out, scene}, log);
+  ASSERT_TRUE(logShows(log, "[1] wrote")) << readFile(log);
+  fs::create_directories(dir + "/next");
+  writeFile(dir + "/next/s.test", whittedScene("0.2 0.8 0.2"));
+  fs::rename(dir + "/live", dir + "/old");
+  fs::rename(dir + "/next", dir + "/live");
+  ASSERT_TRUE(logShows(log, "[2] wrote")) << readFile(log);
+  auto fresh = [&](const std::string& name) {
+    EXPECT_EQ(runVkrt("--backend cpu -q -o " + dir + "/" + name + " " + scene).exitCode, 0);
+    return readImage(dir + "/" + name).rgb;
+  };
+  EXPECT_EQ(readImage(out).rgb, fresh("fresh2.png"));
+  writeFile(scene, whittedScene("0.2 0.2 0.8"));   // an edit in the new folder: its events are watched now
+  ASSERT_TRUE(logShows(log, "[3] wrote")) << readFile(log);
+  EXPECT_EQ(readImage(out).rgb, fresh("fresh3.png"));
+  writeFile(dir + "/old/s.test", whittedScene("0.5 0.5 0.5"));   // the old folder is no longer the scene's
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  ::kill(watching.pid, SIGINT);
+  EXPECT_EQ(waitVkrtWithin(watching, 30).exitCode, 130);
+  EXPECT_EQ(readFile(log).find("[4]"), std::string::npos) << readFile(log);
+}
+
 // An output named on the command line in a folder that does not exist: no edit of the scene
 // can fix it, so --watch exits 4 at once instead of waiting.
 TEST(Watch, AnOutputThatCannotBeWrittenEndsIt) {
