@@ -24,6 +24,7 @@ int compareBackends(const RenderOptions& o) {
   claimHeatmap(o.comparison, files);
   RenderReport reports[2];
   Image images[2];
+  RadianceImage radiance[2];   // for HDR-FLIP: the two renders before their encoding
   const Backend backends[2] = {Backend::Vulkan, Backend::Cpu};
   for (int i = 0; i < 2; ++i) {
     RenderRequest request = o.request;
@@ -31,11 +32,13 @@ int compareBackends(const RenderOptions& o) {
     request.onWarnings = warningPrinter(o.quiet || i > 0);   // the same scene twice: once
     request.onOptionWarning = optionWarningPrinter(o.quiet || i > 0);
     ProgressBar progress(!o.quiet && !o.comparison.json);
-    images[i] = encodeImage(renderSceneInMemory(request, progress, reports[i], false), reports[i].gamma);
+    radiance[i] = renderSceneInMemory(request, progress, reports[i], false);
+    images[i] = encodeImage(radiance[i], reports[i].gamma);
     if (o.stats && !o.comparison.json && !o.quiet) printStats(request, reports[i]);
     warnNonFinite(o.quiet, reports[i], i == 0 ? "vulkan" : "cpu");
   }
-  ImageComparison c = compareImages(images[0], images[1]);
+  // The 8-bit figures compare the two encoded images; FLIP, the two renders' radiance (HDR-FLIP).
+  ImageComparison c = compareImages(images[0], images[1], &radiance[0], &radiance[1]);
   std::vector<std::string> failures = failedThresholds(c.diff, c.flip, o.comparison.thresholds);
   if (!o.comparison.thresholds.any()) failures.clear();   // --compare reports; it gates only when asked to
   auto total = [](const RenderReport& r) { return r.parseSeconds + r.buildSeconds + r.renderSeconds; };

@@ -146,11 +146,12 @@ TEST(DiffCli, CompareRendersWithBothBackendsAndReportsTheirDifference) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* key : {"{\"scene\":", "\"vulkan\":{\"backend\":\"vulkan (", "\"cpu\":{\"backend\":\"cpu\"",
                           "\"first_dispatch_s\":", "\"difference\":{\"width\":64,\"height\":48,\"rmse\":",
-                          "\"pass\":true"})
+                          "\"pass\":true", "\"flip\":{\"kind\":\"hdr\""})
     EXPECT_NE(r.output.find(key), std::string::npos) << key << "\n" << r.output;
   EXPECT_EQ(readImage(dir + "/heat.png").width, 64);
   RunResult text = runVkrt("--compare -q " + sourcePath("scenes/spheres.test"));
   EXPECT_EQ(text.exitCode, 0) << text.output;
   EXPECT_NE(text.output.find("vulkan vs cpu:"), std::string::npos) << text.output;
   EXPECT_NE(text.output.find("PSNR"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("HDR-FLIP mean"), std::string::npos) << "the renders' radiance compared: " << text.output;
 }
