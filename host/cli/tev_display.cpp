@@ -157,8 +157,9 @@ void TevDisplay::finish(double seconds) {
   {
     std::unique_lock<std::mutex> lock(mutex_);
     wake_.wait_until(lock, deadline, [&] { return images_.empty() || broken_; });
-    if (!images_.empty() && !broken_ && socket_ >= 0) {
-      ::shutdown(socket_, SHUT_RDWR);
+    if (!images_.empty() && !broken_) {
+      cancelled_ = true;   // a thread still connecting gives up once connected
+      if (socket_ >= 0) ::shutdown(socket_, SHUT_RDWR);
       if (!warned_ && !quiet_)
         std::fprintf(stderr, "vkrt: warning: --display-server %s:%d: the viewer did not take the image in %.0f s; "
                              "the render is written all the same\n", address_.host.c_str(), address_.port, seconds);
@@ -232,6 +233,7 @@ void TevDisplay::run() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     socket_ = fd;
+    if (cancelled_) return;   // finish() gave up waiting while this connected
   }
   auto sendAll = [&](const std::vector<std::uint8_t>& packet) {
     std::size_t at = 0;

@@ -69,7 +69,7 @@ class TevDisplay {
     bool whole = false;               // the last: every tile, once
   };
   std::vector<Pending> images_;
-  bool finishing_ = false, broken_ = false, warned_ = false;
+  bool finishing_ = false, broken_ = false, warned_ = false, cancelled_ = false;
   int socket_ = -1;
   std::thread thread_;
 };
