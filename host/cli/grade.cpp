@@ -480,6 +480,36 @@ void writeGradescope(const std::string& path, const GradeReport& report, const T
   });
 }
 
+// The comparisons to make, a job each, and the report's rows they fill (a submission's entry
+// per scene: missing, a render that failed (unreadable, with its error), or a job's).
+// `rendered` (may be null) is the first submission's renders.
+std::vector<Job> listJobs(const std::vector<Submission>& submissions, const std::vector<std::string>& keys,
+                          const Rendered* rendered, GradeReport& report) {
+  std::vector<Job> jobs;
+  for (std::size_t i = 0; i < submissions.size(); ++i) {
+    const Submission& s = submissions[i];
+    ReportSubmission rs{s.name, s.folder, s.notes, std::vector<ReportEntry>(keys.size())};
+    for (std::size_t c = 0; c < keys.size(); ++c) {
+      auto at = s.images.find(keys[c]);
+      if (at == s.images.end()) continue;   // missing
+      rs.entries[c].source = at->second;
+      if (rendered && i == 0) {
+        if (auto err = rendered->errors.find(keys[c]); err != rendered->errors.end()) {
+          rs.entries[c].grade.outcome = GradeOutcome::Unreadable;
+          rs.entries[c].grade.failures.push_back(err->second.first);
+          rs.entries[c].renderStatus = err->second.second;
+          continue;
+        }
+        jobs.push_back({i, c, at->second, &rendered->images.at(keys[c])});
+      } else {
+        jobs.push_back({i, c, at->second, nullptr});
+      }
+    }
+    report.submissions.push_back(std::move(rs));
+  }
+  return jobs;
+}
+
 }  // namespace
 
 int gradeCommand(const GradeOptions& o) {
@@ -523,28 +553,7 @@ int gradeCommand(const GradeOptions& o) {
                              references[c].height});
     writeImageAtomic(references[c], folder.path() + "/" + referenceImagePath(c));
   }
-  std::vector<Job> jobs;
-  for (std::size_t i = 0; i < submissions.size(); ++i) {
-    const Submission& s = submissions[i];
-    ReportSubmission rs{s.name, s.folder, s.notes, std::vector<ReportEntry>(refs.size())};
-    for (std::size_t c = 0; c < refs.size(); ++c) {
-      auto at = s.images.find(keys[c]);
-      if (at == s.images.end()) continue;   // missing
-      rs.entries[c].source = at->second;
-      if (rendered && i == 0) {
-        if (auto err = rendered->errors.find(keys[c]); err != rendered->errors.end()) {
-          rs.entries[c].grade.outcome = GradeOutcome::Unreadable;
-          rs.entries[c].grade.failures.push_back(err->second.first);
-          rs.entries[c].renderStatus = err->second.second;
-          continue;
-        }
-        jobs.push_back({i, c, at->second, &rendered->images.at(keys[c])});
-      } else {
-        jobs.push_back({i, c, at->second, nullptr});
-      }
-    }
-    report.submissions.push_back(std::move(rs));
-  }
+  const std::vector<Job> jobs = listJobs(submissions, keys, rendered ? &*rendered : nullptr, report);
 
   const unsigned threads = o.request.threads > 0 ? static_cast<unsigned>(o.request.threads)
                                                   : std::max(1u, std::thread::hardware_concurrency());

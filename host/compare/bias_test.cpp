@@ -15,7 +15,6 @@ constexpr int kFewestPixels = 8;
 // One square's sums of the differences (levels of linear light) and of their squares, per
 // channel; the sum of the reference's steps; whether the image has a byte of 255.
 struct SquareSums {
-  PixelRect square;
   int n = 0;
   double sum[3] = {0, 0, 0}, squares[3] = {0, 0, 0}, steps[3] = {0, 0, 0};
   bool saturated[3] = {false, false, false};

@@ -411,7 +411,7 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
   prepareRender(request, progress, report, checkOutput, false, vulkan, prepared);
   if (request.onImageStart) request.onImageStart(report.outputPath, report.width, report.height);
   RadianceImage image = renderPrepared(request, prepared, progress, report, vulkan, nullptr);
-  if (request.onImageRows) request.onImageRows(0, image);
+  if (request.onImageRows && !report.pathIntegrator) request.onImageRows(0, image);   // (batches: onBatch had it)
   image.text = imageRecords(request, prepared, report);
   return image;
 }
@@ -427,7 +427,7 @@ RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress
   if (request.onImageStart) request.onImageStart(report.outputPath, report.width, report.height);
   if (!prepared.streamed) {
     RadianceImage rendered = renderPrepared(request, prepared, progress, report, vulkan, nullptr);
-    if (request.onImageRows) request.onImageRows(0, rendered);
+    if (request.onImageRows && !report.pathIntegrator) request.onImageRows(0, rendered);   // (batches: onBatch had it)
     rendered.text = imageRecords(request, prepared, report);
     auto t0 = std::chrono::steady_clock::now();
     writeImageAtomic(rendered, report.outputPath, report.gamma);
