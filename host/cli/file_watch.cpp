@@ -114,9 +114,13 @@ bool FileWatch::waitForChange(int timeoutMs) {
     if (now != identity_) {
       identity_ = std::move(now);
       watchFolders();   // a new folder, or a link that leads elsewhere now
-      changed = true;
-      lastChange = Clock::now();
-      settleMs = kIdentitySettleMs;
+      // A change the events announced (a file renamed over the scene has a new identity too)
+      // is whole already: only one seen by its identity alone must keep it a while.
+      if (!changed) {
+        changed = true;
+        lastChange = Clock::now();
+        settleMs = kIdentitySettleMs;
+      }
       continue;
     }
     if (changed && Clock::now() - lastChange >= std::chrono::milliseconds(settleMs)) {   // settled
