@@ -18,6 +18,7 @@
 #include "cli/options.h"
 #include "cli/render_scenes.h"
 #include "cli/tev_display.h"
+#include "cli/view_scene.h"
 #include "cli/watch.h"
 #include "gpu/loader_drivers.h"
 #include "util/interrupt.h"
@@ -31,12 +32,13 @@ int run(vkrt::RenderOptions& o) {
   std::optional<vkrt::TevDisplay> display;
   if (o.display) {
     display.emplace(*o.display, o.quiet);
-    o.request.onImageStart = [&display](const std::string& output, int width, int height) {
-      display->begin(std::filesystem::path(output).filename().string(), width, height);
+    o.request.onImageStart = [&display](const vkrt::RenderReport& report) {
+      display->begin(std::filesystem::path(report.outputPath).filename().string(), report.width, report.height);
     };
     o.request.onImageRows = [&display](int y0, const vkrt::RadianceImage& rows) { display->update(y0, rows); };
   }
   if (o.compare) return vkrt::compareBackends(o);
+  if (o.view) return vkrt::viewScene(o);
   if (o.watch) return vkrt::watchScene(o);
   if (o.scenes.size() > 1) return vkrt::renderBatch(o);
   return vkrt::renderOne(o);

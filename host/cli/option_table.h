@@ -27,6 +27,7 @@ enum class HelpSection {
   Options,      // "options:"
   Comparison,   // "comparison options (diff, --check and --compare):"
   Grade,        // under grade's paragraph
+  View,         // under view's paragraph (rows of the render command's table)
   Last,         // -q, -h, --version, after every command's
   Elsewhere,    // not in this command's part: its help is under another command's rows, or in a paragraph
   Hidden,       // for the benchmark and the tests: not in --help, the man page or the suggestions

@@ -210,6 +210,21 @@ const OptionRow<R> kRenderRows[] = {
      "process: the device and compiled shaders kept); a path-traced\n"
      "scene refines with more samples until the next change; Ctrl-C ends",
      [](R& o, const V&) { o.watch = true; }},
+    {"--bind", "ADDRESS",
+     "listen on ADDRESS (default 127.0.0.1: this machine only; a name\n"
+     "or an IPv4 or IPv6 address; 0.0.0.0 opens the page to the network)",
+     [](R& o, const V& v) {
+       o.bind = v();
+       o.serverOptionGiven = true;
+       if (o.bind.empty()) throw UsageError("option --bind needs an address");
+     },
+     Section::View},
+    {"--port", "N", "listen on port N (default: a free one, in the address printed)",
+     [](R& o, const V& v) {
+       o.port = integerValue(v.name, v(), 1, 65535);
+       o.serverOptionGiven = true;
+     },
+     Section::View},
     {"--dry-run", "",
      "parse each scene and check its output as a render would (the\n"
      "same errors and exit status), print where its image would go;\n"
@@ -329,7 +344,7 @@ const OptionRow<GradeOptions> kGradeRows[] = {
 };
 
 // The subcommands, for "did you mean" after a typo.
-constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert", "grade"};
+constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert", "grade", "view"};
 
 bool exists(const std::string& path) {
   struct stat st {};
@@ -453,25 +468,60 @@ void refuseModeCombinations(const R& o, const std::vector<std::string>& scenes) 
     throw UsageError("--watch refines a path-traced image until the next change; --time does not go with it");
 }
 
-// vkrt [options] SCENE.test ...
-RenderOptions parseRenderOptions(const std::vector<std::string>& args) {
-  refuseMistypedSubcommand(args);
-  std::vector<std::string> scenes;
-  R o = parseRenderArguments(args, 0, scenes);
-  refuseImagesAsScenes(scenes);
-  refuseCombinations(o, scenes);
+// -o as given: a folder (a trailing '/') or a file.
+void applyOutput(R& o) {
   if (o.output && o.output->back() == '/') {
     o.request.outputDir = *o.output;
   } else if (o.output) {
     o.request.output = *o.output;
     warnOfItsName("output file", *o.output, FormatsOf::All, o.request.strict, o.warnings);
   }
+}
+
+// vkrt [options] SCENE.test ...
+RenderOptions parseRenderOptions(const std::vector<std::string>& args) {
+  refuseMistypedSubcommand(args);
+  std::vector<std::string> scenes;
+  R o = parseRenderArguments(args, 0, scenes);
+  refuseImagesAsScenes(scenes);
+  if (o.serverOptionGiven) throw UsageError("--bind and --port go with vkrt view (vkrt view [options] SCENE.test)");
+  refuseCombinations(o, scenes);
+  applyOutput(o);
   refuseModeCombinations(o, scenes);
   if (!o.help && !o.version && !o.listDevices) {
     if (scenes.empty()) throw UsageError("no scene file given");
     o.request.scenePath = scenes.front();
     o.scenes = scenes;
   }
+  return std::move(static_cast<RenderOptions&>(o));
+}
+
+// vkrt view [options] SCENE.test: --watch, shown in the browser; --check REF adds the plot.
+RenderOptions parseViewOptions(const std::vector<std::string>& args) {
+  std::vector<std::string> scenes;
+  R o = parseRenderArguments(args, 1, scenes);
+  if (o.help || o.version) return std::move(static_cast<RenderOptions&>(o));
+  if (scenes.size() != 1)
+    throw UsageError("view takes one scene: vkrt view [options] SCENE.test" +
+                     (scenes.empty() ? std::string() : " (got " + std::to_string(scenes.size()) + ")"));
+  refuseImagesAsScenes(scenes);
+  const char* refused = o.compare                               ? "--compare"
+                        : o.watch                               ? "--watch (view watches the scene already)"
+                        : o.listDevices                         ? "--list-devices"
+                        : o.request.dryRun                      ? "--dry-run"
+                        : o.request.timeLimitSeconds > 0        ? "--time"
+                        : o.comparison.json                     ? "--json"
+                        : o.comparison.heatmapPath              ? "--diff"
+                        : o.comparison.flipMapPath              ? "--flip-map"
+                        : o.comparison.thresholds.any()         ? "a threshold (--max-...)"
+                                                                : nullptr;
+  if (refused)
+    throw UsageError(std::string("view renders at each change of the scene and shows it; ") + refused +
+                     " does not go with it");
+  applyOutput(o);
+  o.view = o.watch = true;
+  o.request.scenePath = scenes.front();
+  o.scenes = scenes;
   return std::move(static_cast<RenderOptions&>(o));
 }
 
@@ -552,6 +602,7 @@ CommandOptions parseOptions(const std::vector<std::string>& args) {
   if (first == "merge") return parseMergeOptions(args);
   if (first == "convert") return parseConvertOptions(args);
   if (first == "grade") return parseGradeOptions(args);
+  if (first == "view") return parseViewOptions(args);
   return parseRenderOptions(args);
 }
 

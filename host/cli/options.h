@@ -36,7 +36,7 @@ struct ComparisonOptions {
 };
 
 // `vkrt [options] SCENE.test ...`: render (one scene, a batch, --compare, --watch, --check),
-// or --list-devices.
+// or --list-devices; `vkrt view [options] SCENE.test` (the same options, and --bind, --port).
 struct RenderOptions : CommonOptions {
   RenderRequest request;             // scenePath: the first scene
   std::vector<std::string> scenes;   // every scene given, in order (more than one: a batch)
@@ -47,6 +47,12 @@ struct RenderOptions : CommonOptions {
   std::optional<std::string> checkAgainst;   // --check REF.png: compare the render with REF
   ComparisonOptions comparison;
   std::optional<DisplayAddress> display;     // --display-server HOST:PORT (cli/tev_display.h)
+  // vkrt view: --watch shown on a page in the browser (cli/view_scene.h), served on
+  // bind:port (port 0: a free one). --bind and --port go only with view.
+  bool view = false;
+  std::string bind = "127.0.0.1";
+  int port = 0;
+  bool serverOptionGiven = false;
 };
 
 // `vkrt diff A.png B.png`: compare two images. Its command line is the render command's.

@@ -122,6 +122,7 @@ std::string usageHeader() {
          "       vkrt merge -o OUT" + floatExt + "|OUT" + ext + " BATCH" + floatExt + " [BATCH" + floatExt + " ...]\n"
          "       vkrt convert IN OUT   (any of " + imageExtensionsText() + " to any; JPEG in)\n"
          "       vkrt grade [grade options] REFS/ SUBMISSIONS/|SCENE.test ... -o REPORT/\n"
+         "       vkrt view [options] [--bind ADDRESS] [--port N] SCENE.test\n"
          "\n"
          "Renders CSE167 (and CSE168) scene files to " + imageFormatNamesText() + " images;\n"
          "compares and converts images.\n"
@@ -163,6 +164,17 @@ std::string gradeText() {
          "\n";
 }
 
+// view's paragraph and options.
+std::string viewText() {
+  return "view: --watch in a web browser. Prints the page's address (with its token) as the first\n"
+         "line on stdout; the page shows the image as it refines (bands, batches), rendered again\n"
+         "at each save of the scene, with its warnings and errors at their lines, the samples and\n"
+         "time, and with --check REF the error against time. The image is written as --watch\n"
+         "writes it. Without the token: 403. From another machine: ssh -L N:localhost:N HOST,\n"
+         "then open the address printed. Ctrl-C ends.\n" +
+         helpRows(renderOptionRows(), HelpSection::View) + "\n";
+}
+
 std::string exitStatusText() {
   return "exit status:\n"
          "  0    ok (warnings, if any, on stderr)\n"
@@ -185,7 +197,7 @@ std::string exitStatusText() {
 std::string makeUsageText() {
   return usageHeader() + "options:\n" + helpRows(renderOptionRows(), HelpSection::Options) +
          "\ncomparison options (diff, --check and --compare):\n" +
-         helpRows(renderOptionRows(), HelpSection::Comparison) + "\n" + mergeText() + gradeText() +
+         helpRows(renderOptionRows(), HelpSection::Comparison) + "\n" + mergeText() + gradeText() + viewText() +
          helpRows(renderOptionRows(), HelpSection::Last) + "\n" + exitStatusText();
 }
 

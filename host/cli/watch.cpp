@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 
 #include "cli/exit_status.h"
@@ -26,9 +27,26 @@ SampleRecord samplesOf(const RadianceImage& image) {
   throw InternalError("a path-traced image without its samples record");
 }
 
+// What reportError prints for `error`, as text; `status` its exit status.
+std::string errorText(std::exception_ptr error, const ErrorContext& context, int& status) {
+  char* buffer = nullptr;
+  std::size_t size = 0;
+  std::FILE* memory = ::open_memstream(&buffer, &size);
+  if (!memory) {
+    status = reportError(error, context, stderr);
+    return "(the error is on vkrt's stderr)\n";
+  }
+  status = reportError(error, context, memory);
+  std::fclose(memory);
+  std::string text(buffer, size);
+  std::free(buffer);
+  return text;
+}
+
 class Watcher {
  public:
-  explicit Watcher(RenderOptions& options) : o_(options), watch_(options.request.scenePath) {}
+  Watcher(RenderOptions& options, WatchListener* listener)
+      : o_(options), listener_(listener), watch_(options.request.scenePath) {}
 
   int run() {
     // An output named on the command line that cannot be written (a folder that does not
@@ -37,16 +55,21 @@ class Watcher {
     if (o_.request.outputDir) checkOutputWritable(defaultOutputIn(*o_.request.outputDir, o_.request.scenePath));
     for (int round = 1;; ++round) {
       bool changed = false;
+      if (listener_) listener_->roundStarted(round);
       try {
         changed = renderAndRefine(round);
       } catch (const Interrupted&) {
         throw;
       } catch (...) {
-        const int status = reportError(std::current_exception(), {o_.request.scenePath, o_.quiet}, stderr);
+        int status = 0;
+        std::string message = errorText(std::current_exception(), {o_.request.scenePath, o_.quiet}, status);
+        std::fputs(message.c_str(), stderr);
         // Nothing rendered yet and nothing the scene can fix (no device, no memory): no use waiting.
         if (round == 1 && status != kExitScene && status != kExitIo && status != kExitUsage) return status;
-        std::fprintf(stderr, "vkrt: watch: %s, nothing written; waiting for the next change of %s\n",
-                     exitStatusName(status).c_str(), o_.request.scenePath.c_str());
+        const std::string waiting = "vkrt: watch: " + exitStatusName(status) +
+                                    ", nothing written; waiting for the next change of " + o_.request.scenePath + "\n";
+        std::fputs(waiting.c_str(), stderr);
+        if (listener_) listener_->failed(round, message + waiting);
       }
       if (!changed) watch_.waitForChange(-1);
     }
@@ -59,11 +82,16 @@ class Watcher {
     const auto t0 = std::chrono::steady_clock::now();
     RenderRequest request = o_.request;
     std::size_t warnings = 0;
-    request.onWarnings = [&warnings, print = warningPrinter(o_.quiet)](const std::vector<Diagnostic>& w) {
+    request.onWarnings = [this, &warnings, print = warningPrinter(o_.quiet)](const std::vector<Diagnostic>& w) {
       warnings = w.size();
       if (print) print(w);
+      if (listener_)
+        for (const Diagnostic& d : w) listener_->warned(d.format());
     };
-    request.onOptionWarning = optionWarningPrinter(o_.quiet || round != 1);
+    request.onOptionWarning = [this, round, print = optionWarningPrinter(o_.quiet || round != 1)](const std::string& w) {
+      if (print) print(w);
+      if (listener_) listener_->warned("vkrt: warning: " + w);
+    };
     // Named anew each round: an editor that saves by renaming gives the scene another inode,
     // and its old one may come back as the image's.
     RunFiles files;
@@ -73,12 +101,15 @@ class Watcher {
     RenderReport report;
     RadianceImage mean = renderSceneInMemory(request, progress, report, true, &session_);
     writeImageAtomic(mean, report.outputPath, report.gamma);
-    if (!o_.quiet)
-      std::fprintf(stderr, "vkrt: watch: [%d] wrote %s (%dx%d%s) in %.3f s%s\n", round, report.outputPath.c_str(),
-                   report.width, report.height,
-                   report.pathIntegrator ? (", " + counted(mean.samples, "sample", "samples") + " per pixel").c_str() : "",
-                   secondsSince(t0),
-                   warnings ? (", " + counted(warnings, "warning", "warnings")).c_str() : "");
+    char line[1024];
+    std::snprintf(line, sizeof line, "vkrt: watch: [%d] wrote %s (%dx%d%s) in %.3f s%s\n", round,
+                  report.outputPath.c_str(), report.width, report.height,
+                  report.pathIntegrator ? (", " + counted(mean.samples, "sample", "samples") + " per pixel").c_str() : "",
+                  secondsSince(t0), warnings ? (", " + counted(warnings, "warning", "warnings")).c_str() : "");
+    if (!o_.quiet) std::fputs(line, stderr);
+    WatchStep step{round, 1, report.pathIntegrator ? kMaxWatchBatches : 1, mean.samples, secondsSince(t0),
+                   report.outputPath, line};
+    if (listener_) listener_->rendered(step);
     if (!report.pathIntegrator) return false;
     SampleRecord record = samplesOf(mean);
     const std::uint32_t seed = o_.request.seed.value_or(0);
@@ -100,24 +131,27 @@ class Watcher {
       if (request.onImageRows) request.onImageRows(0, mean);
       setSampleRecord(mean.text, record);
       writeImageAtomic(mean, report.outputPath, report.gamma);
-      if (!o_.quiet)
-        std::fprintf(stderr, "vkrt: watch: [%d] refined %s to %s per pixel (%d of %d batches) in %.3f s\n", round,
-                     report.outputPath.c_str(), counted(mean.samples, "sample", "samples").c_str(), batch + 1,
-                     kMaxWatchBatches, secondsSince(tb));
+      std::snprintf(line, sizeof line, "vkrt: watch: [%d] refined %s to %s per pixel (%d of %d batches) in %.3f s\n",
+                    round, report.outputPath.c_str(), counted(mean.samples, "sample", "samples").c_str(), batch + 1,
+                    kMaxWatchBatches, secondsSince(tb));
+      if (!o_.quiet) std::fputs(line, stderr);
+      step.batch = batch + 1, step.samples = mean.samples, step.seconds = secondsSince(t0), step.line = line;
+      if (listener_) listener_->rendered(step);
     }
     return false;
   }
 
   RenderOptions& o_;
+  WatchListener* listener_;
   RenderSession session_;
   FileWatch watch_;
 };
 
 }  // namespace
 
-int watchScene(RenderOptions& options) {
+int watchScene(RenderOptions& options, WatchListener* listener) {
   try {
-    return Watcher(options).run();
+    return Watcher(options, listener).run();
   } catch (const Interrupted& stop) {
     if (!options.quiet) std::fprintf(stderr, "vkrt: watch: stopped\n");
     return kExitSignalBase + stop.signal();

@@ -8,15 +8,40 @@
 // signal (Ctrl-C: status 130).
 #pragma once
 
+#include <cstdint>
+#include <string>
+
 #include "cli/options.h"
 
 namespace vkrt {
 
 inline constexpr int kMaxWatchBatches = 64;
 
+// What a watch tells a viewer besides the image (which goes through the request's
+// onImageStart and onImageRows): `vkrt view`'s page (cli/web_view.h). Called on the watch's
+// thread; each must return soon.
+struct WatchStep {
+  int round = 0;                  // 1, 2, ...: a render after each change
+  int batch = 1, batches = 1;     // a path-traced image's batches so far, of at most kMaxWatchBatches
+  std::uint64_t samples = 1;      // per pixel, in the image so far
+  double seconds = 0;             // since the round started (the change was seen)
+  std::string output;             // the file written
+  std::string line;               // what the watch printed about it
+};
+class WatchListener {
+ public:
+  virtual ~WatchListener() = default;
+  virtual void roundStarted(int round) = 0;
+  virtual void warned(const std::string& line) = 0;   // a warning, as printed (file:line: warning: ...)
+  virtual void rendered(const WatchStep& step) = 0;   // an image written (the first of a round, or refined)
+  // A round that wrote nothing: its error as printed (with the scene's errors at their lines),
+  // and the line that says the watch waits.
+  virtual void failed(int round, const std::string& message) = 0;
+};
+
 // Returns the exit status of the signal that ended it. Throws UsageError, IoError (the scene's
 // folder cannot be watched), and what the first render throws before anything was shown
-// (a device that cannot be made is no reason to wait).
-int watchScene(RenderOptions& options);
+// (a device that cannot be made is no reason to wait). `listener`, when given, is told each step.
+int watchScene(RenderOptions& options, WatchListener* listener = nullptr);
 
 }  // namespace vkrt

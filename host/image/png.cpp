@@ -13,6 +13,8 @@
 #include <memory>
 #include <vector>
 
+#include <sys/mman.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include "image/atomic_file.h"
@@ -179,6 +181,28 @@ void writePngAtomic(const RadianceImage& image, double gamma, const std::string&
     }
     png.finish();
   });
+}
+
+std::string pngBytes(const RadianceImage& image, double gamma) {
+  const int fd = ::memfd_create("vkrt-png", MFD_CLOEXEC);
+  if (fd < 0) throw IoError(std::string("cannot encode a PNG in memory: ") + std::strerror(errno));
+  std::unique_ptr<int, void (*)(int*)> closer(new int(fd), [](int* f) {
+    ::close(*f);
+    delete f;
+  });
+  const std::string name = "(a PNG in memory)";
+  PngRowEncoder png(fd, image.width, image.height, {}, name);
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(image.width) * 3);
+  for (int y = 0; y < image.height; ++y) {
+    encodeRow(image.pixel(0, y), bytes.size(), gamma, bytes.data());
+    png.row(bytes.data());
+  }
+  png.finish();
+  const off_t size = ::lseek(fd, 0, SEEK_END);
+  std::string out(static_cast<std::size_t>(size < 0 ? 0 : size), '\0');
+  if (size < 0 || ::pread(fd, out.data(), out.size(), 0) != size)
+    throw IoError(std::string("cannot read back a PNG encoded in memory: ") + std::strerror(errno));
+  return out;
 }
 
 void PngRowEncoder::byteRows(int, const Image& band) {

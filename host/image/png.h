@@ -50,6 +50,10 @@ void writePngAtomic(const Image& image, const std::string& path);
 // 8-bit copy of the image is made.
 void writePngAtomic(const RadianceImage& image, double gamma, const std::string& path);
 
+// The PNG file of a render (each row encoded with `gamma`), in memory: for `vkrt view`'s
+// page. Throws IoError, OutOfMemory, Interrupted.
+std::string pngBytes(const RadianceImage& image, double gamma);
+
 // The table's functions (image/image_file.h, ImageFormat): a PngRowEncoder; whether the file
 // starts with the PNG signature; its tEXt chunks, read without decoding the image. readPngText
 // throws IoError for a file that cannot be read or ends before its IEND chunk.

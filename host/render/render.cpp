@@ -409,9 +409,24 @@ RadianceImage renderSceneInMemory(const RenderRequest& request, ProgressBar& pro
   RenderSession& vulkan = session ? *session : ownSession;
   PreparedRender prepared;
   prepareRender(request, progress, report, checkOutput, false, vulkan, prepared);
-  if (request.onImageStart) request.onImageStart(report.outputPath, report.width, report.height);
-  RadianceImage image = renderPrepared(request, prepared, progress, report, vulkan, nullptr);
-  if (request.onImageRows && !report.pathIntegrator) request.onImageRows(0, image);   // (batches: onBatch had it)
+  if (request.onImageStart) request.onImageStart(report);
+  // A viewer of a Whitted render (--watch, vkrt view) sees its bands as they finish: the render
+  // streams them through here into the image held. (Batches: onBatch has each mean.)
+  RadianceImage held;
+  RowSink bands;
+  if (request.onImageRows && !report.pathIntegrator) {
+    held = RadianceImage(report.width, report.height);
+    bands = [&held, &request](int y0, const RadianceImage& band) {
+      std::copy(band.rgb.begin(), band.rgb.end(), held.rgb.begin() + static_cast<std::ptrdiff_t>(y0) * held.width * 3);
+      request.onImageRows(y0, band);
+    };
+  }
+  RadianceImage image = renderPrepared(request, prepared, progress, report, vulkan, bands ? &bands : nullptr);
+  if (bands) {
+    keepFinite(held);
+    image = std::move(held);
+    request.onImageRows(0, image);   // whole, at the end
+  }
   image.text = imageRecords(request, prepared, report);
   return image;
 }
@@ -424,7 +439,7 @@ RenderReport renderSceneFile(const RenderRequest& request, ProgressBar& progress
   PreparedRender prepared;
   prepareRender(request, progress, report, true, image == nullptr, vulkan, prepared);
   if (request.dryRun) return report;
-  if (request.onImageStart) request.onImageStart(report.outputPath, report.width, report.height);
+  if (request.onImageStart) request.onImageStart(report);
   if (!prepared.streamed) {
     RadianceImage rendered = renderPrepared(request, prepared, progress, report, vulkan, nullptr);
     if (request.onImageRows && !report.pathIntegrator) request.onImageRows(0, rendered);   // (batches: onBatch had it)

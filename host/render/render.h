@@ -31,6 +31,8 @@ enum class Backend { Vulkan, Cpu };
 // The path tracer's estimator (RenderRequest::estimator).
 enum class Estimator { Scene, Best };
 
+struct RenderReport;
+
 struct RenderRequest {
   std::string scenePath;
   std::optional<std::string> output;   // overrides the scene's `output`
@@ -95,12 +97,13 @@ struct RenderRequest {
   // for a Whitted scene), before the render starts. With `strict` such a warning is a
   // UsageError instead.
   std::function<void(const std::string&)> onOptionWarning;
-  // For a viewer of the render as it refines (--display-server): the output path and the
-  // image's size once known, before the render starts; then its linear rows as they are finished: each band of a
-  // streamed (Whitted) render, the running mean after each batch of a sampled one (y0 0: the
-  // batches then grow from one sample, as under --time), and the whole image at the end. Both
-  // must return soon: the render waits for them.
-  std::function<void(const std::string& output, int width, int height)> onImageStart;
+  // For a viewer of the render as it refines (--display-server, vkrt view): the report once the
+  // scene's facts are in (its output path, size, gamma, integrator), before the render starts;
+  // then the image's linear rows as they are finished: each band of a Whitted render (also one
+  // held in memory), the running mean after each batch of a sampled one (y0 0: the batches
+  // then grow from one sample, as under --time), and the whole image at the end. Both must
+  // return soon: the render waits for them.
+  std::function<void(const RenderReport& report)> onImageStart;
   std::function<void(int y0, const RadianceImage& rows)> onImageRows;
 };
 
