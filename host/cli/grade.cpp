@@ -245,10 +245,17 @@ std::string printable(const std::string& name) {
 }
 
 // One comparison to make: a submission's image of a scene (a file, or a render held here).
+// A reference: its 8-bit image, and its linear one when it is a float file (HDR-FLIP).
+struct GradeReference {
+  Image bytes;
+  std::optional<RadianceImage> linear;
+};
+
 struct Job {
   std::size_t submission, scene;
   std::string path;                 // the file to read
   const Image* rendered = nullptr;  // or the image rendered in this run
+  const RadianceImage* renderedLinear = nullptr;   // and its linear image (HDR-FLIP against a float reference)
 };
 
 // The rendered submission: each scene file rendered (sharing the device), matched to the
@@ -257,6 +264,7 @@ struct Job {
 struct Rendered {
   Submission submission;
   std::map<std::string, Image> images;                       // sceneKey -> image
+  std::map<std::string, RadianceImage> linear;               // sceneKey -> its linear image
   std::map<std::string, std::pair<std::string, int>> errors;   // sceneKey -> what went wrong, its status
 };
 
@@ -289,6 +297,7 @@ Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& sce
       RenderReport report;
       RadianceImage image = renderSceneInMemory(request, progress, report, false, &session);
       r.images[key] = encodeImage(image, report.gamma);
+      r.linear[key] = std::move(image);
       if (!o.quiet)
         std::fprintf(stderr, "vkrt: rendered %s (%dx%d) in %.2f s\n", scene.c_str(), report.width, report.height,
                      report.parseSeconds + report.buildSeconds + report.renderSeconds);
@@ -316,23 +325,27 @@ Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& sce
 }
 
 // Compares one image and writes its images into the report folder.
-void gradeOne(const Job& job, const Image& reference, const GradeThresholds& t, int heatmapScale,
+void gradeOne(const Job& job, const GradeReference& reference, const GradeThresholds& t, int heatmapScale,
               const std::string& folder, ReportEntry& entry) {
-  Image loaded;
+  AnyImage loaded;
   const Image* image = job.rendered;
+  const RadianceImage* linear = job.renderedLinear;
   if (!image) {
     try {
-      loaded = readImageAsBytes(job.path);
+      loaded = readAnyImage(job.path);
     } catch (const IoError& e) {
       entry.grade.outcome = GradeOutcome::Unreadable;
       entry.grade.failures.push_back(e.what());
       return;
     }
-    image = &loaded;
+    if (loaded.radiance) loaded.bytes = asBytes(*loaded.radiance);
+    image = &loaded.bytes;
+    linear = loaded.radiance ? &*loaded.radiance : nullptr;
   }
   ImageDiff diff;
   FlipMap flipMap;
-  entry.grade = gradeImage(*image, reference, t, &diff, &flipMap);
+  entry.grade = gradeImage(*image, reference.bytes, t, &diff, &flipMap, linear,
+                           reference.linear ? &*reference.linear : nullptr);
   auto write = [&](const Image& img, ReportImage which) {
     writeImageAtomic(img, folder + "/" + entryImagePath(job.submission, job.scene, which));
   };
@@ -500,7 +513,7 @@ std::vector<Job> listJobs(const std::vector<Submission>& submissions, const std:
           rs.entries[c].renderStatus = err->second.second;
           continue;
         }
-        jobs.push_back({i, c, at->second, &rendered->images.at(keys[c])});
+        jobs.push_back({i, c, at->second, &rendered->images.at(keys[c]), &rendered->linear.at(keys[c])});
       } else {
         jobs.push_back({i, c, at->second, nullptr});
       }
@@ -533,8 +546,12 @@ int gradeCommand(const GradeOptions& o) {
   if (!folders.empty()) submissions = findSubmissions(folders, refs, o.oneStudent);
 
   // The references, read before anything is rendered: one that cannot be read stops the run.
-  std::vector<Image> references;
-  for (const SceneReference& r : refs) references.push_back(readImageAsBytes(r.path));
+  std::vector<GradeReference> references;
+  for (const SceneReference& r : refs) {
+    AnyImage image = readAnyImage(r.path);
+    references.push_back(image.radiance ? GradeReference{asBytes(*image.radiance), std::move(image.radiance)}
+                                        : GradeReference{std::move(image.bytes), std::nullopt});
+  }
 
   int status = kExitOk;
   std::optional<Rendered> rendered;
@@ -549,9 +566,9 @@ int gradeCommand(const GradeOptions& o) {
   report.references = o.references;
   for (std::size_t c = 0; c < refs.size(); ++c) {
     const GradeThresholds& t = thresholds.forScene(keys[c]);
-    report.scenes.push_back({refs[c].scene, refs[c].path, t.text(), keyFigureLabel(t), references[c].width,
-                             references[c].height});
-    writeImageAtomic(references[c], folder.path() + "/" + referenceImagePath(c));
+    report.scenes.push_back({refs[c].scene, refs[c].path, t.text(), keyFigureLabel(t), references[c].bytes.width,
+                             references[c].bytes.height});
+    writeImageAtomic(references[c].bytes, folder.path() + "/" + referenceImagePath(c));
   }
   const std::vector<Job> jobs = listJobs(submissions, keys, rendered ? &*rendered : nullptr, report);
 

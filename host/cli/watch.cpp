@@ -88,7 +88,7 @@ class Watcher {
       if (listener_)
         for (const Diagnostic& d : w) listener_->warned(d.format());
     };
-    request.onOptionWarning = [this, round, print = optionWarningPrinter(o_.quiet || round != 1)](const std::string& w) {
+    request.onOptionWarning = [this, print = optionWarningPrinter(o_.quiet || round != 1)](const std::string& w) {
       if (print) print(w);
       if (listener_) listener_->warned("vkrt: warning: " + w);
     };

@@ -94,7 +94,7 @@ std::string keyFigureLabel(const GradeThresholds& t) {
 }
 
 Grade gradeImage(const Image& submission, const Image& reference, const GradeThresholds& t, ImageDiff* diff,
-                 FlipMap* flipMap) {
+                 FlipMap* flipMap, const RadianceImage* submissionLinear, const RadianceImage* referenceLinear) {
   Grade g;
   g.width = submission.width, g.height = submission.height;
   g.key.label = keyFigureLabel(t);
@@ -110,8 +110,14 @@ Grade gradeImage(const Image& submission, const Image& reference, const GradeThr
   g.maxDiff = d.maxChannelDiff, g.rmse = d.rmse, g.psnr = d.psnr();
   g.differing = static_cast<long long>(d.differing.size()), g.over1 = d.countOver(1), g.over2 = d.countOver(2);
   g.stats = graderStats(submission, reference);
-  FlipMap map = ldrFlip(submission, reference);
+  const bool hdr = submissionLinear && referenceLinear && submissionLinear->width == reference.width &&
+                   submissionLinear->height == reference.height && referenceLinear->width == reference.width &&
+                   referenceLinear->height == reference.height;
+  FlipExposures exposures;
+  FlipMap map = hdr ? hdrFlip(*submissionLinear, *referenceLinear, &exposures) : ldrFlip(submission, reference);
   g.flip = flipStats(map);
+  g.flip.hdr = hdr;
+  g.flip.exposures = exposures;
   g.bias = biasTest(submission, reference, t.gamma, t.maxBiasZ.value_or(HUGE_VAL));
   g.key = keyFigure(t, d, g.stats, g.flip, g.bias);
   if (t.pixels.any() || !t.any()) g.failures = failedThresholds(d, g.flip, t.pixels);

@@ -38,7 +38,7 @@ struct Grade {
   double rmse = 0, psnr = 0;
   long long differing = 0, over1 = 0, over2 = 0;
   GraderStats stats;
-  FlipStats flip;   // LDR-FLIP of the two 8-bit images
+  FlipStats flip;   // LDR-FLIP of the two 8-bit images; HDR-FLIP of their linear images when both have one
   BiasTest bias;    // square by square (compare/bias_test.h); its `over` filled under --max-bias-z
   KeyFigure key;
   std::vector<PixelRect> regions;   // boxes around the failing pixels, largest first
@@ -47,9 +47,12 @@ struct Grade {
 
 // The grade of `submission` against `reference` under `t`; `diff` and `flipMap` (each may be
 // null) receive the comparison and FLIP's error map (for the report's images) when the sizes
-// agree. A size that differs fails.
+// agree. A size that differs fails. With both linear images (a float submission, or one
+// rendered in the run, against a float reference), FLIP is HDR-FLIP of those; the rest of
+// the grade is of the 8-bit images whatever they came from.
 Grade gradeImage(const Image& submission, const Image& reference, const GradeThresholds& t, ImageDiff* diff,
-                 FlipMap* flipMap = nullptr);
+                 FlipMap* flipMap = nullptr, const RadianceImage* submissionLinear = nullptr,
+                 const RadianceImage* referenceLinear = nullptr);
 
 // The boxes around the pixels of `diff` that differ by more than `steps`: the image cut into
 // `cell` x `cell` squares, the squares holding such pixels joined where they touch (sides or

@@ -18,6 +18,9 @@ namespace vkrt {
 
 namespace {
 
+// Which FLIP a grade's figures are: HDR-FLIP of two float images, else LDR-FLIP.
+std::string flipKind(const FlipStats& f) { return f.hdr ? "HDR-FLIP" : "LDR-FLIP"; }
+
 // The page's look (host/grade/report/grade.css): light or dark as the reader's system is;
 // pass, fail and missing told apart by colour and by word. What the pages do with JavaScript
 // (host/grade/report/grade.js; without it they read the same): the overview's columns sort on
@@ -238,7 +241,7 @@ std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
       s += "<figure><div class=\"frame\"><img src=\"../" + entryImagePath(i, c, ReportImage::Flip) +
            "\" width=\"" + std::to_string(g.width) + "\" height=\"" + std::to_string(g.height) +
            "\" alt=\"the FLIP error map: black for none, through purple and orange to pale yellow for the "
-           "largest\"></div><figcaption>FLIP error (LDR-FLIP, mean " +
+           "largest\"></div><figcaption>FLIP error (" + flipKind(g.flip) + ", mean " +
            format("%.4f", g.flip.mean) + "): black none, purple, orange, pale yellow 1</figcaption></figure>\n";
     s += "</div>\n";
     if (sameSize)
@@ -263,7 +266,12 @@ std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
     s += figureRow("variance of (image &minus; reference)", format("%.4f", g.stats.variance));
     s += figureRow("bias z: the largest of the 16x16 squares' (per channel, against its standard error)",
                    biasZText(g.bias));
-    s += figureRow("FLIP error (LDR-FLIP, 67 pixels per degree): mean", format("%.4f", g.flip.mean));
+    s += figureRow("FLIP error (" + flipKind(g.flip) + ", 67 pixels per degree" +
+                       (g.flip.hdr ? ", exposures " + format("%.3g", g.flip.exposures.start) + " to " +
+                                         format("%.3g", g.flip.exposures.stop) + " stops"
+                                   : std::string()) +
+                       "): mean",
+                   format("%.4f", g.flip.mean));
     s += figureRow("FLIP error: median, 95th, 99th percentile, max",
                    format("%.4f", g.flip.median) + ", " + format("%.4f", g.flip.p95) + ", " + format("%.4f", g.flip.p99) +
                        ", " + format("%.4f", g.flip.max));
@@ -305,7 +313,7 @@ std::string summaryJson(const GradeReport& r) {
              ", \"psnr_db\": " + jsonNumber(g.psnr) + ", \"pixels_differing\": " + std::to_string(g.differing) +
              ", \"pixels_over_1\": " + std::to_string(g.over1) + ", \"pixels_over_2\": " + std::to_string(g.over2) +
              ", \"bias\": " + jsonNumber(g.stats.bias) + ", \"variance\": " + jsonNumber(g.stats.variance) +
-             ", \"flip\": {\"mean\": " + jsonNumber(g.flip.mean) + ", \"median\": " + jsonNumber(g.flip.median) +
+             ", \"flip\": {\"kind\": " + (g.flip.hdr ? "\"hdr\"" : "\"ldr\"") + ", \"mean\": " + jsonNumber(g.flip.mean) + ", \"median\": " + jsonNumber(g.flip.median) +
              ", \"p95\": " + jsonNumber(g.flip.p95) + ", \"p99\": " + jsonNumber(g.flip.p99) +
              ", \"max\": " + jsonNumber(g.flip.max) + "}";
         const SquareBias& w = g.bias.worst;

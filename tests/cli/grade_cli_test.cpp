@@ -138,7 +138,7 @@ TEST(GradeCli, AClassOfFoldersGradedIntoAReport) {
   EXPECT_TRUE(contains(bobA, "src=\"../images/s0003/c001-flip.png\"")) << bobA;
   EXPECT_TRUE(contains(bobA, "FLIP error (LDR-FLIP, mean 0.")) << bobA;
   EXPECT_TRUE(contains(bobA, "FLIP error: median, 95th, 99th percentile, max")) << bobA;
-  EXPECT_TRUE(contains(json, "\"variance\": 0, \"flip\": {\"mean\": 0, \"median\": 0, \"p95\": 0, \"p99\": 0, \"max\": 0}"))
+  EXPECT_TRUE(contains(json, "\"variance\": 0, \"flip\": {\"kind\": \"ldr\", \"mean\": 0, \"median\": 0, \"p95\": 0, \"p99\": 0, \"max\": 0}"))
       << json;
   EXPECT_FALSE(fileExists(report + "/pages/s0003-c002.html"));
   EXPECT_TRUE(fileExists(report + "/pages/s0004-c001.html"));   // carol's unreadable a
@@ -322,4 +322,50 @@ TEST(GradeCli, GradescopeResultsForAClass) {
   r = runVkrt("grade " + k.refs + " " + k.subs + " -q -o " + k.dir + "/report2 --gradescope " + k.dir + "/no/such/r.json");
   EXPECT_EQ(r.exitCode, 4) << r.output;
   EXPECT_FALSE(fs::exists(k.dir + "/report2"));
+}
+
+// Float images against a float reference are compared by HDR-FLIP, with the figure `vkrt diff`
+// gives the same two files (diff's HDR-FLIP is matched with NVIDIA's in tests/compare); an
+// 8-bit image against it, and anything against an 8-bit reference, by LDR-FLIP. A scene
+// rendered in the run keeps its linear image for it too. The rest of the grade is the 8-bit
+// images' either way.
+TEST(GradeCli, FloatImagesAreComparedByHdrFlip) {
+  std::string dir = freshDir("grade/hdr-flip");
+  for (const char* f : {"refs", "ldr-refs", "class/hdr", "class/ldr"}) fs::create_directories(dir + "/" + f);
+  const std::string scene = "size 40 30\ncamera 0 0 5 0 0 0 0 1 0 45\npoint 2 2 4 3 3 3\ndiffuse 0.6 0.3 0.1\nsphere 0 0 0 1\n";
+  writeFile(dir + "/ball.test", scene);
+  writeFile(dir + "/dim.test", "size 40 30\ncamera 0 0 5 0 0 0 0 1 0 45\npoint 2 2 4 2 2 2\ndiffuse 0.6 0.3 0.1\nsphere 0 0 0 1\n");
+  ASSERT_EQ(runVkrt("-q --backend cpu -o " + dir + "/refs/ball.exr " + dir + "/ball.test").exitCode, 0);
+  ASSERT_EQ(runVkrt("-q --backend cpu -o " + dir + "/ldr-refs/ball.png " + dir + "/ball.test").exitCode, 0);
+  ASSERT_EQ(runVkrt("-q --backend cpu -o " + dir + "/class/hdr/ball.pfm " + dir + "/dim.test").exitCode, 0);
+  ASSERT_EQ(runVkrt("-q --backend cpu -o " + dir + "/class/ldr/ball.png " + dir + "/dim.test").exitCode, 0);
+
+  RunResult diff = runVkrt("diff --json " + dir + "/class/hdr/ball.pfm " + dir + "/refs/ball.exr");
+  const std::string diffField = "\"flip\":{\"kind\":\"hdr\",\"mean\":";
+  const std::size_t at = diff.output.find(diffField);
+  ASSERT_NE(at, std::string::npos) << diff.output;
+  const double expected = std::stod(diff.output.substr(at + diffField.size()));
+  ASSERT_GT(expected, 0.01);
+
+  RunResult r = runVkrt("grade -q " + dir + "/refs " + dir + "/class -o " + dir + "/report");
+  EXPECT_EQ(r.exitCode, 5) << r.output;
+  const std::string json = readFile(dir + "/report/summary.json");
+  const std::string field = "\"flip\": {\"kind\": \"hdr\", \"mean\": ";
+  const std::size_t hdr = json.find(field);
+  ASSERT_NE(hdr, std::string::npos) << json;
+  EXPECT_NEAR(std::stod(json.substr(hdr + field.size())), expected, 1e-6) << json;
+  EXPECT_TRUE(contains(json, "\"flip\": {\"kind\": \"ldr\"")) << "the PNG against the EXR: " << json;
+  std::string pages;
+  for (const auto& page : fs::directory_iterator(dir + "/report/pages")) pages += readFile(page.path().string());
+  EXPECT_TRUE(contains(pages, "HDR-FLIP, 67 pixels per degree, exposures")) << "a comparison page says which FLIP";
+  EXPECT_TRUE(contains(pages, "LDR-FLIP, 67 pixels per degree)"));
+
+  RunResult ldr = runVkrt("grade -q " + dir + "/ldr-refs " + dir + "/class -o " + dir + "/report");
+  EXPECT_EQ(ldr.exitCode, 5) << ldr.output;
+  EXPECT_FALSE(contains(readFile(dir + "/report/summary.json"), "\"kind\": \"hdr\"")) << "an 8-bit reference: LDR-FLIP";
+
+  RunResult rendered = runVkrt("grade -q --backend cpu " + dir + "/refs " + dir + "/ball.test -o " + dir + "/report");
+  EXPECT_EQ(rendered.exitCode, 0) << rendered.output;
+  EXPECT_TRUE(contains(readFile(dir + "/report/summary.json"), "\"flip\": {\"kind\": \"hdr\", \"mean\": 0,"))
+      << readFile(dir + "/report/summary.json");
 }
