@@ -38,7 +38,8 @@ int compareBackends(const RenderOptions& o) {
     warnNonFinite(o.quiet, reports[i], i == 0 ? "vulkan" : "cpu");
   }
   // The 8-bit figures compare the two encoded images; FLIP, the two renders' radiance (HDR-FLIP).
-  ImageComparison c = compareImages(images[0], images[1], &radiance[0], &radiance[1]);
+  ImageComparison c =
+      compareImages(images[0], images[1], o.comparison.thresholds.pixelsPerDegree, &radiance[0], &radiance[1]);
   std::vector<std::string> failures = failedThresholds(c.diff, c.flip, o.comparison.thresholds);
   if (!o.comparison.thresholds.any()) failures.clear();   // --compare reports; it gates only when asked to
   auto total = [](const RenderReport& r) { return r.parseSeconds + r.buildSeconds + r.renderSeconds; };

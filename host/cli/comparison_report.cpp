@@ -14,14 +14,16 @@
 
 namespace vkrt {
 
-ImageComparison compareImages(const Image& actual, const Image& expected, const RadianceImage* actualRadiance,
-                              const RadianceImage* expectedRadiance) {
+ImageComparison compareImages(const Image& actual, const Image& expected, double pixelsPerDegree,
+                              const RadianceImage* actualRadiance, const RadianceImage* expectedRadiance) {
   ImageComparison c;
   c.diff = compare(actual, expected);
   const bool hdr = actualRadiance && expectedRadiance;
   FlipExposures exposures;
-  c.flipMap = hdr ? hdrFlip(*actualRadiance, *expectedRadiance, &exposures) : ldrFlip(actual, expected);
+  c.flipMap = hdr ? hdrFlip(*actualRadiance, *expectedRadiance, &exposures, pixelsPerDegree)
+                  : ldrFlip(actual, expected, pixelsPerDegree);
   c.flip = flipStats(c.flipMap);
+  c.flip.pixelsPerDegree = pixelsPerDegree;
   c.flip.hdr = hdr;
   c.flip.exposures = exposures;
   return c;
@@ -75,7 +77,7 @@ int reportComparison(const ComparisonOptions& o, const Image& actual, const Imag
       std::printf("%s: FAIL: %s\n", what.c_str(), msg.c_str());
     return kExitDiffers;
   }
-  ImageComparison c = compareImages(actual, expected, actualRadiance, expectedRadiance);
+  ImageComparison c = compareImages(actual, expected, o.thresholds.pixelsPerDegree, actualRadiance, expectedRadiance);
   std::vector<std::string> failures = failedThresholds(c.diff, c.flip, o.thresholds);
   if (o.json) {
     writeHeatmap(o, c);

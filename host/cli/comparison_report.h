@@ -24,7 +24,9 @@ struct ImageComparison {
 
 // Compares `actual` with `expected` (of one size): FLIP is HDR-FLIP of the two linear-float
 // images when both are given, else LDR-FLIP of the 8-bit ones.
-ImageComparison compareImages(const Image& actual, const Image& expected, const RadianceImage* actualRadiance = nullptr,
+// FLIP is computed for `pixelsPerDegree` (--pixels-per-degree).
+ImageComparison compareImages(const Image& actual, const Image& expected, double pixelsPerDegree,
+                              const RadianceImage* actualRadiance = nullptr,
                               const RadianceImage* expectedRadiance = nullptr);
 
 // The heatmap of --diff and the FLIP map of --flip-map, those asked for, in the 8-bit format

@@ -249,8 +249,14 @@ const OptionRow<R> kRenderRows[] = {
     {"--max-flip", "X",
      "fail when the mean FLIP error exceeds X (0 to 1): LDR-FLIP of the\n"
      "8-bit images, HDR-FLIP of the radiance when the reference (and\n"
-     "diff's other image) is float; 67 pixels per degree",
+     "diff's other image) is float",
      [](R& o, const V& v) { o.comparison.thresholds.maxFlip = parseFlipThreshold(v()); }, Section::Comparison},
+    {"--pixels-per-degree", "PPD",
+     "the viewing condition FLIP is computed for: pixels per degree of\n"
+     "visual angle (default 67: a 0.7 m wide 4K monitor seen from 0.7 m;\n"
+     "a 0.5 m wide 1920-pixel screen from 0.6 m: 40)",
+     [](R& o, const V& v) { o.comparison.thresholds.pixelsPerDegree = parsePixelsPerDegree(v()); },
+     Section::Comparison},
     {"--json", "", "print the metrics as one JSON object on stdout", [](R& o, const V&) { o.comparison.json = true; },
      Section::Comparison},
     {"--diff", "FILE{ext}", "\fwrite a heatmap of the differences, with its legend ({heatmap names})", setHeatmap,
@@ -300,7 +306,10 @@ const OptionRow<GradeOptions> kGradeRows[] = {
      "--max-pixels-over S:L, --max-diff N"},
     {"--max-diff", "N", "", [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); },
      Section::Grade},
-    {"--max-flip", "X", "fail when the mean LDR-FLIP error exceeds X (0 to 1)",
+    {"--max-flip", "X", "fail when the mean FLIP error exceeds X (0 to 1): HDR-FLIP where\n"
+     "both images are float, else LDR-FLIP",
+     [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade},
+    {"--pixels-per-degree", "PPD", "FLIP's viewing condition, as for diff (default 67)",
      [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade},
     {"--max-bias", "B", "fail when |mean(reference - image)| exceeds B (8-bit units)",
      [](GradeOptions& o, const V& v) { applyThresholdOption(v.name, v(), o.thresholds); }, Section::Grade},
@@ -429,9 +438,11 @@ DiffOptions parseDiffOptions(const std::vector<std::string>& args) {
 // The options that do not go together, and the comparison options without a comparison.
 void refuseCombinations(const R& o, const std::vector<std::string>& scenes) {
   const bool comparing =
-      o.comparison.thresholds.any() || o.comparison.json || o.comparison.heatmapPath || o.comparison.flipMapPath;
+      o.comparison.thresholds.any() || o.comparison.json || o.comparison.heatmapPath || o.comparison.flipMapPath ||
+      o.comparison.thresholds.pixelsPerDegree != kFlipDefaultPixelsPerDegree;
   if (comparing && !o.checkAgainst && !o.compare)
-    throw UsageError("--max-pixels-over, --max-diff, --max-flip, --json, --diff and --flip-map need --check REF" +
+    throw UsageError("--max-pixels-over, --max-diff, --max-flip, --pixels-per-degree, --json, --diff and --flip-map "
+                     "need --check REF" +
                      defaultImageExtension() +
                      " or --compare (or vkrt diff)");
   if (o.compare && o.checkAgainst) throw UsageError("--compare and --check do not go together");
@@ -514,6 +525,8 @@ RenderOptions parseViewOptions(const std::vector<std::string>& args) {
                         : o.comparison.heatmapPath              ? "--diff"
                         : o.comparison.flipMapPath              ? "--flip-map"
                         : o.comparison.thresholds.any()         ? "a threshold (--max-...)"
+                        : o.comparison.thresholds.pixelsPerDegree != kFlipDefaultPixelsPerDegree
+                            ? "--pixels-per-degree (the page plots RMSE)"
                                                                 : nullptr;
   if (refused)
     throw UsageError(std::string("view renders at each change of the scene and shows it; ") + refused +

@@ -63,6 +63,7 @@ FlipMap hdrFlip(const RadianceImage& test, const RadianceImage& reference, FlipE
 struct FlipStats {
   bool hdr = false;   // HDR-FLIP (then `exposures` says which) or LDR-FLIP
   FlipExposures exposures;
+  double pixelsPerDegree = kFlipDefaultPixelsPerDegree;   // the viewing condition it was computed for
   double mean = 0.0, median = 0.0, p95 = 0.0, p99 = 0.0, max = 0.0;
 };
 FlipStats flipStats(const FlipMap& map);

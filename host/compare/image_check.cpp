@@ -44,6 +44,15 @@ double parseFlipThreshold(const std::string& text) {
   return v;
 }
 
+double parsePixelsPerDegree(const std::string& text) {
+  double v = 0.0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !(v > 0.0 && v <= 1000.0))
+    throw UsageError("--pixels-per-degree expects a number above 0 and at most 1000 (67 for a 0.7 m wide 4K monitor "
+                     "seen from 0.7 m), got '" + echoed(text) + "'");
+  return v;
+}
+
 namespace {
 
 double share(long long count, long long pixels) {
@@ -90,6 +99,7 @@ std::string flipReportText(const FlipStats& f) {
   if (f.hdr)
     s += format(" (%.3g to %.3g stops, ", f.exposures.start, f.exposures.stop) +
          counted(f.exposures.count, "exposure", "exposures") + ")";
+  if (f.pixelsPerDegree != kFlipDefaultPixelsPerDegree) s += format(", at %.4g pixels per degree", f.pixelsPerDegree);
   return s;
 }
 
@@ -97,7 +107,7 @@ std::string flipReportJson(const FlipStats& f) {
   std::string s = std::string("{\"kind\":") + (f.hdr ? "\"hdr\"" : "\"ldr\"") + ",\"mean\":" + format("%.6g", f.mean) +
                   ",\"median\":" + format("%.6g", f.median) + ",\"p95\":" + format("%.6g", f.p95) +
                   ",\"p99\":" + format("%.6g", f.p99) + ",\"max\":" + format("%.6g", f.max) +
-                  ",\"pixels_per_degree\":" + format("%.6g", kFlipDefaultPixelsPerDegree);
+                  ",\"pixels_per_degree\":" + format("%.6g", f.pixelsPerDegree);
   if (f.hdr)
     s += ",\"start_exposure\":" + format("%.6g", f.exposures.start) + ",\"stop_exposure\":" +
          format("%.6g", f.exposures.stop) + ",\"exposures\":" + std::to_string(f.exposures.count);

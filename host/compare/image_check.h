@@ -23,6 +23,8 @@ struct CheckThresholds {
   std::vector<PixelThreshold> pixelsOver;
   int maxDiff = -1;   // --max-diff N: fails when a channel differs by more than N steps; -1: unset
   double maxFlip = -1.0;   // --max-flip X: fails when the mean FLIP error exceeds X; -1: unset
+  // --pixels-per-degree PPD: the viewing condition FLIP is computed for (not a threshold).
+  double pixelsPerDegree = kFlipDefaultPixelsPerDegree;
   // None given: any difference fails.
   bool any() const { return !pixelsOver.empty() || maxDiff >= 0 || maxFlip >= 0.0; }
 };
@@ -32,6 +34,9 @@ PixelThreshold parsePixelThreshold(const std::string& text);
 
 // Parses --max-flip's value, a number from 0 to 1. Throws UsageError.
 double parseFlipThreshold(const std::string& text);
+
+// Parses --pixels-per-degree's value, a number above 0 and at most 1000. Throws UsageError.
+double parsePixelsPerDegree(const std::string& text);
 
 // The thresholds that `diff` (and `flip`, FLIP's figures of the same two images) exceed, as
 // sentences; empty when it passes. --max-flip judges `flip.mean`.

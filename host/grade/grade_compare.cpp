@@ -114,8 +114,10 @@ Grade gradeImage(const Image& submission, const Image& reference, const GradeThr
                    submissionLinear->height == reference.height && referenceLinear->width == reference.width &&
                    referenceLinear->height == reference.height;
   FlipExposures exposures;
-  FlipMap map = hdr ? hdrFlip(*submissionLinear, *referenceLinear, &exposures) : ldrFlip(submission, reference);
+  const double ppd = t.pixels.pixelsPerDegree;
+  FlipMap map = hdr ? hdrFlip(*submissionLinear, *referenceLinear, &exposures, ppd) : ldrFlip(submission, reference, ppd);
   g.flip = flipStats(map);
+  g.flip.pixelsPerDegree = ppd;
   g.flip.hdr = hdr;
   g.flip.exposures = exposures;
   g.bias = biasTest(submission, reference, t.gamma, t.maxBiasZ.value_or(HUGE_VAL));

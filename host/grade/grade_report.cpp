@@ -266,7 +266,8 @@ std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
     s += figureRow("variance of (image &minus; reference)", format("%.4f", g.stats.variance));
     s += figureRow("bias z: the largest of the 16x16 squares' (per channel, against its standard error)",
                    biasZText(g.bias));
-    s += figureRow("FLIP error (" + flipKind(g.flip) + ", 67 pixels per degree" +
+    s += figureRow("FLIP error (" + flipKind(g.flip) + ", " + format("%.3g", g.flip.pixelsPerDegree) +
+                       " pixels per degree" +
                        (g.flip.hdr ? ", exposures " + format("%.3g", g.flip.exposures.start) + " to " +
                                          format("%.3g", g.flip.exposures.stop) + " stops"
                                    : std::string()) +

@@ -67,6 +67,8 @@ bool applyThresholdOption(const std::string& name, const std::string& value, Gra
     t.pixels.maxDiff = n;
   } else if (name == "--max-flip") {
     t.pixels.maxFlip = parseFlipThreshold(value);
+  } else if (name == "--pixels-per-degree") {
+    t.pixels.pixelsPerDegree = parsePixelsPerDegree(value);
   } else if (name == "--max-bias") {
     t.maxBias = nonNegative(name, value);
   } else if (name == "--max-variance") {
@@ -133,7 +135,7 @@ ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds&
       try {
         if (!applyThresholdOption(name, value, t))
           throw fail("unknown threshold '" + echoed(name) +
-                     "' (expected --max-pixels-over, --max-diff, --max-flip, --max-bias, --max-variance, --max-bias-z or --points)");
+                     "' (expected --max-pixels-over, --max-diff, --max-flip, --max-bias, --max-variance, --max-bias-z, --pixels-per-degree or --points)");
       } catch (const UsageError& e) {
         if (std::string(e.what()).rfind(abbreviated(path) + ":", 0) == 0) throw;
         throw fail(e.what());

@@ -1,6 +1,7 @@
 // `vkrt grade` end to end: a class of folders against references, into a report folder whose
 // summaries say what each comparison found; images side by side as one submission; scene
 // files rendered and graded; and the report folder never taking what the user had.
+#include <cmath>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -359,6 +360,22 @@ TEST(GradeCli, FloatImagesAreComparedByHdrFlip) {
   for (const auto& page : fs::directory_iterator(dir + "/report/pages")) pages += readFile(page.path().string());
   EXPECT_TRUE(contains(pages, "HDR-FLIP, 67 pixels per degree, exposures")) << "a comparison page says which FLIP";
   EXPECT_TRUE(contains(pages, "LDR-FLIP, 67 pixels per degree)"));
+
+  // Another viewing condition (--pixels-per-degree): grade's HDR-FLIP is diff's there too.
+  RunResult diff30 = runVkrt("diff --json --pixels-per-degree 30 " + dir + "/class/hdr/ball.pfm " + dir + "/refs/ball.exr");
+  const std::size_t at30 = diff30.output.find(diffField);
+  ASSERT_NE(at30, std::string::npos) << diff30.output;
+  const double expected30 = std::stod(diff30.output.substr(at30 + diffField.size()));
+  EXPECT_GT(std::fabs(expected30 - expected), 1e-3) << "the viewing condition changes FLIP";
+  RunResult r30 = runVkrt("grade -q --pixels-per-degree 30 " + dir + "/refs " + dir + "/class -o " + dir + "/report");
+  EXPECT_EQ(r30.exitCode, 5) << r30.output;
+  const std::string json30 = readFile(dir + "/report/summary.json");
+  ASSERT_NE(json30.find(field), std::string::npos) << json30;
+  EXPECT_NEAR(std::stod(json30.substr(json30.find(field) + field.size())), expected30, 1e-6) << json30;
+  std::string pages30;
+  for (const auto& page : fs::directory_iterator(dir + "/report/pages")) pages30 += readFile(page.path().string());
+  EXPECT_TRUE(contains(pages30, "HDR-FLIP, 30 pixels per degree, exposures")) << "the page says the condition";
+
 
   RunResult ldr = runVkrt("grade -q " + dir + "/ldr-refs " + dir + "/class -o " + dir + "/report");
   EXPECT_EQ(ldr.exitCode, 5) << ldr.output;

@@ -241,7 +241,7 @@ TEST(GradeThresholdFile, ABadLineIsAnErrorAtItsLine) {
   EXPECT_EQ(error("scene7 --max-bias -1\n"), at + "1: --max-bias expects a number of 0 or more (8-bit units), got '-1'");
   EXPECT_EQ(error("scene7 --max-pixel 2:1\n"),
             at + "1: unknown threshold '--max-pixel' (expected --max-pixels-over, --max-diff, --max-flip, --max-bias, "
-                 "--max-variance, --max-bias-z or --points)");
+                 "--max-variance, --max-bias-z, --pixels-per-degree or --points)");
   EXPECT_EQ(error("scene7 --max-bias-z x\n"), at + "1: --max-bias-z expects a number of 0 or more (standard errors), got 'x'");
   EXPECT_EQ(error("scene7 --max-diff\n"), at + "1: '--max-diff' needs a value");
   EXPECT_EQ(error("scene7\n"), at + "1: no threshold for scene7 (e.g. --max-pixels-over 2:0.1%)");
