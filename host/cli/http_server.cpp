@@ -6,6 +6,7 @@
 #include <netdb.h>
 #include <netinet/in.h>
 #include <poll.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -46,6 +47,8 @@ std::string responseBytes(const HttpResponse& r) {
                      "Cache-Control: no-store\r\nX-Content-Type-Options: nosniff\r\nReferrer-Policy: no-referrer\r\n" +
                      r.extraHeaders;
   if (r.stream) return head + "Connection: keep-alive\r\n\r\n" + r.body;
+  if (r.sharedBody)   // (sent from where it is: Connection::body)
+    return head + "Content-Length: " + std::to_string(r.sharedBody->size()) + "\r\nConnection: close\r\n\r\n";
   return head + "Content-Length: " + std::to_string(r.body.size()) + "\r\nConnection: close\r\n\r\n" + r.body;
 }
 
@@ -66,6 +69,8 @@ struct Connection {
   enum State { Reading, Writing, Streaming, Draining } state = Reading;
   std::string in, out;
   std::size_t sent = 0;            // of `out`
+  std::shared_ptr<const std::string> body;   // a shared body, sent after `out`
+  std::size_t bodySent = 0;
   std::uint64_t seen = 0;          // Streaming: the site's state it has been sent
   Clock::time_point opened, moved;   // accepted; output last moved (or a stream's last event)
   bool closing = false;
@@ -73,9 +78,9 @@ struct Connection {
   ~Connection() {
     if (fd >= 0) ::close(fd);
   }
-  bool pending() const { return sent < out.size(); }
+  bool pending() const { return sent < out.size() || (body && bodySent < body->size()); }
   void queue(std::string bytes) {
-    if (!pending()) out.clear(), sent = 0;
+    if (!pending()) out.clear(), sent = 0, body.reset(), bodySent = 0;
     out += bytes;
   }
 };
@@ -83,9 +88,12 @@ struct Connection {
 // Sends what `c` has pending, as far as the socket takes it; false when the peer is gone.
 bool flush(Connection& c) {
   while (c.pending()) {
-    const ssize_t n = ::send(c.fd, c.out.data() + c.sent, c.out.size() - c.sent, MSG_NOSIGNAL);
+    const bool head = c.sent < c.out.size();
+    const char* from = head ? c.out.data() + c.sent : c.body->data() + c.bodySent;
+    const std::size_t left = head ? c.out.size() - c.sent : c.body->size() - c.bodySent;
+    const ssize_t n = ::send(c.fd, from, left, MSG_NOSIGNAL);
     if (n < 0) return errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR;
-    c.sent += static_cast<std::size_t>(n);
+    (head ? c.sent : c.bodySent) += static_cast<std::size_t>(n);
     c.moved = Clock::now();
   }
   return true;
@@ -114,6 +122,7 @@ void receiveFrom(Connection& c, HttpSite& site, Clock::time_point now) {
                                                      : errorResponse(405, "only GET is served");
   if (r.status == 405) r.extraHeaders += "Allow: GET\r\n";
   c.queue(responseBytes(r) + (r.stream ? site.nextEvent(c.seen) : ""));   // a stream: the state now
+  c.body = r.sharedBody;
   c.state = r.stream ? Connection::Streaming : Connection::Writing;
   c.moved = now;
 }
@@ -133,24 +142,41 @@ void sendTo(Connection& c, HttpSite& site, Clock::time_point now) {
     ::shutdown(c.fd, SHUT_WR);
     c.state = Connection::Draining;
     c.moved = now;
+    if (c.eof) c.closing = true;   // the browser closed its side already: nothing to drain
   }
   if (c.state == Connection::Draining && now - c.moved > std::chrono::seconds(2)) c.closing = true;
   if (c.state == Connection::Reading && now - c.opened > std::chrono::seconds(kHeadSeconds)) c.closing = true;
   if (c.pending() && now - c.moved > std::chrono::seconds(kStallSeconds)) c.closing = true;
 }
 
-// Every connection waiting to be taken; those past kMaxConnections get 503 and are closed.
-void acceptWaiting(int listening, std::vector<std::unique_ptr<Connection>>& connections, Clock::time_point now) {
+// Sends 503 (as far as the socket takes it at once) and closes.
+void refuse(Connection& c) {
+  c.queue(responseBytes(errorResponse(503, "too many connections")));
+  flush(c);
+  c.closing = true;
+}
+
+// Every connection waiting to be taken. Past kMaxConnections, a new one replaces the oldest
+// connection still waiting for its request, or is refused. Returns false when no more can be
+// taken for now (the process is out of file descriptors): the caller waits before trying again.
+bool acceptWaiting(int listening, std::vector<std::unique_ptr<Connection>>& connections, Clock::time_point now) {
   for (;;) {
     const int fd = ::accept4(listening, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
-    if (fd < 0) return;
+    if (fd < 0) return errno != EMFILE && errno != ENFILE && errno != ENOBUFS && errno != ENOMEM;
     auto c = std::make_unique<Connection>();
     c->fd = fd;
     c->opened = c->moved = now;
     if (connections.size() >= static_cast<std::size_t>(kMaxConnections)) {
-      c->queue(responseBytes(errorResponse(503, "too many connections")));
-      flush(*c);   // best effort; then closed
-      continue;
+      Connection* oldest = nullptr;
+      for (const auto& other : connections)
+        if (other->state == Connection::Reading && !other->closing && (!oldest || other->opened < oldest->opened))
+          oldest = other.get();
+      if (!oldest) {
+        refuse(*c);
+        continue;
+      }
+      refuse(*oldest);
+      std::erase_if(connections, [](const auto& other) { return other->closing; });
     }
     connections.push_back(std::move(c));
   }
@@ -229,13 +255,16 @@ void HttpServer::notify() {
 }
 
 void HttpServer::run() {
+  ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 10);   // this thread only (Linux); failure: as it was
   std::vector<std::unique_ptr<Connection>> connections;
   std::vector<pollfd> polled;
+  Clock::time_point acceptAgain;   // out of file descriptors: the listening socket rests until then
   while (!stopping_) {
-    polled.assign({{listen_, POLLIN, 0}, {wakeRead_, POLLIN, 0}});
+    const bool resting = Clock::now() < acceptAgain;
+    polled.assign({{listen_, static_cast<short>(resting ? 0 : POLLIN), 0}, {wakeRead_, POLLIN, 0}});
     for (const auto& c : connections)
       polled.push_back({c->fd, static_cast<short>((c->eof ? 0 : POLLIN) | (c->pending() ? POLLOUT : 0)), 0});
-    if (::poll(polled.data(), polled.size(), 1000) < 0 && errno != EINTR) break;
+    if (::poll(polled.data(), polled.size(), resting ? 100 : 1000) < 0 && errno != EINTR) break;
     const Clock::time_point now = Clock::now();
     if (polled[1].revents & POLLIN) {
       char drain[64];
@@ -249,7 +278,8 @@ void HttpServer::run() {
       sendTo(c, site_, now);
     }
     std::erase_if(connections, [](const auto& c) { return c->closing; });
-    if (polled[0].revents & POLLIN) acceptWaiting(listen_, connections, now);
+    if ((polled[0].revents & POLLIN) && !acceptWaiting(listen_, connections, now))
+      acceptAgain = now + std::chrono::milliseconds(100);
   }
 }
 

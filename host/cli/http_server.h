@@ -5,14 +5,18 @@
 // a stream whose earlier event has not drained yet is sent the latest one when it has (a slow
 // browser sees fewer events, never a growing queue).
 //
-// Bounded: at most kMaxConnections at once (more get 503 and are closed); a request line or
-// head past http_request.h's limits is refused (414, 431); a head not received within
-// kHeadSeconds, or output that does not move for kStallSeconds, closes the connection. Only
-// GET is answered (405 otherwise).
+// Bounded: at most kMaxConnections at once; when all are taken, a new one takes the place of
+// the oldest that has not sent its request yet (which gets 503), else it gets 503 itself, so
+// that idle connections cannot keep the page from its browser. A request line or head past
+// http_request.h's limits is refused (414, 431); a head not received within kHeadSeconds, or
+// output that does not move for kStallSeconds, closes the connection. Only GET is answered
+// (405 otherwise). The thread runs at a lower priority than the render (nice +10): encoding
+// the page's image yields the CPU to it.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <thread>
 
@@ -29,6 +33,9 @@ struct HttpResponse {
   int status = 200;
   std::string contentType = "text/plain; charset=utf-8";
   std::string body;
+  // The body when it is large and the same for many (the image): shared, not copied per
+  // connection. Replaces `body` when set.
+  std::shared_ptr<const std::string> sharedBody;
   bool stream = false;          // an event stream: body is its first event
   std::string extraHeaders;     // whole lines, each ending in "\r\n"
 };

@@ -13,7 +13,9 @@
 
 namespace vkrt {
 
-int viewScene(RenderOptions& o) {
+int viewScene(RenderOptions& options) {
+  checkWatchOutputs(options);   // before the address is printed: a script would wait on it
+  RenderOptions o = options;    // its hooks lead to the view, which ends with this function
   std::optional<ViewReference> reference;
   if (o.checkAgainst) reference = ViewReference{*o.checkAgainst, readImage(*o.checkAgainst)};
   WebView view(o.request.scenePath, randomToken(), std::move(reference));

@@ -49,10 +49,7 @@ class Watcher {
       : o_(options), listener_(listener), watch_(options.request.scenePath) {}
 
   int run() {
-    // An output named on the command line that cannot be written (a folder that does not
-    // exist): no edit of the scene fixes it, so it is an error now, not a wait (IoError).
-    if (o_.request.output) checkOutputWritable(*o_.request.output);
-    if (o_.request.outputDir) checkOutputWritable(defaultOutputIn(*o_.request.outputDir, o_.request.scenePath));
+    checkWatchOutputs(o_);
     for (int round = 1;; ++round) {
       bool changed = false;
       if (listener_) listener_->roundStarted(round);
@@ -148,6 +145,11 @@ class Watcher {
 };
 
 }  // namespace
+
+void checkWatchOutputs(const RenderOptions& o) {
+  if (o.request.output) checkOutputWritable(*o.request.output);
+  if (o.request.outputDir) checkOutputWritable(defaultOutputIn(*o.request.outputDir, o.request.scenePath));
+}
 
 int watchScene(RenderOptions& options, WatchListener* listener) {
   try {

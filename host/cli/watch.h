@@ -39,6 +39,10 @@ class WatchListener {
   virtual void failed(int round, const std::string& message) = 0;
 };
 
+// An output named on the command line that cannot be written (a folder that does not exist):
+// no edit of the scene fixes it, so it is an error at once. Throws IoError.
+void checkWatchOutputs(const RenderOptions& options);
+
 // Returns the exit status of the signal that ended it. Throws UsageError, IoError (the scene's
 // folder cannot be watched), and what the first render throws before anything was shown
 // (a device that cannot be made is no reason to wait). `listener`, when given, is told each step.

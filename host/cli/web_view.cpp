@@ -217,7 +217,7 @@ HttpResponse WebView::image() {
     if (pngVersion_ != imageVersion_) copy = image_, gamma = gamma_, version = imageVersion_;
   }
   if (version != 0) {   // encoded outside the lock: the render does not wait for it
-    std::string png = pngBytes(copy, gamma);
+    auto png = std::make_shared<const std::string>(pngBytes(copy, gamma));
     std::lock_guard lock(mutex_);
     png_ = std::move(png);
     pngVersion_ = version;
@@ -225,7 +225,7 @@ HttpResponse WebView::image() {
   HttpResponse r;
   r.contentType = "image/png";
   std::lock_guard lock(mutex_);
-  r.body = png_;
+  r.sharedBody = png_;
   return r;
 }
 

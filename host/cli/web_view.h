@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -86,7 +87,7 @@ class WebView : public HttpSite, public WatchListener {
   double seconds_ = 0;
   RadianceImage image_;              // the latest rows, linear
   std::uint64_t imageVersion_ = 0;   // 0: no image yet
-  std::string png_;                  // image_ encoded, at pngVersion_
+  std::shared_ptr<const std::string> png_;   // image_ encoded, at pngVersion_ (shared by its responses)
   std::uint64_t pngVersion_ = 0;
   std::vector<std::pair<double, double>> checkPoints_;   // (seconds, RMSE), this round
   std::string checkNote_;            // the latest comparison, in words

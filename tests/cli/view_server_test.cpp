@@ -140,7 +140,8 @@ TEST(WebView, TheStateFollowsTheWatchAndTheImageIsAPng) {
   ASSERT_EQ(png.status, 200);
   EXPECT_EQ(png.contentType, "image/png");
   const std::string path = freshDir("cli/web-view") + "/served.png";
-  writeFile(path, png.body);
+  ASSERT_TRUE(png.sharedBody);   // one copy for every connection that asks
+  writeFile(path, *png.sharedBody);
   Image served = readImage(path);
   ASSERT_EQ(served.width, 4);
   ASSERT_EQ(served.height, 2);
@@ -159,7 +160,7 @@ TEST(WebView, TheStateFollowsTheWatchAndTheImageIsAPng) {
   EXPECT_TRUE(contains(event, "\"phase\":\"failed\"")) << event;
   EXPECT_TRUE(contains(event, "\"error\":\"scene.test:6: error: 'sphere' expects 4 arguments\\u000a\"")) << event;
   EXPECT_TRUE(contains(event, "\"warnings\":[]")) << event;   // a round's warnings are its own
-  EXPECT_EQ(view.respond(get("/image.png?t=" + token)).body, png.body);   // the last image stays
+  EXPECT_EQ(*view.respond(get("/image.png?t=" + token)).sharedBody, *png.sharedBody);   // the last image stays
 }
 
 TEST(WebView, WithAReferenceEachImageIsAPointOfThePlot) {
@@ -215,4 +216,10 @@ TEST(ViewCommand, OptionsThatDoNotGoWithItAreUsageErrors) {
   EXPECT_EQ(r.exitCode, 4) << r.output;
   EXPECT_NE(r.output.find("cannot listen on 192.0.2.1 port 0"), std::string::npos) << r.output;
   EXPECT_FALSE(fileExists(dir + "/a.png"));
+  // An output that cannot be written: an error before any address is printed (a script that
+  // waits for the first line is not handed one that never answers).
+  RunResult out = runCommand("'" + vkrtBinary() + "' view -o " + dir + "/no/such/folder/a.png " + dir +
+                             "/a.test 2>/dev/null");
+  EXPECT_EQ(out.exitCode, 4) << out.output;
+  EXPECT_EQ(out.output, "") << "nothing on stdout";
 }
