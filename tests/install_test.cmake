@@ -9,12 +9,20 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${rc}):\n${out}")
 endif()
 set(binary "${PREFIX}/bin/vkrt")
-set(page "${PREFIX}/share/man/man1/vkrt.1")
-foreach(f "${binary}" "${page}")
+set(page_gz "${PREFIX}/share/man/man1/vkrt.1.gz")
+set(completion "${PREFIX}/share/bash-completion/completions/vkrt")
+foreach(f "${binary}" "${page_gz}" "${completion}")
   if(NOT EXISTS "${f}")
     message(FATAL_ERROR "not installed: ${f}\n${out}")
   endif()
 endforeach()
+
+# The page, compressed (gzip -n, as Debian's policy asks): decompressed here to check it.
+set(page "${PREFIX}/vkrt.1")
+execute_process(COMMAND gzip -d -c "${page_gz}" OUTPUT_FILE "${page}" RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${page_gz} does not decompress (${rc}): ${err}")
+endif()
 
 # The installed binary runs.
 execute_process(COMMAND "${binary}" --help RESULT_VARIABLE rc OUTPUT_VARIABLE help ERROR_VARIABLE err)
