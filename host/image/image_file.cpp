@@ -14,6 +14,7 @@
 #include "image/atomic_file.h"
 #include "image/encode.h"
 #include "image/exr.h"
+#include "image/jpeg.h"
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/ppm.h"
@@ -21,6 +22,7 @@
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
+#define STBI_NO_JPEG   // JPEG: libjpeg-turbo (image/jpeg.h)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wconversion"
 #pragma GCC diagnostic ignored "-Wsign-compare"
@@ -349,8 +351,6 @@ IoError stbFailure(const StbSource& source, const std::string& path) {
   std::string why;
   if (std::ferror(source.file))
     why = std::strerror(errno);
-  else if (reason == "0 width")
-    why = "the JPEG is 0 pixels wide, and an image has at least one pixel";
   else if (reason == "outofmem")
     why = "out of memory";
   else if (reason == "unknown image type")
@@ -358,7 +358,7 @@ IoError stbFailure(const StbSource& source, const std::string& path) {
   else if (reason == "outofdata" || source.starved)
     why = "the file ends early (it is truncated)";
   else
-    why = "a damaged or unsupported PNG or JPEG" + (reason.empty() ? std::string() : " (stb_image: '" + escapedBytes(reason) + "')");
+    why = "a damaged or unsupported PNG" + (reason.empty() ? std::string() : " (stb_image: '" + escapedBytes(reason) + "')");
   return imageReadError(path, why);
 }
 
@@ -372,6 +372,7 @@ Image readImage(const std::string& path) {
   if (isBinaryNetpbm(source.head, source.headSize))
     return readBinaryNetpbm(file.get(), static_cast<char>(source.head[1]), path);
   readHead(source, sizeof source.head, path);
+  if (isJpegHead(source.head, source.headSize)) return readJpeg(file.get(), source.head, source.headSize, path);
   checkPngHasPixels(source, path);
   int w = 0, h = 0, channels = 0;
   unsigned char* data = stbi_load_from_callbacks(&kStbCallbacks, &source, &w, &h, &channels, 3);
@@ -389,6 +390,8 @@ void readImageSize(const std::string& path, int& width, int& height) {
   if (isBinaryNetpbm(source.head, source.headSize))
     return readBinaryNetpbmSize(file.get(), static_cast<char>(source.head[1]), path, width, height);
   readHead(source, sizeof source.head, path);
+  if (isJpegHead(source.head, source.headSize))
+    return readJpegSize(file.get(), source.head, source.headSize, path, width, height);
   checkPngHasPixels(source, path);
   int channels = 0;
   if (!stbi_info_from_callbacks(&kStbCallbacks, &source, &width, &height, &channels)) throw stbFailure(source, path);
