@@ -439,13 +439,22 @@ struct SceneGrading {
   bool monteCarlo = false;
   double gamma = 1.0;
 };
-std::optional<SceneGrading> sceneGrading(const std::string& path) {
+// A file that cannot be read as a scene: none, and `why` says why (its first error).
+std::optional<SceneGrading> sceneGrading(const std::string& path, std::string& why) {
   try {
     const PathSettings p = parseSceneFile(path).path;
     return SceneGrading{p.integrator == Integrator::Direct || p.integrator == Integrator::PathTracer, p.gamma};
-  } catch (const std::exception&) {
-    return std::nullopt;
+  } catch (const SceneError& e) {
+    for (const Diagnostic& d : e.diagnostics())
+      if (d.isError()) {
+        why = d.format();
+        break;
+      }
+  } catch (const std::exception& e) {
+    why = e.what();
   }
+  if (why.empty()) why = "it cannot be read as a scene";
+  return std::nullopt;
 }
 
 // The scene files that say which scenes are path-traced, by scene key: those given to render,
@@ -466,12 +475,22 @@ std::map<std::string, std::string> sceneFilesByKey(const std::vector<std::string
 // their images' gamma, which the bias test decodes, and for a path-traced scene that nothing
 // else judges, judgement by its noise: square by square, bias against its own standard error
 // (compare/bias_test.h), not "any difference fails".
+// A scene file beside a reference that cannot be read is said in a warning (the scene is then
+// judged without it); one given to render says its errors when it is rendered.
 void applySceneFiles(ThresholdTable& thresholds, const std::vector<std::string>& keys,
-                     const std::vector<std::string>& scenes, const std::string& references) {
+                     const std::vector<std::string>& scenes, const std::string& references, bool quiet) {
   for (const auto& [key, file] : sceneFilesByKey(scenes, references)) {
     if (std::find(keys.begin(), keys.end(), key) == keys.end()) continue;
-    const std::optional<SceneGrading> g = sceneGrading(file);
-    if (!g) continue;
+    std::string why;
+    const std::optional<SceneGrading> g = sceneGrading(file, why);
+    if (!g) {
+      if (!quiet && std::find(scenes.begin(), scenes.end(), file) == scenes.end())
+        std::fprintf(stderr,
+                     "vkrt: warning: grade: %s, beside the references, cannot be read as a scene (%s); its scene "
+                     "is graded without it (not as path-traced, gamma 1)\n",
+                     file.c_str(), why.c_str());
+      continue;
+    }
     GradeThresholds t = thresholds.forScene(key);
     if (!t.any() && g->monteCarlo) {
       t.maxBiasZ = kDefaultMaxBiasZ;
@@ -541,7 +560,7 @@ int gradeCommand(const GradeOptions& o) {
   ThresholdTable thresholds;
   thresholds.all = o.thresholds;
   if (o.thresholdsFile) thresholds = readThresholdFile(*o.thresholdsFile, o.thresholds, keys);
-  applySceneFiles(thresholds, keys, scenes, o.references);
+  applySceneFiles(thresholds, keys, scenes, o.references, o.quiet);
   std::vector<Submission> submissions;
   if (!folders.empty()) submissions = findSubmissions(folders, refs, o.oneStudent);
 

@@ -386,3 +386,28 @@ TEST(GradeCli, FloatImagesAreComparedByHdrFlip) {
   EXPECT_TRUE(contains(readFile(dir + "/report/summary.json"), "\"flip\": {\"kind\": \"hdr\", \"mean\": 0,"))
       << readFile(dir + "/report/summary.json");
 }
+
+// A scene file beside the references says how its scene is graded (path-traced: by its noise;
+// its gamma). One that cannot be read as a scene is said in a warning, with its first error
+// at its line, and the scene is graded without it; -q leaves the warning out.
+TEST(GradeCli, ASceneFileBesideTheReferencesThatCannotBeReadIsSaid) {
+  std::string dir = freshDir("grade/broken-scene-file");
+  for (const char* f : {"refs", "class/s1"}) fs::create_directories(dir + "/" + f);
+  writePngAtomic(solid(8, 6, 10, 20, 30), dir + "/refs/box.png");
+  writePngAtomic(solid(8, 6, 10, 20, 30), dir + "/class/s1/box.png");
+  writeFile(dir + "/refs/box.test", "size 8 6\nintegrator pathtracer\nsphere 0 0\n");
+  RunResult r = runVkrt("grade " + dir + "/refs " + dir + "/class -o " + dir + "/report");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "vkrt: warning: grade: " + dir + "/refs/box.test, beside the references, cannot be "
+                                 "read as a scene (" + dir + "/refs/box.test:3: error: 'sphere' expects 4 arguments"))
+      << r.output;
+  EXPECT_TRUE(contains(r.output, "its scene is graded without it")) << r.output;
+  RunResult quiet = runVkrt("grade -q " + dir + "/refs " + dir + "/class -o " + dir + "/report");
+  EXPECT_EQ(quiet.exitCode, 0) << quiet.output;
+  EXPECT_FALSE(contains(quiet.output, "warning")) << quiet.output;
+  // Readable, it is used without a word.
+  writeFile(dir + "/refs/box.test", "size 8 6\ncamera 0 0 5 0 0 0 0 1 0 45\nintegrator pathtracer\nsphere 0 0 0 1\n");
+  RunResult fine = runVkrt("grade " + dir + "/refs " + dir + "/class -o " + dir + "/report");
+  EXPECT_EQ(fine.exitCode, 0) << fine.output;
+  EXPECT_FALSE(contains(fine.output, "warning")) << fine.output;
+}
