@@ -122,7 +122,7 @@ function show(s) {
   $("phase").className = "phase " + s.phase;
   $("round").textContent = s.round ? String(s.round) : "-";
   $("samples").textContent = s.samples ? String(s.samples) + (s.path ? " (batch " + s.batch + " of " + s.batches + ")" : "") : "-";
-  $("seconds").textContent = s.phase === "rendering" ? "-" : fixed(s.seconds, 3) + " s";
+  $("seconds").textContent = s.phase === "done" || s.phase === "refining" ? fixed(s.seconds, 3) + " s" : "-";
   $("output").textContent = s.output ? s.output + " (" + s.width + "x" + s.height + ")" : "-";
   $("line").textContent = s.line;
   const progress = s.phase === "done" ? 1 : s.path ? (s.batches ? s.batch / s.batches : 0) : (s.height ? s.rows / s.height : 0);
