@@ -22,7 +22,7 @@
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
-#define STBI_NO_JPEG   // JPEG: libjpeg-turbo (image/jpeg.h)
+#define STBI_ONLY_PNG   // stb decodes PNG alone: JPEG is libjpeg-turbo's (image/jpeg.h), the rest vkrt's own; none of stb's other decoders (GIF, PSD, BMP, ...) is reachable
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wconversion"
 #pragma GCC diagnostic ignored "-Wsign-compare"
