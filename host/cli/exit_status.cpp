@@ -1,6 +1,8 @@
 // Exceptions -> messages and exit statuses, for main() and its tests.
 #include "cli/exit_status.h"
 
+#include <cstdlib>
+
 #include <initializer_list>
 #include <new>
 #include <string>
@@ -74,6 +76,20 @@ int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE
     std::fprintf(err, "vkrt: internal error (a bug in vkrt): an exception of unknown type\n");
     return kExitInternal;
   }
+}
+
+int reportErrorKeepingText(std::exception_ptr error, const ErrorContext& context, std::string& text) {
+  text.clear();
+  char* buffer = nullptr;
+  std::size_t size = 0;
+  std::FILE* memory = ::open_memstream(&buffer, &size);
+  if (!memory) return reportError(error, context, stderr);
+  const int status = reportError(error, context, memory);
+  std::fclose(memory);
+  text.assign(buffer, size);
+  std::free(buffer);
+  std::fputs(text.c_str(), stderr);
+  return status;
 }
 
 std::string exitStatusName(int status) {

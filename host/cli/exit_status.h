@@ -29,6 +29,10 @@ struct ErrorContext {
 // Prints the message of `error` (any exception) on `err` and returns its exit status.
 int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE* err);
 
+// The same on stderr, and the text printed, for a report that shows it too (grade's page, vkrt
+// view's); "" when no copy could be kept (the message is on stderr all the same).
+int reportErrorKeepingText(std::exception_ptr error, const ErrorContext& context, std::string& text);
+
 // The exception being handled, or Interrupted when a signal has been received: a signal
 // that cuts a wait short (an image read from a FIFO: "Interrupted system call") is what
 // stopped the command, and its status is the signal's. Call it inside a catch block.

@@ -305,17 +305,8 @@ Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& sce
       std::exception_ptr e = std::current_exception();
       if (int signal = pendingInterrupt()) throw Interrupted(signal);
       // The messages go to the terminal and, for the report (and a student on Gradescope), into the entry.
-      char* text = nullptr;
-      std::size_t length = 0;
-      std::FILE* messages = open_memstream(&text, &length);
-      int s = messages ? reportError(e, {scene, o.quiet}, messages) : reportError(e, {scene, o.quiet}, stderr);
       std::string said;
-      if (messages) {
-        std::fclose(messages);
-        said.assign(text, length);
-        std::free(text);
-        std::fputs(said.c_str(), stderr);
-      }
+      const int s = reportErrorKeepingText(e, {scene, o.quiet}, said);
       while (!said.empty() && said.back() == '\n') said.pop_back();
       status = worseExitStatus(status, s);
       r.errors[key] = {"cannot be rendered: " + exitStatusName(s) + (said.empty() ? "" : ":\n" + said), s};

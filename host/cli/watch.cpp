@@ -3,7 +3,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
 
 #include "cli/exit_status.h"
@@ -27,22 +26,6 @@ SampleRecord samplesOf(const RadianceImage& image) {
   throw InternalError("a path-traced image without its samples record");
 }
 
-// What reportError prints for `error`, as text; `status` its exit status.
-std::string errorText(std::exception_ptr error, const ErrorContext& context, int& status) {
-  char* buffer = nullptr;
-  std::size_t size = 0;
-  std::FILE* memory = ::open_memstream(&buffer, &size);
-  if (!memory) {
-    status = reportError(error, context, stderr);
-    return "(the error is on vkrt's stderr)\n";
-  }
-  status = reportError(error, context, memory);
-  std::fclose(memory);
-  std::string text(buffer, size);
-  std::free(buffer);
-  return text;
-}
-
 class Watcher {
  public:
   Watcher(RenderOptions& options, WatchListener* listener)
@@ -58,9 +41,9 @@ class Watcher {
       } catch (const Interrupted&) {
         throw;
       } catch (...) {
-        int status = 0;
-        std::string message = errorText(std::current_exception(), {o_.request.scenePath, o_.quiet}, status);
-        std::fputs(message.c_str(), stderr);
+        std::string message;
+        const int status = reportErrorKeepingText(std::current_exception(), {o_.request.scenePath, o_.quiet}, message);
+        if (message.empty()) message = "(the error is on vkrt's stderr)\n";
         // Nothing rendered yet and nothing the scene can fix (no device, no memory): no use waiting.
         if (round == 1 && status != kExitScene && status != kExitIo && status != kExitUsage) return status;
         const std::string waiting = "vkrt: watch: " + exitStatusName(status) +

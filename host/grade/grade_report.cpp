@@ -194,6 +194,36 @@ std::string figureRow(const std::string& name, const std::string& value) {
   return "<tr><th scope=\"row\">" + name + "</th><td class=\"num\">" + value + "</td></tr>\n";
 }
 
+// A comparison's figures, as a table.
+std::string figuresTable(const Grade& g) {
+  std::string s;
+  s += "<h2>Figures</h2>\n<table>\n";
+  s += figureRow("largest channel difference", std::to_string(g.maxDiff) + "/255");
+  s += figureRow("RMSE", format("%.4f/255", g.rmse));
+  s += figureRow("PSNR", std::isfinite(g.psnr) ? format("%.2f dB", g.psnr) : "infinite (identical)");
+  const double pixels = static_cast<double>(g.width) * g.height;
+  auto share = [&](long long n) { return std::to_string(n) + format(" (%.4g%%)", 100.0 * static_cast<double>(n) / pixels); };
+  s += figureRow("pixels that differ", share(g.differing));
+  s += figureRow("pixels over 1/255", share(g.over1));
+  s += figureRow("pixels over 2/255", share(g.over2));
+  s += figureRow("bias, mean(reference &minus; image)", format("%.4f", g.stats.bias));
+  s += figureRow("variance of (image &minus; reference)", format("%.4f", g.stats.variance));
+  s += figureRow("bias z: the largest of the 16x16 squares' (per channel, against its standard error)",
+                 biasZText(g.bias));
+  s += figureRow("FLIP error (" + flipKind(g.flip) + ", " + format("%.3g", g.flip.pixelsPerDegree) +
+                     " pixels per degree" +
+                     (g.flip.hdr ? ", exposures " + format("%.3g", g.flip.exposures.start) + " to " +
+                                       format("%.3g", g.flip.exposures.stop) + " stops"
+                                 : std::string()) +
+                     "): mean",
+                 format("%.4f", g.flip.mean));
+  s += figureRow("FLIP error: median, 95th, 99th percentile, max",
+                 format("%.4f", g.flip.median) + ", " + format("%.4f", g.flip.p95) + ", " + format("%.4f", g.flip.p99) +
+                     ", " + format("%.4f", g.flip.max));
+  s += "</table>\n";
+  return s;
+}
+
 std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
   const ReportSubmission& sub = r.submissions[i];
   const ReportScene& sc = r.scenes[c];
@@ -252,32 +282,7 @@ std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
            "<p>Left of the split: the reference; right of it: the submission. Drag the slider, or press t to flip "
            "between the two.</p>\n</section>\n";
   }
-  if (g.outcome != GradeOutcome::Unreadable && g.width == sc.width && g.height == sc.height) {
-    s += "<h2>Figures</h2>\n<table>\n";
-    s += figureRow("largest channel difference", std::to_string(g.maxDiff) + "/255");
-    s += figureRow("RMSE", format("%.4f/255", g.rmse));
-    s += figureRow("PSNR", std::isfinite(g.psnr) ? format("%.2f dB", g.psnr) : "infinite (identical)");
-    const double pixels = static_cast<double>(g.width) * g.height;
-    auto share = [&](long long n) { return std::to_string(n) + format(" (%.4g%%)", 100.0 * static_cast<double>(n) / pixels); };
-    s += figureRow("pixels that differ", share(g.differing));
-    s += figureRow("pixels over 1/255", share(g.over1));
-    s += figureRow("pixels over 2/255", share(g.over2));
-    s += figureRow("bias, mean(reference &minus; image)", format("%.4f", g.stats.bias));
-    s += figureRow("variance of (image &minus; reference)", format("%.4f", g.stats.variance));
-    s += figureRow("bias z: the largest of the 16x16 squares' (per channel, against its standard error)",
-                   biasZText(g.bias));
-    s += figureRow("FLIP error (" + flipKind(g.flip) + ", " + format("%.3g", g.flip.pixelsPerDegree) +
-                       " pixels per degree" +
-                       (g.flip.hdr ? ", exposures " + format("%.3g", g.flip.exposures.start) + " to " +
-                                         format("%.3g", g.flip.exposures.stop) + " stops"
-                                   : std::string()) +
-                       "): mean",
-                   format("%.4f", g.flip.mean));
-    s += figureRow("FLIP error: median, 95th, 99th percentile, max",
-                   format("%.4f", g.flip.median) + ", " + format("%.4f", g.flip.p95) + ", " + format("%.4f", g.flip.p99) +
-                       ", " + format("%.4f", g.flip.max));
-    s += "</table>\n";
-  }
+  if (g.outcome != GradeOutcome::Unreadable && g.width == sc.width && g.height == sc.height) s += figuresTable(g);
   return s + foot("../");
 }
 
