@@ -214,3 +214,30 @@ TEST(Messages, CompareWarnsOfNonFinitePixels) {
   EXPECT_TRUE(contains(r.output, "vkrt: warning: cpu: ")) << r.output;
   EXPECT_TRUE(contains(r.output, "a NaN or infinite colour (compared as 8-bit: NaN as 0, +infinity as 255)")) << r.output;
 }
+
+// The warning names the backend whose pixels were not finite, and not the other: two scenes
+// where only one backend goes beyond float32. On a triangle lit head-on, ambient + emission
+// (3e38 each) less a light of -3e38 is 3e38 in the CPU's doubles, while Vulkan's floats
+// overflow on the first sum. A light of 3e38 over an attenuation divisor of 0.5 is 6e38 in
+// the CPU's doubles, while Vulkan keeps the light over its divisor finite (shaders/lights.glsl)
+// and writes the largest float.
+TEST(Messages, CompareNamesOnlyTheBackendWhosePixelsWereNotFinite) {
+  if (!gpuContextOrSkip()) return;
+  const std::string dir = freshDir("messages/compare-one-backend-non-finite");
+  const std::string triangle = "size 8 8\ncamera 0 0 4 0 0 0 0 1 0 30\ndiffuse 1 1 1\nmaxverts 3\n"
+                               "vertex -1 -1 0\nvertex 1 -1 0\nvertex 0 1 0\ntri 0 1 2\n";
+  const struct {
+    const char* lighting;
+    const char* named;
+    const char* notNamed;
+  } cases[] = {
+      {"ambient 3e38 3e38 3e38\nemission 3e38 3e38 3e38\ndirectional 0 0 1 -3e38 -3e38 -3e38\n", "vulkan", "cpu"},
+      {"attenuation 0.5 0 0\npoint 0 0 1000 3e38 3e38 3e38\n", "cpu", "vulkan"}};
+  for (const auto& c : cases) {
+    writeFile(dir + "/s.test", std::string(c.lighting) + triangle);
+    RunResult r = runIn(dir, "--compare s.test");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, std::string("vkrt: warning: ") + c.named + ": ")) << c.lighting << r.output;
+    EXPECT_FALSE(contains(r.output, std::string("vkrt: warning: ") + c.notNamed + ": ")) << c.lighting << r.output;
+  }
+}
