@@ -17,7 +17,7 @@
 #include "cli/merge_images.h"
 #include "cli/options.h"
 #include "cli/render_scenes.h"
-#include "cli/tev_display.h"
+#include "net/tev_display.h"
 #include "cli/view_scene.h"
 #include "cli/watch.h"
 #include "gpu/loader_drivers.h"

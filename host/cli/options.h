@@ -11,7 +11,7 @@
 #include "compare/image_check.h"
 #include "grade/grade_thresholds.h"
 #include "util/errors.h"   // UsageError
-#include "cli/tev_display.h"
+#include "net/tev_display.h"
 #include "render/render.h"
 
 namespace vkrt {
@@ -46,7 +46,7 @@ struct RenderOptions : CommonOptions {
   bool watch = false;     // --watch: render again at each change of the scene file (cli/watch.h)
   std::optional<std::string> checkAgainst;   // --check REF.png: compare the render with REF
   ComparisonOptions comparison;
-  std::optional<DisplayAddress> display;     // --display-server HOST:PORT (cli/tev_display.h)
+  std::optional<DisplayAddress> display;     // --display-server HOST:PORT (net/tev_display.h)
   // vkrt view: --watch shown on a page in the browser (cli/view_scene.h), served on
   // bind:port (port 0: a free one). --bind and --port go only with view.
   bool view = false;

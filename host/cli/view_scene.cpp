@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <optional>
 
-#include "cli/http_server.h"
 #include "cli/watch.h"
 #include "cli/web_view.h"
 #include "image/image_file.h"
+#include "net/http_server.h"
 
 namespace vkrt {
 

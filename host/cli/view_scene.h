@@ -1,5 +1,5 @@
 // vkrt view SCENE: the watch loop (cli/watch.h) with its page served (cli/web_view.h,
-// cli/http_server.h): the page's address, with a fresh token, is the first line on stdout.
+// net/http_server.h): the page's address, with a fresh token, is the first line on stdout.
 #pragma once
 
 #include "cli/options.h"

@@ -6,7 +6,7 @@
 #include <exception>
 
 #include "cli/exit_status.h"
-#include "cli/file_watch.h"
+#include "watch/file_watch.h"
 #include "cli/warning_printers.h"
 #include "cli/run_files.h"
 #include "util/counted.h"

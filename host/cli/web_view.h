@@ -1,4 +1,4 @@
-// What `vkrt view`'s page shows, and the site that serves it (cli/http_server.h): the watch
+// What `vkrt view`'s page shows, and the site that serves it (net/http_server.h): the watch
 // loop's steps (cli/watch.h: rounds, warnings and errors with their lines, each image written
 // or refined) and the render's rows as they come, held here under one lock; the server's
 // thread reads them. Three addresses, each only with the token (a random 128-bit number, in
@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "cli/http_server.h"
+#include "net/http_server.h"
 #include "cli/watch.h"
 #include "image/image.h"
 #include "image/radiance_image.h"

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "cli/http_request.h"
+#include "net/http_request.h"
 #include "cli/web_view.h"
 #include "image/image_file.h"
 #include "render/render.h"

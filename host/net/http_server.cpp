@@ -1,5 +1,5 @@
 // The server's loop: http_server.h.
-#include "cli/http_server.h"
+#include "net/http_server.h"
 
 #include <arpa/inet.h>
 #include <fcntl.h>

@@ -1,5 +1,5 @@
 // Parsing a request's head: http_request.h.
-#include "cli/http_request.h"
+#include "net/http_request.h"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
-// The render shown in tev over its network protocol (cli/tev_display.h).
-#include "cli/tev_display.h"
+// The render shown in tev over its network protocol (net/tev_display.h).
+#include "net/tev_display.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -1,6 +1,6 @@
 // inotify on the file's folder (and its target's), filtered by the file's name, with stat()
 // as the backstop.
-#include "cli/file_watch.h"
+#include "watch/file_watch.h"
 
 #include <poll.h>
 #include <sys/inotify.h>

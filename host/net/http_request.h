@@ -1,4 +1,4 @@
-// The head of an HTTP/1.x request as `vkrt view`'s server reads it (cli/http_server.h): the
+// The head of an HTTP/1.x request as `vkrt view`'s server reads it (net/http_server.h): the
 // request line and header fields, parsed with limits on their size, and the target split into
 // its path and query parameters (percent-decoded). Nothing here reads a socket.
 #pragma once

@@ -20,7 +20,7 @@
 #include <string>
 #include <thread>
 
-#include "cli/http_request.h"
+#include "net/http_request.h"
 
 namespace vkrt {
 
