@@ -10,15 +10,13 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <mutex>
 #include <optional>
 #include <set>
 #include <thread>
-
-#include <stdlib.h>   // mkdtemp
-#include <sys/stat.h>   // umask, chmod
 
 #include "cli/exit_status.h"
 #include "cli/run_files.h"   // RefusedOutput
@@ -34,6 +32,10 @@
 #include "image/image_read.h"
 #include "image/png.h"   // isPngFile
 #include "image/thumbnail.h"
+#include "platform/error_text.h"
+#include "platform/file_changes.h"
+#include "platform/file_names.h"
+#include "platform/file_permissions.h"
 #include "util/interrupt.h"
 #include "util/parallel_for.h"
 #include "render/progress.h"
@@ -52,9 +54,7 @@ namespace {
 fs::path canonicalFolder(const std::string& path) {
   fs::path p = fs::absolute(path).lexically_normal();
   if (p.filename().empty() && p.has_parent_path() && p != p.root_path()) p = p.parent_path();   // "report/"
-  std::error_code ec;
-  fs::path c = fs::weakly_canonical(p, ec);
-  return ec ? p : c;
+  return platform::canonicalName(p.string());
 }
 
 bool inside(const fs::path& inner, const fs::path& outer) {
@@ -75,12 +75,11 @@ bool replaceableReport(const fs::path& folder) {
   }
   if (ec) return false;
   if (empty) return true;
-  std::FILE* f = std::fopen((folder / "summary.json").c_str(), "rb");
+  std::ifstream f(folder / "summary.json", std::ios::binary);
   if (!f) return false;
   char buf[16] = {};
-  std::size_t n = std::fread(buf, 1, sizeof buf - 1, f);
-  std::fclose(f);
-  return std::string(buf, n).rfind(kSummaryJsonStart, 0) == 0;
+  f.read(buf, sizeof buf - 1);
+  return std::string(buf, static_cast<std::size_t>(f.gcount())).rfind(kSummaryJsonStart, 0) == 0;
 }
 
 // Where the report goes: refused (UsageError) when it is, holds or lies in a folder the run
@@ -130,12 +129,10 @@ void checkGradescopeFile(const std::string& path, const std::vector<std::string>
 // A fresh folder in `folder`, named .vkrt-grade-XXXXXX, readable as a new folder would be.
 std::string temporaryFolderIn(const fs::path& folder) {
   std::string pattern = (folder / (std::string(kTemporaryPrefix) + "XXXXXX")).string();
-  if (!::mkdtemp(pattern.data()))
+  if (!platform::createTemporaryDirectory(pattern))
     throw IoError("cannot write the report in '" + abbreviated(folder.string()) + "': " + std::strerror(errno));
-  // mkdtemp makes it for this user alone; the report is for whoever may read a new folder.
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::chmod(pattern.c_str(), 0777 & ~mask);
+  // It is made for this user alone; the report is for whoever may read a new folder.
+  platform::setMode(pattern, 0777 & ~platform::creationMask());
   return pattern;
 }
 
@@ -146,18 +143,18 @@ std::string temporaryFolderFor(const fs::path& out) {
   return temporaryFolderIn(fs::exists(out, ec) ? out : out.parent_path());
 }
 
-// Moves every entry of `from` but those in `except` into `to` (renames, one folder apart);
-// on a failure, moves back what it moved and throws IoError naming `out`.
+// Moves every entry of `from` but those in `except` into `to` (renames, one folder apart, by
+// the platform's replaceFile: on Windows it waits a moment for a viewer that holds a file of
+// the report); on a failure, moves back what it moved and throws IoError naming `out`.
 void moveEntries(const fs::path& from, const fs::path& to, const std::vector<fs::path>& except, const fs::path& out) {
   std::error_code ec;
   std::vector<fs::path> entries, moved;
   for (fs::directory_iterator it(from, ec), end; !ec && it != end; it.increment(ec))
     if (std::find(except.begin(), except.end(), it->path()) == except.end()) entries.push_back(it->path());
   for (const fs::path& e : entries) {
-    fs::rename(e, to / e.filename(), ec);
-    if (ec) {
-      const std::string why = ec.message();
-      for (const fs::path& m : moved) fs::rename(to / m.filename(), m, ec);
+    if (platform::replaceFile(e.string(), (to / e.filename()).string()) != 0) {
+      const std::string why = platform::errorText(errno);
+      for (const fs::path& m : moved) platform::replaceFile((to / m.filename()).string(), m.string());
       throw IoError("cannot put the report in '" + abbreviated(out.string()) + "': " + why);
     }
     moved.push_back(e);
@@ -170,8 +167,8 @@ void moveEntries(const fs::path& from, const fs::path& to, const std::vector<fs:
 void swapIntoPlace(const std::string& temporary, const fs::path& out) {
   std::error_code ec;
   if (!fs::exists(out, ec)) {
-    fs::rename(temporary, out, ec);
-    if (ec) throw IoError("cannot put the report at '" + abbreviated(out.string()) + "': " + ec.message());
+    if (platform::replaceFile(temporary, out.string()) != 0)
+      throw IoError("cannot put the report at '" + abbreviated(out.string()) + "': " + platform::errorText(errno));
     return;
   }
   const fs::path old = temporaryFolderIn(out);
@@ -418,7 +415,7 @@ int printOutcomes(const GradeOptions& o, const GradeReport& report, int status) 
                counted(report.submissions.size(), "submission", "submissions").c_str(),
                counted(report.scenes.size(), "scene", "scenes").c_str(), report.seconds, n.pass, n.fail, n.missing,
                n.unreadable ? (", " + std::to_string(n.unreadable) + " unreadable").c_str() : "",
-               (o.output + (o.output.back() == '/' ? "" : "/") + "index.html").c_str(), status);
+               (fs::path(o.output) / "index.html").string().c_str(), status);
   return status;
 }
 

@@ -4,9 +4,8 @@
 #include <cstring>
 #include <fstream>
 
-#include <sys/stat.h>
-
 #include "image/image_file.h"
+#include "platform/file_status.h"
 
 namespace vkrt {
 namespace {
@@ -16,8 +15,7 @@ bool blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 }  // namespace
 
 std::optional<std::string> imageKind(const std::string& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
+  if (platform::isRegularFile(path)) {
     std::ifstream in(path, std::ios::binary);
     char head[8] = {};
     if (in.read(head, sizeof head) || in.gcount() > 0) {

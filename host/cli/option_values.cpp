@@ -79,6 +79,11 @@ void refuseStandardOutput(const std::string& option, const std::string& path) {
                      "name a file ('./-' for a file named '-')");
 }
 
+bool endsInSeparator(const std::string& path) {
+  return !path.empty() &&
+         (path.back() == '/' || path.back() == static_cast<char>(std::filesystem::path::preferred_separator));
+}
+
 // "output file 'x.bmp' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name":
 // `what` at `path`, which may be named as any of `which`.
 std::string unnamedWarning(const std::string& what, const std::string& path, FormatsOf which) {
@@ -90,7 +95,7 @@ std::string unnamedWarning(const std::string& what, const std::string& path, For
 // (ends in '/', or is one) or a scene file, whose refusal by the write says so alone.
 bool warnsOfItsName(const std::string& path) {
   std::error_code ec;
-  return !hasImageExtension(path) && path.back() != '/' && !std::filesystem::is_directory(path, ec) &&
+  return !hasImageExtension(path) && !endsInSeparator(path) && !std::filesystem::is_directory(path, ec) &&
          !namedAsSceneFile(path);
 }
 

@@ -32,6 +32,10 @@ double timeValue(const std::string& v);
 // An output named '-': vkrt writes images into files only (its reports go to stdout).
 void refuseStandardOutput(const std::string& option, const std::string& path);
 
+// Whether an output path names a folder by its spelling: it ends in a separator ('/', and on
+// Windows '\\' too), as -o DIR/ does.
+bool endsInSeparator(const std::string& path);
+
 // "output file 'x.bmp' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name":
 // `what` at `path`, which may be named as any of `which`.
 std::string unnamedWarning(const std::string& what, const std::string& path, FormatsOf which);

@@ -7,13 +7,12 @@
 #include <string_view>
 #include <utility>
 
-#include <sys/stat.h>
-
 #include "cli/image_argument.h"
 #include "cli/option_rows.h"
 #include "cli/option_values.h"
 #include "image/crop.h"
 #include "image/image_file.h"
+#include "platform/file_status.h"
 #include "render/techniques.h"
 #include "util/text.h"   // echoed, abbreviated
 #include "util/suggest.h"
@@ -355,15 +354,7 @@ const OptionRow<GradeOptions> kGradeRows[] = {
 // The subcommands, for "did you mean" after a typo.
 constexpr std::string_view kSubcommands[] = {"diff", "merge", "convert", "grade", "view"};
 
-bool exists(const std::string& path) {
-  struct stat st {};
-  return ::stat(path.c_str(), &st) == 0;
-}
-
-bool isDirectory(const std::string& path) {
-  struct stat st {};
-  return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
+bool exists(const std::string& path) { return platform::statusOf(path).found(); }
 
 // `vkrt dif a.png b.png`: a first argument near a subcommand, and no file of that name, is a
 // mistyped subcommand (not a scene file that cannot be opened).
@@ -450,7 +441,7 @@ void refuseCombinations(const R& o, const std::vector<std::string>& scenes) {
     throw UsageError("--compare writes no image (it renders with both backends and compares them): -o " +
                      abbreviated(*o.output) + " does not go with it");
   if (o.request.width > 0 && o.request.scale > 0) throw UsageError("--size and --scale do not go together");
-  if (o.output && o.output->back() != '/' && scenes.size() > 1)
+  if (o.output && !endsInSeparator(*o.output) && scenes.size() > 1)
     throw UsageError("-o " + abbreviated(*o.output) + " names one file, for " + std::to_string(scenes.size()) +
                      " scenes: give a folder (-o DIR/, with the '/') or leave -o out");
 }
@@ -481,7 +472,7 @@ void refuseModeCombinations(const R& o, const std::vector<std::string>& scenes) 
 
 // -o as given: a folder (a trailing '/') or a file.
 void applyOutput(R& o) {
-  if (o.output && o.output->back() == '/') {
+  if (o.output && endsInSeparator(*o.output)) {
     o.request.outputDir = *o.output;
   } else if (o.output) {
     o.request.output = *o.output;
@@ -583,7 +574,7 @@ GradeOptions parseGradeOptions(const std::vector<std::string>& args) {
   o.references = operands[0];
   o.inputs.assign(operands.begin() + 1, operands.end());
   for (const std::string& in : o.inputs)
-    if (std::optional<std::string> kind = imageKind(in); kind && !isDirectory(in))
+    if (std::optional<std::string> kind = imageKind(in); kind && !platform::isDirectory(in))
       throw UsageError("grade: " + abbreviated(in) + " is " + withArticle(*kind) +
                        " image; give the folder that holds the submission's images (or a scene file to render)");
   return o;

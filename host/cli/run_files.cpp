@@ -1,46 +1,22 @@
 // Telling a run's outputs from its inputs (run_files.h).
 #include "cli/run_files.h"
 
-#include <cstdlib>
-#include <filesystem>
-#include <memory>
-
-#include <sys/stat.h>
-
 #include "image/atomic_file.h"
+#include "platform/file_names.h"
 #include "util/text.h"   // abbreviated
 
 namespace vkrt {
-namespace {
-
-// An absolute, link-free name for `path`: realpath() of the file, or of its folder and then
-// its name when the file is not there; the lexically normal absolute path when neither is.
-std::string canonicalName(const std::string& path) {
-  std::unique_ptr<char, decltype(&std::free)> real(::realpath(path.c_str(), nullptr), &std::free);
-  if (real) return real.get();
-  std::filesystem::path p(path);
-  std::filesystem::path dir = p.parent_path().empty() ? std::filesystem::path(".") : p.parent_path();
-  std::unique_ptr<char, decltype(&std::free)> realDir(::realpath(dir.c_str(), nullptr), &std::free);
-  if (realDir) return (std::filesystem::path(realDir.get()) / p.filename()).string();
-  std::error_code ec;
-  std::filesystem::path absolute = std::filesystem::absolute(p, ec);
-  return (ec ? p : absolute).lexically_normal().string();
-}
-
-}  // namespace
 
 bool RunFiles::same(const File& a, const File& b) {
-  if (a.exists && b.exists) return a.device == b.device && a.inode == b.inode;
+  if (a.exists && b.exists) return a.identity == b.identity;
   return a.canonical == b.canonical;
 }
 
 RunFiles::File RunFiles::fileNamed(const std::string& path, const std::string& role) {
-  File f{path, role, canonicalName(path)};
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0) {
+  File f{path, role, platform::canonicalName(path)};
+  if (const platform::FileStatus st = platform::statusOf(path); st.found()) {
     f.exists = true;
-    f.device = static_cast<std::uint64_t>(st.st_dev);
-    f.inode = static_cast<std::uint64_t>(st.st_ino);
+    f.identity = st.identity;
   }
   return f;
 }
@@ -49,7 +25,7 @@ void RunFiles::addInput(const std::string& path, const std::string& role) { inpu
 
 RunFiles::File RunFiles::resolvedOutput(const std::string& path, const std::string& role) const {
   OutputFile out = resolveOutputFile(path);
-  return File{path, role, out.canonical, out.exists, out.device, out.inode};
+  return File{path, role, out.canonical, out.exists, out.identity};
 }
 
 void RunFiles::checkOutput(const std::string& path, const std::string& role) const {

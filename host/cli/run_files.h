@@ -1,8 +1,8 @@
 // The files one run of vkrt reads and writes, checked against each other before anything is
 // rendered or written: an output is never a file the run reads (a scene, the --check
 // reference, diff's images, merge's tiles) nor another output of the run. Files are told
-// apart by what they are (device and inode, or the canonical path of a file not yet
-// there), not by how they are spelt: './a.png', a symbolic link to it, a hard link and a
+// apart by what they are (their identity: device and inode, or Windows' volume and file
+// index; or the canonical path of a file not yet there), not by how they are spelt: './a.png', a symbolic link to it, a hard link and a
 // path through a linked folder are all a.png.
 #pragma once
 
@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "platform/file_status.h"
 #include "util/errors.h"
 
 namespace vkrt {
@@ -33,18 +34,18 @@ class RunFiles {
   // checkOutput, then remembers `path` as an output of the run.
   void addOutput(const std::string& path, const std::string& role);
 
-  // A file as the run knows it. Two are the same when both exist and share device and inode
+  // A file as the run knows it. Two are the same when both exist and share their identity
   // (one file, whatever its names: a hard link, a link's target), or else by their
   // canonical names.
   struct File {
     std::string path, role, canonical;
     bool exists = false;
-    std::uint64_t device = 0, inode = 0;
+    platform::FileIdentity identity{};
   };
   static bool same(const File& a, const File& b);
 
  private:
-  // `path` as it is now: what stat() finds there (device and inode), else its canonical name.
+  // `path` as it is now: the identity of what is there, else its canonical name.
   static File fileNamed(const std::string& path, const std::string& role);
   File resolvedOutput(const std::string& path, const std::string& role) const;
   std::vector<File> inputs_, outputs_;

@@ -4,13 +4,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <mutex>
 #include <set>
 #include <string_view>
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
+#include "platform/file_changes.h"
+#include "platform/file_io.h"
 
 namespace vkrt {
 namespace {
@@ -32,7 +32,7 @@ std::string env(const char* name) {
 
 std::string cacheHome() {
   std::string xdg = env("XDG_CACHE_HOME");
-  if (!xdg.empty() && xdg[0] == '/') return xdg;
+  if (!xdg.empty() && std::filesystem::path(xdg).is_absolute()) return xdg;
   std::string home = env("HOME");
   return home.empty() ? "" : home + "/.cache";
 }
@@ -101,17 +101,17 @@ void recordVariantCompiled(std::uint64_t key) {
   std::lock_guard lock(indexMutex);
   const std::string path = variantIndexPath();
   if (path.empty() || !keys(path).insert(key).second) return;
-  ::mkdir(path.substr(0, path.rfind('/')).c_str(), 0755);
+  platform::makeDirectory(std::filesystem::path(path).parent_path().string(), 0755);
   // One short line by one append: whole even when processes add at once. O_NOFOLLOW: never
   // through a link.
-  const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+  const int fd = platform::openForAppending(path, 0644);
   if (fd < 0) return;
   char line[32];
   const int n = std::snprintf(line, sizeof line, "%016llx\n", static_cast<unsigned long long>(key));
-  if (::write(fd, line, static_cast<std::size_t>(n)) != n) {
+  if (platform::writeSome(fd, line, static_cast<std::size_t>(n)) != n) {
     // (a full disk: the variant is compiled again next time)
   }
-  ::close(fd);
+  platform::closeFile(fd);
 }
 
 }  // namespace vkrt

@@ -10,10 +10,9 @@
 #include <fstream>
 #include <sstream>
 
-#include <sys/stat.h>
-
 #include "util/errors.h"
 #include "grade/grade_inputs.h"
+#include "platform/file_status.h"
 #include "util/text.h"   // echoed, abbreviated
 
 namespace vkrt {
@@ -88,9 +87,9 @@ ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds&
   auto unreadable = [&](int error) {
     return IoError("cannot read the thresholds file '" + abbreviated(path) + "': " + std::strerror(error));
   };
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw unreadable(errno);
-  if (S_ISDIR(st.st_mode)) throw unreadable(EISDIR);
+  const platform::FileStatus st = platform::statusOf(path);
+  if (!st.found()) throw unreadable(st.error);
+  if (st.is(platform::FileKind::Directory)) throw unreadable(EISDIR);
   std::ifstream in(path);
   if (!in) throw unreadable(errno);
   ThresholdTable table;

@@ -1,28 +1,31 @@
-// Atomic file writing: mkstemps beside the target, fsync, rename. Ctrl-C between the two
-// leaves the old file (the temporary file is registered with host/util/interrupt.h, which
-// removes it on a second signal). resolveOutputFile decides, before anything is written,
-// which file a path names and whether vkrt may replace it (atomic_file.h).
+// Atomic file writing: a temporary file beside the target, fsync, rename (host/platform/'s
+// file functions). Ctrl-C between the two leaves the old file (the temporary file is
+// registered with host/util/interrupt.h, which removes it on a second signal).
+// resolveOutputFile decides, before anything is written, which file a path names and whether
+// vkrt may replace it (atomic_file.h).
 #include "image/atomic_file.h"
 
 #include <cctype>
 #include <cerrno>
-#include <climits>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <memory>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "util/errors.h"
 #include "image/image_file.h"
+#include "platform/error_text.h"
+#include "platform/file_changes.h"
+#include "platform/file_io.h"
+#include "platform/file_names.h"
+#include "platform/file_permissions.h"
+#include "platform/file_status.h"
 #include "util/interrupt.h"
 #include "util/text.h"   // abbreviated
 
 namespace vkrt {
 namespace {
+
+using platform::FileKind;
+using platform::FileStatus;
 
 std::string directoryOf(const std::string& path) {
   std::filesystem::path parent = std::filesystem::path(path).parent_path();
@@ -30,45 +33,53 @@ std::string directoryOf(const std::string& path) {
 }
 
 // What a file that is not a regular one is, for messages ("a FIFO").
-const char* kindOf(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-  if (S_ISSOCK(mode)) return "a socket";
-  if (S_ISLNK(mode)) return "a symbolic link";
+const char* kindOf(FileKind kind) {
+  switch (kind) {
+    case FileKind::Directory: return "a directory";
+    case FileKind::CharacterDevice: return "a character device";
+    case FileKind::BlockDevice: return "a block device";
+    case FileKind::Fifo: return "a FIFO (named pipe)";
+    case FileKind::Socket: return "a socket";
+    case FileKind::SymbolicLink: return "a symbolic link";
+    case FileKind::Regular:
+    case FileKind::Other: break;
+  }
   return "not a regular file";
+}
+
+// What a file is, for messages ("a regular file", "a FIFO (named pipe)").
+std::string whatItIs(FileKind kind) {
+  return kind == FileKind::Regular ? std::string("a regular file") : kindOf(kind);
 }
 
 // The text of the symbolic link `path`.
 std::string readLink(const std::string& path, const std::string& name) {
-  std::string buf(PATH_MAX, '\0');
-  ssize_t n = ::readlink(path.c_str(), buf.data(), buf.size());
-  if (n < 0) throw IoError("cannot write '" + name + "': cannot read the symbolic link '" + abbreviated(path) +
+  std::optional<std::string> text = platform::readSymbolicLink(path);
+  if (!text) throw IoError("cannot write '" + name + "': cannot read the symbolic link '" + abbreviated(path) +
                            "': " + std::strerror(errno));
-  buf.resize(static_cast<std::size_t>(n));
-  return buf;
+  return *text;
 }
 
 // The folder `dir` must exist and be a folder; says which part of it is not.
 void checkDirectory(const std::string& dir, const std::string& name) {
-  struct stat st {};
-  if (::stat(dir.c_str(), &st) == 0) {
-    if (!S_ISDIR(st.st_mode))
-      throw IoError("output directory '" + abbreviated(dir) + "' is not a directory: it is " +
-                    (S_ISREG(st.st_mode) ? std::string("a regular file") : kindOf(st.st_mode)) + " (output '" +
-                    name + "')");
+  const FileStatus st = platform::statusOf(dir);
+  if (st.found()) {
+    if (st.kind != FileKind::Directory)
+      throw IoError("output directory '" + abbreviated(dir) + "' is not a directory: it is " + whatItIs(st.kind) +
+                    " (output '" + name + "')");
     return;
   }
-  const int error = errno;
-  if (error == ENOTDIR) {   // a file on the way: name the first one
+  const int error = st.error;
+  // A file on the way: name the first one. (Windows says ENOENT where POSIX says ENOTDIR;
+  // where POSIX says ENOENT, every folder on the way that is there is a folder.)
+  if (error == ENOTDIR || error == ENOENT) {
     std::filesystem::path prefix;
     for (const auto& part : std::filesystem::path(dir)) {
       prefix /= part;
-      if (::stat(prefix.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+      const FileStatus on = platform::statusOf(prefix.string());
+      if (on.found() && on.kind != FileKind::Directory)
         throw IoError("output directory '" + abbreviated(dir) + "' cannot exist: '" + abbreviated(prefix.string()) +
-                      "' is " + (S_ISREG(st.st_mode) ? std::string("a regular file") : kindOf(st.st_mode)) +
-                      ", not a directory");
+                      "' is " + whatItIs(on.kind) + ", not a directory");
     }
   }
   if (error == ENOENT || error == ENOTDIR) throw IoError("output directory '" + abbreviated(dir) + "' does not exist");
@@ -83,32 +94,35 @@ OutputFile resolveOutputFile(const std::string& path) {
   OutputFile out;
   out.target = path;
   // Follow the symbolic links at the end of the path: the file written is where they lead.
-  struct stat st {};
+  FileStatus st;
   int hops = 0;
   for (;; ++hops) {
-    if (::lstat(out.target.c_str(), &st) != 0) {
-      if (errno == ENOENT || errno == ENOTDIR) break;   // a new file (its folder is checked below)
-      throw IoError("cannot write '" + name + "': " + std::strerror(errno));
+    st = platform::linkStatusOf(out.target);
+    if (!st.found()) {
+      if (st.error == ENOENT || st.error == ENOTDIR) break;   // a new file (its folder is checked below)
+      throw IoError("cannot write '" + name + "': " + std::strerror(st.error));
     }
-    if (!S_ISLNK(st.st_mode)) {
+    if (st.kind != FileKind::SymbolicLink) {
       out.exists = true;
       break;
     }
     if (hops == 40) throw IoError("cannot write '" + name + "': " + std::strerror(ELOOP));
     std::string link = readLink(out.target, name);
-    out.target = link.front() == '/' ? link : (std::filesystem::path(directoryOf(out.target)) / link).string();
+    out.target = std::filesystem::path(link).has_root_path()
+                     ? link
+                     : (std::filesystem::path(directoryOf(out.target)) / link).string();
   }
   const std::string described =
       "'" + name + "'" + (hops > 0 ? " (a symbolic link to '" + abbreviated(out.target) + "')" : std::string());
   // A link whose text names no file, though the system follows it (/dev/stdout, /proc/self/fd/N).
-  struct stat followed {};
-  if (!out.exists && hops > 0 && ::stat(path.c_str(), &followed) == 0) {
-    if (!S_ISREG(followed.st_mode))
-      throw IoError("cannot write " + described + ": it is " + kindOf(followed.st_mode) +
-                    "; vkrt writes images only into regular files");
-    throw IoError("cannot write " + described + ": the link leads to a file that has no name vkrt can replace; "
-                  "give the file's own name");
-  }
+  if (!out.exists && hops > 0)
+    if (const FileStatus followed = platform::statusOf(path); followed.found()) {
+      if (followed.kind != FileKind::Regular)
+        throw IoError("cannot write " + described + ": it is " + kindOf(followed.kind) +
+                      "; vkrt writes images only into regular files");
+      throw IoError("cannot write " + described + ": the link leads to a file that has no name vkrt can replace; "
+                    "give the file's own name");
+    }
   std::string file = std::filesystem::path(out.target).filename().string();
   if (file.empty() || file == "." || file == "..")
     throw IoError("output path " + described + " names a directory, not a file");
@@ -121,29 +135,28 @@ OutputFile resolveOutputFile(const std::string& path) {
   const std::string dir = directoryOf(out.target);
   checkDirectory(dir, name);
   if (out.exists) {
-    if (S_ISDIR(st.st_mode)) throw IoError("output path " + described + " is a directory");
-    if (!S_ISREG(st.st_mode))
-      throw IoError("cannot write " + described + ": it is " + kindOf(st.st_mode) +
+    if (st.kind == FileKind::Directory) throw IoError("output path " + described + " is a directory");
+    if (st.kind != FileKind::Regular)
+      throw IoError("cannot write " + described + ": it is " + kindOf(st.kind) +
                     "; vkrt writes images only into regular files, and never replaces anything else");
-    if (st.st_nlink > 1)
-      throw IoError("cannot replace " + described + ": it has " + std::to_string(st.st_nlink) +
+    if (st.links > 1)
+      throw IoError("cannot replace " + described + ": it has " + std::to_string(st.links) +
                     " names (hard links), and vkrt writes a new file and renames it over the old one, which "
                     "would leave the other names with the old image; remove the other links or write elsewhere");
-    out.device = static_cast<std::uint64_t>(st.st_dev);
-    out.inode = static_cast<std::uint64_t>(st.st_ino);
-    out.mode = static_cast<unsigned>(st.st_mode & 07777);
-    out.uid = static_cast<unsigned>(st.st_uid);
-    out.gid = static_cast<unsigned>(st.st_gid);
+    out.identity = st.identity;
+    out.mode = st.mode & 07777;
+    out.uid = st.uid;
+    out.gid = st.gid;
   }
-  std::unique_ptr<char, decltype(&std::free)> real(::realpath(dir.c_str(), nullptr), &std::free);
+  const std::optional<std::string> real = platform::realPath(dir);
   if (!real) throw IoError("output directory '" + abbreviated(dir) + "': " + std::strerror(errno));
-  out.canonical = (std::filesystem::path(real.get()) / file).string();
+  out.canonical = (std::filesystem::path(*real) / file).string();
   return out;
 }
 
 void writeAll(int fd, const std::uint8_t* data, std::size_t size, const std::string& path) {
   while (size > 0) {
-    ssize_t n = ::write(fd, data, size);
+    const std::int64_t n = platform::writeSome(fd, data, size);
     if (n < 0) {
       if (errno == EINTR) continue;
       throw IoError("cannot write '" + abbreviated(path) + "': " + std::strerror(errno));
@@ -155,7 +168,7 @@ void writeAll(int fd, const std::uint8_t* data, std::size_t size, const std::str
 
 void writeAllAt(int fd, const std::uint8_t* data, std::size_t size, std::uint64_t offset, const std::string& path) {
   while (size > 0) {
-    ssize_t n = ::pwrite(fd, data, size, static_cast<off_t>(offset));
+    const std::int64_t n = platform::writeSomeAt(fd, data, size, offset);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) throw IoError("cannot write '" + path + "': " + (n < 0 ? std::strerror(errno) : "no progress"));
     data += n;
@@ -166,17 +179,17 @@ void writeAllAt(int fd, const std::uint8_t* data, std::size_t size, std::uint64_
 
 void checkOutputWritable(const std::string& path) {
   OutputFile out = resolveOutputFile(path);
-  if (out.exists && ::access(out.target.c_str(), W_OK) != 0)
+  if (out.exists && !platform::isWritable(out.target))
     throw IoError("output file '" + abbreviated(out.target) + "' is not writable: " + std::strerror(errno));
   // Creating a file is the only reliable test (permissions, read-only mounts, root).
   std::string dir = directoryOf(out.target);
   std::string probe = (std::filesystem::path(dir) / ".vkrt-XXXXXX.probe").string();
-  int fd = ::mkstemps(probe.data(), 6);
+  const int fd = platform::createTemporaryFile(probe, 6);
   if (fd < 0)
     throw IoError("output directory '" + abbreviated(dir) + "' is not writable: " + std::strerror(errno));
   registerTemporaryFile(probe.c_str());
-  ::close(fd);
-  ::unlink(probe.c_str());
+  platform::closeFile(fd);
+  platform::removeFile(probe);
   registerTemporaryFile(nullptr);
 }
 
@@ -185,37 +198,35 @@ void writeFileAtomic(const std::string& path, const char* suffix, const std::fun
   const std::string name = abbreviated(path);
   const std::string dir = directoryOf(out.target);
   std::string tmpl = (std::filesystem::path(dir) / (std::string(".vkrt-XXXXXX") + suffix)).string();
-  int fd = ::mkstemps(tmpl.data(), static_cast<int>(std::strlen(suffix)));
+  int fd = platform::createTemporaryFile(tmpl, std::strlen(suffix));
   if (fd < 0) throw IoError("cannot create a temporary file in '" + abbreviated(dir) + "': " + std::strerror(errno));
   registerTemporaryFile(tmpl.c_str());
   try {
     if (out.exists) {
       // The new file takes the old one's place: its permissions, and for root its owner
       // (chown first: it clears the set-user-ID bits that chmod then restores).
-      if (::geteuid() == 0 && ::fchown(fd, static_cast<uid_t>(out.uid), static_cast<gid_t>(out.gid)) != 0)
+      if (platform::changesOwners() && platform::setOpenOwner(fd, out.uid, out.gid) != 0)
         throw IoError("cannot write '" + name + "': cannot give the new file the old one's owner: " +
                       std::strerror(errno));
-      if (::fchmod(fd, static_cast<mode_t>(out.mode)) != 0)
+      if (platform::setOpenMode(fd, out.mode) != 0)
         throw IoError("cannot write '" + name + "': cannot give the new file the old one's permissions: " +
                       std::strerror(errno));
     } else {
       // The permissions a plain create would give it (mkstemp makes it 0600).
-      mode_t mask = ::umask(0);
-      ::umask(mask);
-      ::fchmod(fd, 0666 & ~mask);
+      platform::setOpenMode(fd, 0666 & ~platform::creationMask());
     }
     waitForSignalIfTesting("write");
     write(fd);
-    if (::fsync(fd) != 0 && errno != EINVAL) throw IoError("cannot write '" + name + "': " + std::strerror(errno));
-    int closed = ::close(fd);
+    if (platform::syncFile(fd) != 0 && errno != EINVAL) throw IoError("cannot write '" + name + "': " + std::strerror(errno));
+    const int closed = platform::closeFile(fd);
     fd = -1;
     if (closed != 0) throw IoError("cannot write '" + name + "': " + std::strerror(errno));
     throwIfInterrupted();   // the last moment at which the old file is still there
-    if (::rename(tmpl.c_str(), out.target.c_str()) != 0)
-      throw IoError("cannot write '" + name + "': " + std::strerror(errno));
+    if (platform::replaceFile(tmpl, out.target) != 0)
+      throw IoError("cannot write '" + name + "': " + platform::errorText(errno));
   } catch (...) {
-    if (fd >= 0) ::close(fd);
-    ::unlink(tmpl.c_str());
+    if (fd >= 0) platform::closeFile(fd);
+    platform::removeFile(tmpl);
     registerTemporaryFile(nullptr);
     throw;
   }

@@ -1,6 +1,6 @@
 // Writing a file whole or not at all (temporary file beside the target, then rename), for
 // every image format, and the one place that decides what an output path names on the file
-// system. Depends on nothing but errors.h and interrupt.h.
+// system. Depends on nothing but errors.h, interrupt.h and the platform layer's file functions.
 //
 // What writing an output does to the user's files:
 //  - a symbolic link is followed (through every link) and its target replaced; the link
@@ -17,6 +17,8 @@
 #include <functional>
 #include <string>
 
+#include "platform/file_status.h"
+
 namespace vkrt {
 
 // An output path resolved: the file that writing it creates or replaces.
@@ -24,7 +26,7 @@ struct OutputFile {
   std::string target;      // `path`, or where its symbolic links lead
   std::string canonical;   // target as an absolute path without links, '.' or '..': one name per file
   bool exists = false;     // then the fields below are the existing file's
-  std::uint64_t device = 0, inode = 0;
+  platform::FileIdentity identity{};
   unsigned mode = 0;       // permission bits (07777)
   unsigned uid = 0, gid = 0;
 };

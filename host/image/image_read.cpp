@@ -1,26 +1,15 @@
 // Any image as bytes or as radiance, and the conversion between formats.
 #include "image/image_read.h"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "util/errors.h"
 #include "image/encode.h"
 #include "image/samples.h"
+#include "platform/file_status.h"
 
 namespace vkrt {
-namespace {
-
-// Only a regular file is looked into before it is read: the bytes of a FIFO can be read once,
-// and a read that waits on one must stay where a signal stops it (stb's).
-bool isRegularFile(const std::string& path) {
-  struct stat st {};
-  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
-
-}  // namespace
 
 double recordedGamma(const ImageRecords& records) {
   std::optional<SampleRecord> record = sampleRecordOf(records);
@@ -29,7 +18,9 @@ double recordedGamma(const ImageRecords& records) {
 
 AnyImage readAnyImage(const std::string& path) {
   AnyImage image;
-  const bool regular = isRegularFile(path);
+  // Only a regular file is looked into before it is read: the bytes of a FIFO can be read
+  // once, and a read that waits on one must stay where a signal stops it (stb's).
+  const bool regular = platform::isRegularFile(path);
   if (regular && isFloatImageFile(path)) {
     image.radiance = readFloatImage(path);
     return image;

@@ -18,8 +18,8 @@
 #include "image/image_file.h"
 #include "image/render_identity.h"
 #include "image/row_sink.h"
+#include "platform/file_status.h"
 
-#include <sys/stat.h>
 
 namespace vkrt {
 namespace {
@@ -328,10 +328,10 @@ void writeMergedCrops(const std::vector<std::string>& tilePaths, bool allowGaps,
 
 void checkMergeInputsAreFiles(const std::vector<std::string>& paths) {
   for (const std::string& path : paths) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) throw imageReadError(path, std::strerror(errno));
-    if (S_ISDIR(st.st_mode)) throw imageReadError(path, std::strerror(EISDIR));
-    if (!S_ISREG(st.st_mode))
+    const platform::FileStatus st = platform::statusOf(path);
+    if (!st.found()) throw imageReadError(path, std::strerror(st.error));
+    if (st.is(platform::FileKind::Directory)) throw imageReadError(path, std::strerror(EISDIR));
+    if (!st.is(platform::FileKind::Regular))
       throw imageReadError(path, "it is not a regular file (a pipe, FIFO or device), and merge reads each input more "
                                  "than once (its records first, then its pixels); save it to a file first");
   }

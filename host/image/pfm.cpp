@@ -10,8 +10,6 @@
 #include <fstream>
 #include <limits>
 
-#include <unistd.h>
-
 #include "util/errors.h"
 #include "image/atomic_file.h"
 #include "util/interrupt.h"

@@ -13,12 +13,12 @@
 #include <memory>
 #include <vector>
 
-#include <sys/mman.h>
-#include <unistd.h>
 #include <zlib.h>
 
 #include "image/atomic_file.h"
 #include "image/encode.h"
+#include "platform/file_io.h"
+#include "platform/file_status.h"
 #include "util/interrupt.h"
 
 namespace vkrt {
@@ -184,10 +184,10 @@ void writePngAtomic(const RadianceImage& image, double gamma, const std::string&
 }
 
 std::string pngBytes(const RadianceImage& image, double gamma) {
-  const int fd = ::memfd_create("vkrt-png", MFD_CLOEXEC);
+  const int fd = platform::openMemoryFile();
   if (fd < 0) throw IoError(std::string("cannot encode a PNG in memory: ") + std::strerror(errno));
   std::unique_ptr<int, void (*)(int*)> closer(new int(fd), [](int* f) {
-    ::close(*f);
+    platform::closeFile(*f);
     delete f;
   });
   const std::string name = "(a PNG in memory)";
@@ -198,9 +198,10 @@ std::string pngBytes(const RadianceImage& image, double gamma) {
     png.row(bytes.data());
   }
   png.finish();
-  const off_t size = ::lseek(fd, 0, SEEK_END);
-  std::string out(static_cast<std::size_t>(size < 0 ? 0 : size), '\0');
-  if (size < 0 || ::pread(fd, out.data(), out.size(), 0) != size)
+  const platform::FileStatus st = platform::statusOfOpen(fd);
+  if (!st.found()) errno = st.error;
+  std::string out(static_cast<std::size_t>(st.size), '\0');
+  if (!st.found() || platform::readSomeAt(fd, out.data(), out.size(), 0) != static_cast<std::int64_t>(st.size))
     throw IoError(std::string("cannot read back a PNG encoded in memory: ") + std::strerror(errno));
   return out;
 }

@@ -5,7 +5,6 @@
 // below 255, so vkrt reads them itself).
 #include "image/ppm.h"
 
-#include <sys/stat.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -15,6 +14,7 @@
 
 #include "util/errors.h"
 #include "image/atomic_file.h"
+#include "platform/file_status.h"
 #include "util/interrupt.h"
 
 namespace vkrt {
@@ -140,11 +140,11 @@ void checkHeader(const NetpbmHeader& h, const std::string& path) {
 // A regular file's raster must be all there, checked before it is allocated (a header may
 // claim a billion pixels); a FIFO's ends where it ends, found as it is read.
 void checkRasterIsThere(std::FILE* in, const NetpbmHeader& h, const std::string& path) {
-  struct stat st {};
   const long at = std::ftell(in);
-  if (::fstat(fileno(in), &st) != 0 || !S_ISREG(st.st_mode) || at < 0) return;
+  const platform::FileStatus st = platform::statusOfOpen(in);
+  if (!st.is(platform::FileKind::Regular) || at < 0) return;
   const std::uint64_t raster = h.rowBytes() * h.height;
-  if (static_cast<std::uint64_t>(at) + raster > static_cast<std::uint64_t>(st.st_size))
+  if (static_cast<std::uint64_t>(at) + raster > st.size)
     throw imageReadError(path, "the PPM raster is truncated (" + std::to_string(h.width) + "x" +
                          std::to_string(h.height) + " pixels need " + std::to_string(raster) + " bytes)");
 }

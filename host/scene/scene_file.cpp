@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
+#include "platform/file_io.h"
+#include "platform/file_status.h"
 #include "util/errors.h"
 #include "util/interrupt.h"
 #include "scene/diagnostic.h"
@@ -20,7 +19,7 @@ namespace {
 struct FileDescriptor {
   int fd = -1;
   ~FileDescriptor() {
-    if (fd >= 0) ::close(fd);
+    if (fd >= 0) platform::closeFile(fd);
   }
 };
 
@@ -30,7 +29,8 @@ SceneError readLimitError(const std::string& path, int line, std::string message
 
 }  // namespace
 
-// The text of the scene file `path`, read with read(2) in chunks of at most a mebibyte:
+// The text of the scene file `path`, read with read(2) (in binary: a CRLF file's text keeps its
+// CRs, which the tokenizer takes as blanks) in chunks of at most a mebibyte:
 //  - a signal that interrupts an open or a read (Ctrl-C while a FIFO waits for its writer)
 //    ends it as Interrupted (interrupt.h), where vkrt's handler caught it; any other
 //    interruption is retried;
@@ -42,20 +42,21 @@ SceneError readLimitError(const std::string& path, int line, std::string message
 std::string readSceneText(const std::string& path) {
   const std::string name = abbreviated(path);
   FileDescriptor file;
-  while ((file.fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC)) < 0) {
+  while ((file.fd = platform::openForReading(path)) < 0) {
     if (errno != EINTR) throw IoError("cannot open scene file '" + name + "': " + std::strerror(errno));
     throwIfInterrupted();
   }
-  struct stat st {};
-  if (::fstat(file.fd, &st) != 0) throw IoError("cannot read scene file '" + name + "': " + std::strerror(errno));
-  if (S_ISDIR(st.st_mode)) throw IoError("cannot read scene file '" + name + "': " + std::strerror(EISDIR));
+  const platform::FileStatus st = platform::statusOfOpen(file.fd);
+  if (!st.found()) throw IoError("cannot read scene file '" + name + "': " + std::strerror(st.error));
+  if (st.is(platform::FileKind::Directory))
+    throw IoError("cannot read scene file '" + name + "': " + std::strerror(EISDIR));
   std::string text;
-  if (S_ISREG(st.st_mode)) {
-    if (static_cast<unsigned long long>(st.st_size) > kMaxSceneFileBytes)
+  if (st.is(platform::FileKind::Regular)) {
+    if (st.size > kMaxSceneFileBytes)
       throw readLimitError(path, 0,
-                           "the file is " + std::to_string(st.st_size) + " bytes, more than the " +
+                           "the file is " + std::to_string(st.size) + " bytes, more than the " +
                                std::to_string(kMaxSceneFileBytes) + " (1 GiB) a scene file may hold");
-    text.reserve(static_cast<std::size_t>(st.st_size));   // one buffer of its size: no regrowth, no copies
+    text.reserve(static_cast<std::size_t>(st.size));   // one buffer of its size: no regrowth, no copies
   }
   constexpr std::size_t kChunk = std::size_t{1} << 20;
   std::size_t scanned = 0, lineStart = 0;
@@ -65,15 +66,15 @@ std::string readSceneText(const std::string& path) {
     throwIfInterrupted();
     const std::size_t size = text.size();
     const std::size_t room = std::min(text.capacity() - size, kChunk);
-    ssize_t n = 0;
+    std::int64_t n = 0;
     int readError = 0;
     if (room > 0) {
       text.resize(size + room);
-      n = ::read(file.fd, text.data() + size, room);
+      n = platform::readSome(file.fd, text.data() + size, room);
       readError = errno;
-      text.resize(size + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
+      text.resize(size + static_cast<std::size_t>(std::max<std::int64_t>(n, 0)));
     } else {
-      n = ::read(file.fd, probe, sizeof probe);
+      n = platform::readSome(file.fd, probe, sizeof probe);
       readError = errno;
       if (n > 0) {
         // A stream (or a file that grew): grow by doubling, never much past the limit.

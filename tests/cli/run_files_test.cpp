@@ -10,8 +10,7 @@ namespace {
 RunFiles::File existing(const std::string& name, std::uint64_t device, std::uint64_t inode) {
   RunFiles::File f{name, "a file", "/c/" + name};
   f.exists = true;
-  f.device = device;
-  f.inode = inode;
+  f.identity = {device, inode};
   return f;
 }
 
