@@ -1,8 +1,6 @@
 // vkrt view: view_scene.h.
 #include "cli/view_scene.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <optional>
 
@@ -10,6 +8,7 @@
 #include "cli/web_view.h"
 #include "image/image_file.h"
 #include "net/http_server.h"
+#include "platform/socket.h"
 
 namespace vkrt {
 
@@ -33,8 +32,7 @@ int viewScene(RenderOptions& options) {
   // Listening on every address (--bind 0.0.0.0): the address others reach is the machine's name.
   std::string host = server.urlHost();
   if (host == "0.0.0.0" || host == "[::]") {
-    char name[256] = "";
-    if (::gethostname(name, sizeof name - 1) == 0 && name[0]) host = name;
+    if (std::string name = platform::hostName(); !name.empty()) host = name;
   }
   const std::string url = "http://" + host + ":" + std::to_string(server.port()) + "/?t=" + view.token();
   std::printf("%s\n", url.c_str());

@@ -1,21 +1,12 @@
 // The server's loop: http_server.h.
 #include "net/http_server.h"
 
-#include <arpa/inet.h>
-#include <fcntl.h>
-#include <netdb.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <sys/resource.h>
-#include <sys/socket.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <memory>
 #include <vector>
 
+#include "platform/socket.h"
+#include "platform/thread_priority.h"
 #include "util/errors.h"
 
 namespace vkrt {
@@ -59,10 +50,8 @@ HttpResponse errorResponse(int status, const std::string& reason) {
   return r;
 }
 
-void setNonBlocking(int fd) { ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK); }
-
 struct Connection {
-  int fd = -1;
+  platform::Socket socket;
   // Draining: the response sent and the socket shut for writing; what the browser still
   // sends is read and dropped until it closes (closing at once could reset the connection
   // before the browser has read a refusal).
@@ -75,9 +64,6 @@ struct Connection {
   Clock::time_point opened, moved;   // accepted; output last moved (or a stream's last event)
   bool closing = false;
   bool eof = false;   // the browser has closed its side: nothing more to read
-  ~Connection() {
-    if (fd >= 0) ::close(fd);
-  }
   bool pending() const { return sent < out.size() || (body && bodySent < body->size()); }
   void queue(std::string bytes) {
     if (!pending()) out.clear(), sent = 0, body.reset(), bodySent = 0;
@@ -91,9 +77,9 @@ bool flush(Connection& c) {
     const bool head = c.sent < c.out.size();
     const char* from = head ? c.out.data() + c.sent : c.body->data() + c.bodySent;
     const std::size_t left = head ? c.out.size() - c.sent : c.body->size() - c.bodySent;
-    const ssize_t n = ::send(c.fd, from, left, MSG_NOSIGNAL);
-    if (n < 0) return errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR;
-    (head ? c.sent : c.bodySent) += static_cast<std::size_t>(n);
+    const platform::Transfer sent = c.socket.send(from, left);
+    if (sent.failed()) return sent.wouldBlock();
+    (head ? c.sent : c.bodySent) += static_cast<std::size_t>(sent.bytes);
     c.moved = Clock::now();
   }
   return true;
@@ -103,18 +89,18 @@ bool flush(Connection& c) {
 // stream's or a finished request's further bytes are read and dropped.
 void receiveFrom(Connection& c, HttpSite& site, Clock::time_point now) {
   char buffer[4096];
-  const ssize_t n = ::recv(c.fd, buffer, sizeof buffer, 0);
-  if (n == 0) {
+  const platform::Transfer received = c.socket.receive(buffer, sizeof buffer);
+  if (received.bytes == 0) {
     c.eof = true;   // a response being written is finished first; anything else ends here
     if (c.state != Connection::Writing) c.closing = true;
     return;
   }
-  if (n < 0) {
-    if (errno != EAGAIN && errno != EINTR) c.closing = true;   // the browser went away
+  if (received.failed()) {
+    if (!received.wouldBlock()) c.closing = true;   // the browser went away
     return;
   }
   if (c.state != Connection::Reading) return;
-  c.in.append(buffer, static_cast<std::size_t>(n));
+  c.in.append(buffer, static_cast<std::size_t>(received.bytes));
   const HeadParse head = parseRequestHead(c.in);
   if (head.kind == HeadParse::Incomplete) return;
   HttpResponse r = head.kind == HeadParse::Refused   ? errorResponse(head.status, head.reason)
@@ -139,7 +125,7 @@ void sendTo(Connection& c, HttpSite& site, Clock::time_point now) {
     if (!flush(c)) c.closing = true;
   }
   if (!c.closing && c.state == Connection::Writing && !c.pending()) {
-    ::shutdown(c.fd, SHUT_WR);
+    c.socket.shutdownSending();
     c.state = Connection::Draining;
     c.moved = now;
     if (c.eof) c.closing = true;   // the browser closed its side already: nothing to drain
@@ -159,12 +145,14 @@ void refuse(Connection& c) {
 // Every connection waiting to be taken. Past kMaxConnections, a new one replaces the oldest
 // connection still waiting for its request, or is refused. Returns false when no more can be
 // taken for now (the process is out of file descriptors): the caller waits before trying again.
-bool acceptWaiting(int listening, std::vector<std::unique_ptr<Connection>>& connections, Clock::time_point now) {
+bool acceptWaiting(const platform::Socket& listening, std::vector<std::unique_ptr<Connection>>& connections,
+                   Clock::time_point now) {
   for (;;) {
-    const int fd = ::accept4(listening, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
-    if (fd < 0) return errno != EMFILE && errno != ENFILE && errno != ENOBUFS && errno != ENOMEM;
+    int error = 0;
+    platform::Socket accepted = platform::acceptConnection(listening, error);
+    if (!accepted.valid()) return !platform::isOutOfResources(error);
     auto c = std::make_unique<Connection>();
-    c->fd = fd;
+    c->socket = std::move(accepted);
     c->opened = c->moved = now;
     if (connections.size() >= static_cast<std::size_t>(kMaxConnections)) {
       Connection* oldest = nullptr;
@@ -183,60 +171,28 @@ bool acceptWaiting(int listening, std::vector<std::unique_ptr<Connection>>& conn
 }
 
 // The listening socket on host:port, and the host as a URL writes it.
-int listenOn(const std::string& host, int port, std::string& urlHost) {
-  addrinfo hints{};
-  hints.ai_family = AF_UNSPEC;
-  hints.ai_socktype = SOCK_STREAM;
-  hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
-  addrinfo* found = nullptr;
+platform::Socket listenOn(const std::string& host, int port, std::string& urlHost) {
   const std::string name = host.empty() ? "127.0.0.1" : host;
-  if (int e = ::getaddrinfo(name.c_str(), std::to_string(port).c_str(), &hints, &found); e != 0)
-    throw IoError("cannot listen on '" + name + "': " + ::gai_strerror(e));
-  std::unique_ptr<addrinfo, void (*)(addrinfo*)> list(found, ::freeaddrinfo);
-  int lastErrno = 0;
-  for (addrinfo* a = found; a; a = a->ai_next) {
-    const int fd = ::socket(a->ai_family, a->ai_socktype | SOCK_CLOEXEC, a->ai_protocol);
-    if (fd < 0) {
-      lastErrno = errno;
-      continue;
-    }
-    const int one = 1;
-    ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-    if (::bind(fd, a->ai_addr, a->ai_addrlen) == 0 && ::listen(fd, 16) == 0) {
-      char text[INET6_ADDRSTRLEN] = "";
-      const void* address = a->ai_family == AF_INET6
-                                ? static_cast<const void*>(&reinterpret_cast<sockaddr_in6*>(a->ai_addr)->sin6_addr)
-                                : static_cast<const void*>(&reinterpret_cast<sockaddr_in*>(a->ai_addr)->sin_addr);
-      ::inet_ntop(a->ai_family, address, text, sizeof text);
-      urlHost = a->ai_family == AF_INET6 ? "[" + std::string(text) + "]" : std::string(text);
-      return fd;
-    }
-    lastErrno = errno;
-    ::close(fd);
-  }
-  throw IoError("cannot listen on " + name + " port " + std::to_string(port) + ": " + std::strerror(lastErrno));
-}
-
-int boundPort(int fd) {
-  sockaddr_storage address{};
-  socklen_t length = sizeof address;
-  ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length);
-  return ntohs(address.ss_family == AF_INET6 ? reinterpret_cast<sockaddr_in6*>(&address)->sin6_port
-                                             : reinterpret_cast<sockaddr_in*>(&address)->sin_port);
+  platform::SocketFailure failure;
+  platform::Socket s = platform::listenTcp(name, port, 16, failure);
+  if (!s.valid() && failure.resolving) throw IoError("cannot listen on '" + name + "': " + failure.text);
+  if (!s.valid()) throw IoError("cannot listen on " + name + " port " + std::to_string(port) + ": " + failure.text);
+  const platform::Socket::Name bound = s.localName();
+  urlHost = bound.ipv6 ? "[" + bound.host + "]" : bound.host;
+  return s;
 }
 
 }  // namespace
 
 HttpServer::HttpServer(const std::string& host, int port, HttpSite& site) : site_(site) {
   listen_ = listenOn(host, port, urlHost_);
-  setNonBlocking(listen_);
-  port_ = boundPort(listen_);
-  int pipe[2];
-  if (::pipe2(pipe, O_CLOEXEC | O_NONBLOCK) != 0) {
-    ::close(listen_);
-    throw IoError(std::string("cannot make the server's wake-up pipe: ") + std::strerror(errno));
+  listen_.setNonBlocking(true);
+  port_ = listen_.localName().port;
+  try {
+    wake_ = std::make_unique<platform::PollWaker>();
+  } catch (const std::exception& e) {
+    throw IoError(std::string("cannot make the server's wake-up pipe: ") + e.what());
   }
-  wakeRead_ = pipe[0], wakeWrite_ = pipe[1];
   thread_ = std::thread([this] { run(); });
 }
 
@@ -244,41 +200,37 @@ HttpServer::~HttpServer() {
   stopping_ = true;
   notify();
   thread_.join();
-  ::close(listen_);
-  ::close(wakeRead_);
-  ::close(wakeWrite_);
 }
 
-void HttpServer::notify() {
-  const char byte = 1;
-  [[maybe_unused]] ssize_t n = ::write(wakeWrite_, &byte, 1);   // full: a wake-up is pending anyway
-}
+void HttpServer::notify() { wake_->notify(); }
 
 void HttpServer::run() {
-  ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 10);   // this thread only (Linux); failure: as it was
+  platform::lowerThisThreadsPriority();
   std::vector<std::unique_ptr<Connection>> connections;
-  std::vector<pollfd> polled;
+  std::vector<platform::PollItem> polled;
   Clock::time_point acceptAgain;   // out of file descriptors: the listening socket rests until then
   while (!stopping_) {
     const bool resting = Clock::now() < acceptAgain;
-    polled.assign({{listen_, static_cast<short>(resting ? 0 : POLLIN), 0}, {wakeRead_, POLLIN, 0}});
-    for (const auto& c : connections)
-      polled.push_back({c->fd, static_cast<short>((c->eof ? 0 : POLLIN) | (c->pending() ? POLLOUT : 0)), 0});
-    if (::poll(polled.data(), polled.size(), resting ? 100 : 1000) < 0 && errno != EINTR) break;
-    const Clock::time_point now = Clock::now();
-    if (polled[1].revents & POLLIN) {
-      char drain[64];
-      while (::read(wakeRead_, drain, sizeof drain) > 0) {
-      }
+    polled.assign(2, {});
+    polled[0].handle = listen_.native(), polled[0].wantRead = !resting;
+    polled[1].handle = wake_->handle(), polled[1].wantRead = true;
+    for (const auto& c : connections) {
+      platform::PollItem& item = polled.emplace_back();
+      item.handle = c->socket.native(), item.wantRead = !c->eof, item.wantWrite = c->pending();
     }
+    int error = 0;
+    if (platform::pollSockets(polled, resting ? 100 : 1000, error) < 0) break;
+    const Clock::time_point now = Clock::now();
+    if (polled[1].readable) wake_->drain();
     for (std::size_t i = 0; i < connections.size(); ++i) {
       Connection& c = *connections[i];
-      if (polled[i + 2].revents & (POLLERR | POLLNVAL)) c.closing = true;
-      if (!c.closing && !c.eof && (polled[i + 2].revents & (POLLIN | POLLHUP))) receiveFrom(c, site_, now);
+      const platform::PollItem& item = polled[i + 2];
+      if (item.failed) c.closing = true;
+      if (!c.closing && !c.eof && (item.readable || item.hangup)) receiveFrom(c, site_, now);
       sendTo(c, site_, now);
     }
     std::erase_if(connections, [](const auto& c) { return c->closing; });
-    if ((polled[0].revents & POLLIN) && !acceptWaiting(listen_, connections, now))
+    if (polled[0].readable && !acceptWaiting(listen_, connections, now))
       acceptAgain = now + std::chrono::milliseconds(100);
   }
 }

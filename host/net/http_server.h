@@ -21,6 +21,7 @@
 #include <thread>
 
 #include "net/http_request.h"
+#include "platform/socket.h"
 
 namespace vkrt {
 
@@ -69,7 +70,9 @@ class HttpServer {
   void run();
 
   HttpSite& site_;
-  int listen_ = -1, wakeRead_ = -1, wakeWrite_ = -1, port_ = 0;
+  platform::Socket listen_;
+  std::unique_ptr<platform::PollWaker> wake_;
+  int port_ = 0;
   std::string urlHost_;
   std::atomic<bool> stopping_{false};
   std::thread thread_;

@@ -2,16 +2,9 @@
 #include "net/tev_display.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-
-#include <fcntl.h>
-#include <netdb.h>
-#include <poll.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 #include "util/errors.h"
 #include "util/text.h"   // echoed
@@ -159,7 +152,7 @@ void TevDisplay::finish(double seconds) {
     wake_.wait_until(lock, deadline, [&] { return images_.empty() || broken_; });
     if (!images_.empty() && !broken_) {
       cancelled_ = true;   // a thread still connecting gives up once connected
-      if (socket_ >= 0) ::shutdown(socket_, SHUT_RDWR);
+      if (socket_.valid()) socket_.shutdownBoth();
       if (!warned_ && !quiet_)
         std::fprintf(stderr, "vkrt: warning: --display-server %s:%d: the viewer did not take the image in %.0f s; "
                              "the render is written all the same\n", address_.host.c_str(), address_.port, seconds);
@@ -167,8 +160,7 @@ void TevDisplay::finish(double seconds) {
     }
   }
   thread_.join();
-  if (socket_ >= 0) ::close(socket_);
-  socket_ = -1;
+  socket_.close();
 }
 
 void TevDisplay::warn(const std::string& why) {
@@ -182,66 +174,31 @@ void TevDisplay::warn(const std::string& why) {
                address_.host.c_str(), address_.port, why.c_str());
 }
 
-namespace {
-
-// A connected socket to `address`, within kConnectSeconds (a host that never answers must not
-// hold the end of the render), or -1 with `why` set.
-int connectTo(const DisplayAddress& address, std::string& why) {
-  addrinfo hints{};
-  hints.ai_family = AF_UNSPEC;
-  hints.ai_socktype = SOCK_STREAM;
-  addrinfo* found = nullptr;
-  if (int e = ::getaddrinfo(address.host.c_str(), std::to_string(address.port).c_str(), &hints, &found); e != 0) {
-    why = std::string("cannot find the host: ") + ::gai_strerror(e);
-    return -1;
-  }
-  int fd = -1, error = 0;
-  for (addrinfo* a = found; a && fd < 0; a = a->ai_next) {
-    fd = ::socket(a->ai_family, a->ai_socktype | SOCK_CLOEXEC | SOCK_NONBLOCK, a->ai_protocol);
-    if (fd < 0) {
-      error = errno;
-      continue;
-    }
-    error = 0;
-    if (::connect(fd, a->ai_addr, a->ai_addrlen) != 0) {
-      if (errno != EINPROGRESS) {
-        error = errno;
-      } else {
-        pollfd w{fd, POLLOUT, 0};
-        socklen_t n = sizeof error;
-        if (::poll(&w, 1, static_cast<int>(kConnectSeconds * 1000)) != 1) error = ETIMEDOUT;
-        else ::getsockopt(fd, SOL_SOCKET, SO_ERROR, &error, &n);
-      }
-    }
-    if (error != 0) {
-      ::close(fd);
-      fd = -1;
-    }
-  }
-  ::freeaddrinfo(found);
-  if (fd < 0) why = std::string("cannot connect: ") + std::strerror(error ? error : ECONNREFUSED);
-  return fd;
-}
-
-}  // namespace
-
 void TevDisplay::run() {
-  std::string why;
-  const int fd = connectTo(address_, why);
-  if (fd < 0) return warn(why);
-  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);   // sends wait (on this thread only)
+  // Within kConnectSeconds: a host that never answers must not hold the end of the render.
+  // The socket it gives blocks: sends wait (on this thread only).
+  platform::SocketFailure failure;
+  platform::Socket connected =
+      platform::connectTcp(address_.host, address_.port, static_cast<int>(kConnectSeconds * 1000), failure);
+  if (!connected.valid())
+    return warn((failure.resolving ? "cannot find the host: " : "cannot connect: ") + failure.text);
+  const platform::Socket* socket = nullptr;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    socket_ = fd;
+    socket_ = std::move(connected);
+    socket = &socket_;   // (only finish() changes socket_, after this thread has ended)
     if (cancelled_) return;   // finish() gave up waiting while this connected
   }
+  int error = 0;
   auto sendAll = [&](const std::vector<std::uint8_t>& packet) {
     std::size_t at = 0;
     while (at < packet.size()) {
-      const ssize_t n = ::send(fd, packet.data() + at, packet.size() - at, MSG_NOSIGNAL);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) return false;
-      at += static_cast<std::size_t>(n);
+      const platform::Transfer sent = socket->send(packet.data() + at, packet.size() - at);
+      if (sent.bytes <= 0) {
+        error = sent.error;
+        return false;
+      }
+      at += static_cast<std::size_t>(sent.bytes);
     }
     return true;
   };
@@ -272,7 +229,7 @@ void TevDisplay::run() {
       }
     }
     for (const auto& packet : packets)
-      if (!sendAll(packet)) return warn(std::string("the viewer closed the connection (") + std::strerror(errno) + ")");
+      if (!sendAll(packet)) return warn("the viewer closed the connection (" + platform::socketErrorText(error) + ")");
     if (last) {
       std::lock_guard<std::mutex> lock(mutex_);
       wake_.notify_all();

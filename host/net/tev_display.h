@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "image/radiance_image.h"
+#include "platform/socket.h"
 
 namespace vkrt {
 
@@ -70,7 +71,7 @@ class TevDisplay {
   };
   std::vector<Pending> images_;
   bool finishing_ = false, broken_ = false, warned_ = false, cancelled_ = false;
-  int socket_ = -1;
+  platform::Socket socket_;   // connected (by the thread)
   std::thread thread_;
 };
 
