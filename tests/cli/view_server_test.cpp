@@ -1,11 +1,16 @@
 // vkrt view's server, apart from a browser (tests/cli/view_browser has the browser): the
-// request head's parser and its limits, the view's routes and token, the state it sends as
-// the watch steps, and the command line of `vkrt view`.
+// request head's parser and its limits, the server's bound on its connections, the view's
+// routes and token, the state it sends as the watch steps, and the command line of `vkrt view`.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "net/http_request.h"
+#include "net/http_server.h"
+#include "platform/socket.h"
 #include "cli/web_view.h"
 #include "image/image_file.h"
 #include "render/render.h"
@@ -81,6 +86,68 @@ TEST(HttpRequest, RefusesWhatIsMalformedOrTooLarge) {
   EXPECT_EQ(parsed(line + "X: " + std::string(kMaxRequestHead, 'b')).status, 431);
   EXPECT_EQ(parsed(line + "X: " + std::string(kMaxRequestHead, 'b') + "\r\n\r\n").status, 431);
   EXPECT_EQ(parsed(line + "X: " + std::string(kMaxRequestHead - 100, 'b') + "\r\n\r\n").kind, HeadParse::Complete);
+}
+
+namespace {
+
+// A site that answers every request "ok".
+class OkSite : public HttpSite {
+ public:
+  HttpResponse respond(const HttpRequest&) override {
+    HttpResponse r;
+    r.body = "ok";
+    return r;
+  }
+  std::string nextEvent(std::uint64_t&) override { return ""; }
+};
+
+platform::Socket connectTo(int port) {
+  platform::SocketFailure failure;
+  platform::Socket s = platform::connectTcp("127.0.0.1", port, 2000, failure);
+  EXPECT_TRUE(s.valid()) << failure.text;
+  return s;
+}
+
+// What the server sends on `s` until it closes the connection, or `ms` of quiet.
+std::string received(const platform::Socket& s, int ms) {
+  std::string got;
+  for (;;) {
+    std::vector<platform::PollItem> items(1);
+    items[0].handle = s.native(), items[0].wantRead = true;
+    int error = 0;
+    if (platform::pollSockets(items, ms, error) != 1) return got;
+    char buffer[1024];
+    const platform::Transfer t = s.receive(buffer, sizeof buffer);
+    if (t.bytes <= 0) return got;
+    got.append(buffer, static_cast<std::size_t>(t.bytes));
+  }
+}
+
+}  // namespace
+
+// Every place taken by a connection that has sent nothing: the next one takes the place of the
+// OLDEST of them (which is sent 503), so that idle connections cannot keep the page from its
+// browser; the newest idle ones keep theirs.
+TEST(HttpServer, AFullServerGivesTheOldestIdleConnectionsPlaceToANewOne) {
+  OkSite site;
+  HttpServer server("127.0.0.1", 0, site);
+  std::vector<platform::Socket> idle;
+  for (int i = 0; i < kMaxConnections; ++i) {
+    idle.push_back(connectTo(server.port()));
+    // Accepted one by one, each at a later time than the one before.
+    std::this_thread::sleep_for(std::chrono::milliseconds(i == 0 ? 50 : 10));
+  }
+  platform::Socket newest = connectTo(server.port());
+  const std::string oldest = received(idle.front(), 2000);
+  EXPECT_EQ(oldest.rfind("HTTP/1.1 503 Service Unavailable\r\n", 0), 0u) << oldest;
+  EXPECT_NE(oldest.find("too many connections"), std::string::npos) << oldest;
+  EXPECT_EQ(received(idle.back(), 200), "") << "the newest idle connection lost its place";
+  EXPECT_EQ(received(idle[1], 200), "") << "only the oldest loses its place";
+  // The new connection has its place: it is answered.
+  const std::string request = "GET / HTTP/1.1\r\nHost: h\r\n\r\n";
+  ASSERT_EQ(newest.send(request.data(), request.size()).bytes, static_cast<std::ptrdiff_t>(request.size()));
+  const std::string answer = received(newest, 2000);
+  EXPECT_EQ(answer.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << answer;
 }
 
 TEST(WebView, TheTokenGuardsEveryAddressAndNoFileIsServed) {
