@@ -1,18 +1,16 @@
 // `vkrt view`'s state and routes: web_view.h.
 #include "cli/web_view.h"
 
-#include <sys/random.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <exception>
+#include <stdexcept>
 
 #include "cli/view_page.h"
 #include "compare/image_diff.h"
 #include "image/encode.h"
 #include "image/png.h"
+#include "platform/random.h"
 #include "render/render.h"
 #include "util/errors.h"
 #include "util/json.h"
@@ -51,12 +49,10 @@ HttpResponse text(int status, const std::string& body) {
 
 std::string randomToken() {
   unsigned char bytes[16];
-  std::size_t got = 0;
-  while (got < sizeof bytes) {
-    const ssize_t n = ::getrandom(bytes + got, sizeof bytes - got, 0);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw IoError(std::string("cannot make the page's token: getrandom: ") + std::strerror(errno));
-    got += static_cast<std::size_t>(n);
+  try {
+    platform::randomBytes(bytes, sizeof bytes);
+  } catch (const std::runtime_error& e) {
+    throw IoError(std::string("cannot make the page's token: ") + e.what());
   }
   std::string token;
   for (unsigned char b : bytes) {

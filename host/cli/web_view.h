@@ -26,7 +26,7 @@
 
 namespace vkrt {
 
-// A random token: 32 hex digits from the system's random source (getrandom). Throws IoError.
+// A random token: 32 hex digits from the system's random source (platform/random.h). Throws IoError.
 std::string randomToken();
 
 struct ViewReference {
