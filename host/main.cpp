@@ -22,6 +22,7 @@
 #include "cli/watch.h"
 #include "gpu/loader_drivers.h"
 #include "util/interrupt.h"
+#include "platform/arguments.h"
 
 namespace {
 
@@ -59,7 +60,8 @@ std::string sceneOf(const vkrt::CommandOptions& command) {
 int main(int argc, char** argv) {
   vkrt::CommandOptions command;
   try {
-    command = vkrt::parseOptions(std::vector<std::string>(argv + 1, argv + argc));
+    // (UTF-8 whatever the system's code page: on Windows, from the wide command line.)
+    command = vkrt::parseOptions(vkrt::platform::commandLineArguments(argc, argv));
   } catch (...) {
     return vkrt::reportError(std::current_exception(), {}, stderr);
   }

@@ -1,6 +1,7 @@
 // Exceptions -> messages and exit statuses, for main() and its tests.
 #include "cli/exit_status.h"
 
+#include <cstdarg>
 #include <cstdlib>
 
 #include <initializer_list>
@@ -8,7 +9,7 @@
 #include <string>
 #include <utility>
 
-#include <sys/resource.h>
+#include "platform/process.h"
 
 #include "cli/run_files.h"
 #include "util/errors.h"
@@ -20,74 +21,79 @@
 namespace vkrt {
 namespace {
 
-// " (this process may use at most N MB of address space: ulimit -v)" when such a limit is
-// set, else "" : the limit an allocation meets first, where there is one.
-std::string processMemoryLimit() {
-  std::string s;
-  for (auto [resource, name] : {std::pair{RLIMIT_AS, "address space: ulimit -v"}, std::pair{RLIMIT_DATA, "data: ulimit -d"}}) {
-    struct rlimit limit {};
-    if (::getrlimit(resource, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
-      s += "; this process may use at most " + std::to_string(static_cast<unsigned long long>(limit.rlim_cur) >> 20) +
-           " MB of " + name;
+// printf into `text`.
+[[gnu::format(printf, 2, 3)]] void append(std::string& text, const char* format, ...) {
+  std::va_list args;
+  va_start(args, format);
+  std::va_list again;
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  if (n > 0) {
+    const std::size_t at = text.size();
+    text.resize(at + static_cast<std::size_t>(n) + 1);
+    std::vsnprintf(text.data() + at, static_cast<std::size_t>(n) + 1, format, again);
+    text.resize(at + static_cast<std::size_t>(n));
   }
-  return s;
+  va_end(again);
 }
 
-}  // namespace
-
-int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE* err) {
+// The message of `error` (with its newlines) into `text`, and its exit status.
+int describeError(std::exception_ptr error, const ErrorContext& context, std::string& text) {
   try {
     std::rethrow_exception(error);
   } catch (const RefusedOutput& e) {   // the command line is well-formed: no pointer to --help
-    std::fprintf(err, "vkrt: error: %s\n", e.what());
+    append(text, "vkrt: error: %s\n", e.what());
     return kExitUsage;
   } catch (const UsageError& e) {   // one line, and where the whole usage is (not the text itself)
-    std::fprintf(err, "vkrt: error: %s\nsee 'vkrt --help'\n", e.what());
+    append(text, "vkrt: error: %s\nsee 'vkrt --help'\n", e.what());
     return kExitUsage;
   } catch (const Interrupted& e) {
-    std::fprintf(err, "\nvkrt: interrupted; nothing written\n");
+    append(text, "\nvkrt: interrupted; nothing written\n");
     return kExitSignalBase + e.signal();
   } catch (const SceneError& e) {
     for (const Diagnostic& d : e.diagnostics())
-      if (d.isError() || !context.quiet) std::fprintf(err, "%s\n", d.format().c_str());
+      if (d.isError() || !context.quiet) append(text, "%s\n", d.format().c_str());
     return kExitScene;
   } catch (const DeviceError& e) {
-    std::fprintf(err, "vkrt: error: %s\n", e.what());
+    append(text, "vkrt: error: %s\n", e.what());
     return kExitDevice;
   } catch (const IoError& e) {
-    std::fprintf(err, "vkrt: error: %s\n", e.what());
+    append(text, "vkrt: error: %s\n", e.what());
     return kExitIo;
   } catch (const OutOfMemory& e) {
-    std::fprintf(err, "vkrt: error: out of memory: %s\n", e.what());
+    append(text, "vkrt: error: out of memory: %s\n", e.what());
     return kExitOutOfMemory;
   } catch (const std::bad_alloc&) {
     // How much was asked for is not known here: say what failed and the limits there are,
     // not a need that the numbers cannot show.
     const std::string what = context.scenePath.empty() ? "this command" : context.scenePath;
-    std::string limits = processMemoryLimit();
+    std::string limits = platform::memoryLimitText();
     if (unsigned long long mb = availableMemoryBytes() >> 20)
       limits += "; the machine has " + std::to_string(mb) + " MB available";
-    std::fprintf(err, "vkrt: error: out of memory: an allocation for %s failed%s\n", what.c_str(), limits.c_str());
+    append(text, "vkrt: error: out of memory: an allocation for %s failed%s\n", what.c_str(), limits.c_str());
     return kExitOutOfMemory;
   } catch (const std::exception& e) {   // InternalError, and whatever else a bug lets through
-    std::fprintf(err, "vkrt: internal error (a bug in vkrt): %s\n", e.what());
+    append(text, "vkrt: internal error (a bug in vkrt): %s\n", e.what());
     return kExitInternal;
   } catch (...) {
-    std::fprintf(err, "vkrt: internal error (a bug in vkrt): an exception of unknown type\n");
+    append(text, "vkrt: internal error (a bug in vkrt): an exception of unknown type\n");
     return kExitInternal;
   }
 }
 
+}  // namespace
+
+int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE* err) {
+  std::string text;
+  const int status = describeError(error, context, text);
+  std::fputs(text.c_str(), err);
+  return status;
+}
+
 int reportErrorKeepingText(std::exception_ptr error, const ErrorContext& context, std::string& text) {
   text.clear();
-  char* buffer = nullptr;
-  std::size_t size = 0;
-  std::FILE* memory = ::open_memstream(&buffer, &size);
-  if (!memory) return reportError(error, context, stderr);
-  const int status = reportError(error, context, memory);
-  std::fclose(memory);
-  text.assign(buffer, size);
-  std::free(buffer);
+  const int status = describeError(error, context, text);
   std::fputs(text.c_str(), stderr);
   return status;
 }

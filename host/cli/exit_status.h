@@ -30,7 +30,7 @@ struct ErrorContext {
 int reportError(std::exception_ptr error, const ErrorContext& context, std::FILE* err);
 
 // The same on stderr, and the text printed, for a report that shows it too (grade's page, vkrt
-// view's); "" when no copy could be kept (the message is on stderr all the same).
+// view's).
 int reportErrorKeepingText(std::exception_ptr error, const ErrorContext& context, std::string& text);
 
 // The exception being handled, or Interrupted when a signal has been received: a signal

@@ -7,35 +7,14 @@
 #include <cstdio>
 #include <cstring>
 
-#ifdef VKRT_SANITIZE_BUILD
-#  include <dlfcn.h>
-#  include <link.h>
-#endif
-
 #include "util/errors.h"
 #include "gpu/buffer_pool.h"
 #include "gpu/device_error.h"
 #include "util/timing.h"
+#include "platform/library.h"
 
 namespace vkrt {
 namespace {
-
-#ifdef VKRT_SANITIZE_BUILD
-// Sanitizer builds only: keeps every library loaded so far (the Vulkan driver and what it
-// loaded) in memory for good. The loader unloads the driver when the instance is destroyed;
-// a 128-byte heap block allocated while it was loaded is then reachable only from unmapped
-// static data, and LeakSanitizer reports it as a leak from "<unknown module>" (measured with
-// Debian 12's Mesa 22.3.6: gone when nothing is unloaded). Pinned, the block stays
-// reachable, and leaks of our own still show.
-void pinLoadedLibraries() {
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, std::size_t, void*) {
-        if (info->dlpi_name && info->dlpi_name[0] != '\0') dlopen(info->dlpi_name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
-        return 0;
-      },
-      nullptr);
-}
-#endif
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
@@ -70,7 +49,13 @@ VkInstance createInstance(bool validation) {
     throw DeviceError(std::string("no Vulkan driver found: ") + kVulkanInstallHint);
   VK_CHECK(r);
 #ifdef VKRT_SANITIZE_BUILD
-  pinLoadedLibraries();   // the driver is loaded now
+  // Sanitizer builds only: every library loaded so far (the Vulkan driver and what it loaded)
+  // stays in memory for good. The loader unloads the driver when the instance is destroyed; a
+  // 128-byte heap block allocated while it was loaded is then reachable only from unmapped
+  // static data, and LeakSanitizer reports it as a leak from "<unknown module>" (measured with
+  // Debian 12's Mesa 22.3.6: gone when nothing is unloaded). Pinned, the block stays
+  // reachable, and leaks of our own still show.
+  platform::pinLoadedLibraries();   // the driver is loaded now
 #endif
   vk::loadInstanceFunctions(instance);
   return instance;

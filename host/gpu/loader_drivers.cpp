@@ -2,8 +2,8 @@
 #include "gpu/loader_drivers.h"
 
 #include <cstdlib>
-#include <filesystem>
-#include <system_error>
+
+#include "platform/process.h"
 
 namespace vkrt {
 namespace {
@@ -42,19 +42,12 @@ std::vector<std::pair<std::string, std::string>> loaderDriverSettings(
   return out;
 }
 
-bool hasDrmRenderNode() {
-  std::error_code ec;
-  std::filesystem::directory_iterator it("/dev/dri", ec), end;
-  if (ec) return ec != std::errc::no_such_file_or_directory;   // unreadable: assume there may be one
-  for (; !ec && it != end; it.increment(ec))
-    if (it->path().filename().string().rfind("renderD", 0) == 0) return true;
-  return static_cast<bool>(ec);
-}
+bool hasDrmRenderNode() { return platform::hasDrmRenderNode(); }
 
 void skipDriversWithoutDevices() {
   for (const auto& [name, value] :
        loaderDriverSettings([](const char* name) { return static_cast<const char*>(std::getenv(name)); }, hasDrmRenderNode()))
-    setenv(name.c_str(), value.c_str(), 0);
+    platform::setEnvironmentDefault(name, value);
 }
 
 }  // namespace vkrt

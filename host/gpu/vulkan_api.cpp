@@ -1,22 +1,25 @@
 // Run-time loading of the Vulkan loader library.
 #include "gpu/vulkan_api.h"
 
-#include <dlfcn.h>
-
 #include <string>
 
 #include "gpu/device_error.h"
+#include "platform/library.h"
 
 namespace vkrt::vk {
 
 void loadGlobalFunctions() {
   if (vkGetInstanceProcAddr) return;
-  void* lib = ::dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
-  if (!lib) lib = ::dlopen("libvulkan.so", RTLD_NOW | RTLD_LOCAL);
+  void* lib = platform::openVulkanLoader();
   if (!lib)
-    throw DeviceError(std::string("the Vulkan loader (libvulkan.so.1) is not installed: "
-                                  "'apt-get install libvulkan1 mesa-vulkan-drivers', or use --backend cpu"));
-  vkGetInstanceProcAddr = reinterpret_cast<PFN_vkGetInstanceProcAddr>(::dlsym(lib, "vkGetInstanceProcAddr"));
+    throw DeviceError(std::string("the Vulkan loader (") + platform::vulkanLoaderName() + ") is not installed: " +
+#ifdef _WIN32
+                      "install your GPU's driver, which brings it, or a Vulkan runtime; or use --backend cpu");
+#else
+                      "'apt-get install libvulkan1 mesa-vulkan-drivers', or use --backend cpu");
+#endif
+  vkGetInstanceProcAddr =
+      reinterpret_cast<PFN_vkGetInstanceProcAddr>(platform::librarySymbol(lib, "vkGetInstanceProcAddr"));
   if (!vkGetInstanceProcAddr) throw DeviceError("the Vulkan loader has no vkGetInstanceProcAddr");
 #define VKRT_VK_LOAD(name)                                                                    \
   name = reinterpret_cast<PFN_##name>(vkGetInstanceProcAddr(VK_NULL_HANDLE, #name));        \

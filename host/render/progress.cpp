@@ -3,12 +3,12 @@
 
 #include <cstdio>
 
-#include <unistd.h>
+#include "platform/terminal.h"
 
 namespace vkrt {
 
 ProgressBar::ProgressBar(bool enabled)
-    : active_(enabled && ::isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()), lastDraw_(start_) {}
+    : active_(enabled && platform::isTerminal(stderr)), start_(std::chrono::steady_clock::now()), lastDraw_(start_) {}
 
 void ProgressBar::update(std::uint64_t done, std::uint64_t total, const std::string& note) {
   if (!active_ || total == 0) return;

@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 
 #include "util/counted.h"
@@ -25,6 +24,7 @@
 #include "image/row_sink.h"
 #include "image/samples.h"
 #include "util/interrupt.h"
+#include "platform/process.h"
 #include "render/backend.h"
 #include "render/progressive.h"
 #include "render/techniques.h"
@@ -262,12 +262,7 @@ const Context& RenderSession::context(const RenderRequest& request, bool& made) 
 unsigned long long availableMemoryBytes() {
   if (const char* test = std::getenv("VKRT_TEST_MEMORY_AVAILABLE_MB"))   // for the tests only
     return std::strtoull(test, nullptr, 10) << 20;
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key, unit;
-  unsigned long long kb = 0;
-  while (meminfo >> key >> kb >> unit)
-    if (key == "MemAvailable:") return kb * 1024ULL;
-  return 0;
+  return platform::availableMemoryBytes();
 }
 
 std::string resolveOutput(const SceneDesc& scene, const RenderRequest& request) {

@@ -1,9 +1,8 @@
-// Signal handling for a clean stop (see interrupt.h). Only async-signal-safe calls in the
-// handler: an atomic store, unlink and _exit.
+// A clean stop on the system's requests (see interrupt.h; platform/signals.h delivers them).
+// Only async-signal-safe calls in the handler: an atomic exchange, removeFileNow and exitNow.
 #include "util/interrupt.h"
 
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -11,7 +10,7 @@
 #include <mutex>
 #include <thread>
 
-#include <unistd.h>
+#include "platform/signals.h"
 
 namespace vkrt {
 namespace {
@@ -22,29 +21,14 @@ static_assert(std::atomic<int>::is_always_lock_free && std::atomic<const char*>:
 
 void onSignal(int signal) {
   if (received.exchange(signal) != 0) {   // the second one: stop now
-    if (const char* path = temporaryFile.load()) ::unlink(path);
-    ::_exit(128 + signal);
+    if (const char* path = temporaryFile.load()) platform::removeFileNow(path);
+    platform::exitNow(128 + signal);
   }
 }
 
 }  // namespace
 
-void installInterruptHandlers() {
-  struct sigaction action {};
-  action.sa_handler = onSignal;
-  sigemptyset(&action.sa_mask);
-  // No SA_RESTART: a read that waits (a FIFO) returns EINTR, and the reader stops.
-  for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
-    struct sigaction old {};
-    // A signal ignored when vkrt started stays ignored (nohup, a background job's SIGINT).
-    if (::sigaction(signal, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
-    ::sigaction(signal, &action, nullptr);
-  }
-  // A write past the file-size limit (`ulimit -f`, as a batch job may set) fails with EFBIG
-  // instead of the signal ending the process: the write's own error path then removes its
-  // temporary file and says why.
-  ::signal(SIGXFSZ, SIG_IGN);
-}
+void installInterruptHandlers() { platform::onStopRequests(onSignal); }
 
 int pendingInterrupt() { return received.load(std::memory_order_relaxed); }
 

@@ -1,0 +1,10 @@
+// The terminal on POSIX: isatty (terminal.h).
+#include "platform/terminal.h"
+
+#include <unistd.h>
+
+namespace vkrt::platform {
+
+bool isTerminal(std::FILE* stream) { return ::isatty(::fileno(stream)) != 0; }
+
+}  // namespace vkrt::platform
