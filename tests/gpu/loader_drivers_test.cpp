@@ -101,21 +101,30 @@ TEST(LoaderDrivers, TheUsersChoiceStands) {
   }
 }
 
+// The loader's own search for drivers and layers, whatever the environment the tests run in
+// sets (VK_DRIVER_FILES, as vkrt's "no Vulkan driver" message tells users to set): `env`'s
+// words that leave out every variable that chooses them.
+const std::string kLoadersOwnSearch =
+    "-u VK_ICD_FILENAMES -u VK_DRIVER_FILES -u VK_ADD_DRIVER_FILES -u VK_LOADER_DRIVERS_SELECT "
+    "-u VK_LOADER_DRIVERS_DISABLE -u VK_LOADER_LAYERS_ENABLE -u VK_LOADER_LAYERS_DISABLE -u VK_LOADER_LAYERS_ALLOW "
+    "-u VK_INSTANCE_LAYERS -u MESA_VK_DEVICE_SELECT -u NODEVICE_SELECT";
+
 // The binary on this machine: without a render node, the loader's own log says an installed
 // Intel or Radeon driver was skipped at vkrt's request, and the devices listed are those the
-// loader lists with every driver (a user's VK_LOADER_DRIVERS_SELECT, obeyed as given).
+// loader lists with every driver (a user's VK_LOADER_DRIVERS_SELECT, obeyed as given). The
+// loader searches on its own here (kLoadersOwnSearch): a chosen driver skips nothing.
 TEST(LoaderDrivers, TheBinarySkipsThemAndFindsTheSameDevices) {
   if (hasDrmRenderNode()) GTEST_SKIP() << "this machine has a DRM render node: nothing is skipped here";
   const bool installed = !installedSkippedManifests("/usr/share/vulkan/icd.d").empty();
   if (!installed) VKRT_SKIP_UNLESS_CI("no Mesa Intel or Radeon Vulkan driver installed to be skipped");
   if (!installed) return;
-  RunResult logged = runVkrt("--list-devices", "VK_LOADER_DEBUG=driver");
+  RunResult logged = runVkrt("--list-devices", kLoadersOwnSearch + " VK_LOADER_DEBUG=driver");
   EXPECT_EQ(logged.exitCode, 0) << logged.output;
   EXPECT_NE(logged.output.find("disabled by env var 'VK_LOADER_DRIVERS_DISABLE'"), std::string::npos) << logged.output;
-  RunResult skipped = runVkrt("--list-devices");
-  RunResult every = runVkrt("--list-devices", "VK_LOADER_DRIVERS_SELECT='*'");
+  RunResult skipped = runVkrt("--list-devices", kLoadersOwnSearch);
+  RunResult every = runVkrt("--list-devices", kLoadersOwnSearch + " VK_LOADER_DRIVERS_SELECT='*'");
   EXPECT_EQ(skipped.exitCode, 0) << skipped.output;
   EXPECT_EQ(skipped.output, every.output);
-  RunResult chosen = runVkrt("--list-devices", "VK_LOADER_DEBUG=driver VK_LOADER_DRIVERS_SELECT='*'");
+  RunResult chosen = runVkrt("--list-devices", kLoadersOwnSearch + " VK_LOADER_DEBUG=driver VK_LOADER_DRIVERS_SELECT='*'");
   EXPECT_EQ(chosen.output.find("VK_LOADER_DRIVERS_DISABLE"), std::string::npos) << chosen.output;
 }
