@@ -17,6 +17,8 @@ constexpr int kTile = 128;               // tevclient's tiles
 constexpr std::uint8_t kCreateImage = 4;  // tev's IpcPacket::EType
 constexpr std::uint8_t kUpdateImage = 6;  // (version 3)
 constexpr double kConnectSeconds = 2.0;
+// The longest a wait for room to send goes without looking whether finish() gave up.
+constexpr int kSendPollMs = 100;
 constexpr std::uint64_t kMaxPixels = std::uint64_t{1} << 25;   // 32 Mpixels: 384 MB of float RGB kept
 
 struct Packet {
@@ -145,7 +147,7 @@ void TevDisplay::finish(double seconds) {
     wake_.notify_all();
   }
   // The thread sends what is left; a viewer that does not take it in time is cut off (the
-  // socket shut down ends a send that waits).
+  // thread's wait for room to send ends within kSendPollMs).
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -176,7 +178,6 @@ void TevDisplay::warn(const std::string& why) {
 
 void TevDisplay::run() {
   // Within kConnectSeconds: a host that never answers must not hold the end of the render.
-  // The socket it gives blocks: sends wait (on this thread only).
   platform::SocketFailure failure;
   platform::Socket connected =
       platform::connectTcp(address_.host, address_.port, static_cast<int>(kConnectSeconds * 1000), failure);
@@ -189,11 +190,21 @@ void TevDisplay::run() {
     socket = &socket_;   // (only finish() changes socket_, after this thread has ended)
     if (cancelled_) return;   // finish() gave up waiting while this connected
   }
+  // Sends do not block: a viewer that takes nothing is waited for in polls of kSendPollMs, each
+  // followed by a look at cancelled_. (A shutdown from finish()'s thread ends a send that
+  // waits on Linux, but not on Windows, where it held the end of the render for good.)
   int error = 0;
+  socket->setNonBlocking(true);
   auto sendAll = [&](const std::vector<std::uint8_t>& packet) {
     std::size_t at = 0;
     while (at < packet.size()) {
       const platform::Transfer sent = socket->send(packet.data() + at, packet.size() - at);
+      if (sent.wouldBlock()) {
+        if (cancelled_) return false;   // finish() has said why
+        std::vector<platform::PollItem> room{{socket->native(), false, true}};
+        if (platform::pollSockets(room, kSendPollMs, error) < 0) return false;
+        continue;
+      }
       if (sent.bytes <= 0) {
         error = sent.error;
         return false;

@@ -9,6 +9,7 @@
 // there, or that goes away, costs one warning (on stderr, unless quiet) and nothing else.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
@@ -70,7 +71,8 @@ class TevDisplay {
     bool whole = false;               // the last: every tile, once
   };
   std::vector<Pending> images_;
-  bool finishing_ = false, broken_ = false, warned_ = false, cancelled_ = false;
+  bool finishing_ = false, broken_ = false, warned_ = false;
+  std::atomic<bool> cancelled_{false};   // finish() gave up: the thread stops connecting or sending
   platform::Socket socket_;   // connected (by the thread)
   std::thread thread_;
 };
