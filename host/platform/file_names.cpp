@@ -4,27 +4,30 @@
 #include <filesystem>
 #include <system_error>
 
+#include "platform/path_text.h"
+
 namespace vkrt::platform {
 
 std::string canonicalName(const std::string& path) {
   namespace fs = std::filesystem;
   if (std::optional<std::string> real = realPath(path)) return *real;
-  const fs::path p(path);
+  const fs::path p = pathFromUtf8(path);
   const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
-  if (std::optional<std::string> realDir = realPath(dir.string())) return (fs::path(*realDir) / p.filename()).string();
+  if (std::optional<std::string> realDir = realPath(utf8FromPath(dir)))
+    return utf8FromPath(pathFromUtf8(*realDir) / p.filename());
   // Neither is there: the longest part that is, and the rest as written.
   std::error_code ec;
   const fs::path absolute = fs::absolute(p, ec);
-  if (ec) return p.lexically_normal().string();
+  if (ec) return utf8FromPath(p.lexically_normal());
   fs::path prefix, rest;
   for (const fs::path& part : absolute) {
-    if (rest.empty() && realPath((prefix / part).string()))
+    if (rest.empty() && realPath(utf8FromPath(prefix / part)))
       prefix /= part;
     else
       rest /= part;
   }
-  const std::optional<std::string> realPrefix = prefix.empty() ? std::nullopt : realPath(prefix.string());
-  return ((realPrefix ? fs::path(*realPrefix) : prefix) / rest).lexically_normal().string();
+  const std::optional<std::string> realPrefix = prefix.empty() ? std::nullopt : realPath(utf8FromPath(prefix));
+  return utf8FromPath(((realPrefix ? pathFromUtf8(*realPrefix) : prefix) / rest).lexically_normal());
 }
 
 }  // namespace vkrt::platform
