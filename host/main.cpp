@@ -23,6 +23,7 @@
 #include "gpu/loader_drivers.h"
 #include "util/interrupt.h"
 #include "platform/arguments.h"
+#include "platform/path_text.h"
 
 namespace {
 
@@ -34,7 +35,8 @@ int run(vkrt::RenderOptions& o) {
   if (o.display) {
     display.emplace(*o.display, o.quiet);
     o.request.onImageStart = [&display](const vkrt::RenderReport& report) {
-      display->begin(std::filesystem::path(report.outputPath).filename().string(), report.width, report.height);
+      using vkrt::platform::pathFromUtf8, vkrt::platform::utf8FromPath;
+      display->begin(utf8FromPath(pathFromUtf8(report.outputPath).filename()), report.width, report.height);
     };
     o.request.onImageRows = [&display](int y0, const vkrt::RadianceImage& rows) { display->update(y0, rows); };
   }

@@ -36,6 +36,7 @@
 #include "platform/file_changes.h"
 #include "platform/file_names.h"
 #include "platform/file_permissions.h"
+#include "platform/path_text.h"
 #include "util/interrupt.h"
 #include "util/parallel_for.h"
 #include "render/progress.h"
@@ -46,15 +47,17 @@
 namespace vkrt {
 
 namespace fs = std::filesystem;
+using platform::pathFromUtf8;
+using platform::utf8FromPath;
 
 namespace {
 
 // A folder, as one name per folder (links and '..' resolved, no trailing '/'), for telling
 // folders apart.
 fs::path canonicalFolder(const std::string& path) {
-  fs::path p = fs::absolute(path).lexically_normal();
+  fs::path p = fs::absolute(pathFromUtf8(path)).lexically_normal();
   if (p.filename().empty() && p.has_parent_path() && p != p.root_path()) p = p.parent_path();   // "report/"
-  return platform::canonicalName(p.string());
+  return pathFromUtf8(platform::canonicalName(utf8FromPath(p)));
 }
 
 bool inside(const fs::path& inner, const fs::path& outer) {
@@ -105,8 +108,8 @@ fs::path checkReportFolder(const std::string& output, const std::vector<std::str
   }
   const fs::path parent = out.parent_path();
   if (!fs::is_directory(parent, ec))
-    throw IoError("cannot write the report '" + abbreviated(output) + "': the folder '" + abbreviated(parent.string()) +
-                  "' does not exist");
+    throw IoError("cannot write the report '" + abbreviated(output) + "': the folder '" +
+                  abbreviated(utf8FromPath(parent)) + "' does not exist");
   return out;
 }
 
@@ -116,21 +119,21 @@ fs::path checkReportFolder(const std::string& output, const std::vector<std::str
 void checkGradescopeFile(const std::string& path, const std::vector<std::string>& inputs, const fs::path& report) {
   const fs::path file = canonicalFolder(resolveOutputFile(path).target);
   std::vector<std::string> around = inputs;
-  around.push_back(report.string());
+  around.push_back(utf8FromPath(report));
   for (const std::string& in : around)
     if (inside(file, canonicalFolder(in)))
       throw RefusedOutput("--gradescope " + abbreviated(path) + ": " +
                           (file == canonicalFolder(in) ? "is" : "lies in") + " '" + abbreviated(in) +
-                          "', which this run " + (in == report.string() ? "writes whole" : "reads") +
+                          "', which this run " + (in == utf8FromPath(report) ? "writes whole" : "reads") +
                           "; name a file apart from them");
   checkOutputWritable(path);
 }
 
 // A fresh folder in `folder`, named .vkrt-grade-XXXXXX, readable as a new folder would be.
 std::string temporaryFolderIn(const fs::path& folder) {
-  std::string pattern = (folder / (std::string(kTemporaryPrefix) + "XXXXXX")).string();
+  std::string pattern = utf8FromPath(folder / (std::string(kTemporaryPrefix) + "XXXXXX"));
   if (!platform::createTemporaryDirectory(pattern))
-    throw IoError("cannot write the report in '" + abbreviated(folder.string()) + "': " + std::strerror(errno));
+    throw IoError("cannot write the report in '" + abbreviated(utf8FromPath(folder)) + "': " + std::strerror(errno));
   // It is made for this user alone; the report is for whoever may read a new folder.
   platform::setMode(pattern, 0777 & ~platform::creationMask());
   return pattern;
@@ -152,10 +155,10 @@ void moveEntries(const fs::path& from, const fs::path& to, const std::vector<fs:
   for (fs::directory_iterator it(from, ec), end; !ec && it != end; it.increment(ec))
     if (std::find(except.begin(), except.end(), it->path()) == except.end()) entries.push_back(it->path());
   for (const fs::path& e : entries) {
-    if (platform::replaceFile(e.string(), (to / e.filename()).string()) != 0) {
+    if (platform::replaceFile(utf8FromPath(e), utf8FromPath(to / e.filename())) != 0) {
       const std::string why = platform::errorText(errno);
-      for (const fs::path& m : moved) platform::replaceFile((to / m.filename()).string(), m.string());
-      throw IoError("cannot put the report in '" + abbreviated(out.string()) + "': " + why);
+      for (const fs::path& m : moved) platform::replaceFile(utf8FromPath(to / m.filename()), utf8FromPath(m));
+      throw IoError("cannot put the report in '" + abbreviated(utf8FromPath(out)) + "': " + why);
     }
     moved.push_back(e);
   }
@@ -167,11 +170,11 @@ void moveEntries(const fs::path& from, const fs::path& to, const std::vector<fs:
 void swapIntoPlace(const std::string& temporary, const fs::path& out) {
   std::error_code ec;
   if (!fs::exists(out, ec)) {
-    if (platform::replaceFile(temporary, out.string()) != 0)
-      throw IoError("cannot put the report at '" + abbreviated(out.string()) + "': " + platform::errorText(errno));
+    if (platform::replaceFile(temporary, utf8FromPath(out)) != 0)
+      throw IoError("cannot put the report at '" + abbreviated(utf8FromPath(out)) + "': " + platform::errorText(errno));
     return;
   }
-  const fs::path old = temporaryFolderIn(out);
+  const fs::path old = pathFromUtf8(temporaryFolderIn(out));
   struct RemoveOld {
     fs::path path;
     ~RemoveOld() {
@@ -181,14 +184,14 @@ void swapIntoPlace(const std::string& temporary, const fs::path& out) {
   } removeOld{old};
   // The earlier report's entries (and any grade left of an earlier, killed run) aside, then
   // the new ones in; a failure puts the earlier ones back.
-  moveEntries(out, old, {old, fs::path(temporary)}, out);
+  moveEntries(out, old, {old, pathFromUtf8(temporary)}, out);
   try {
-    moveEntries(temporary, out, {}, out);
+    moveEntries(pathFromUtf8(temporary), out, {}, out);
   } catch (...) {
     moveEntries(old, out, {}, out);
     throw;
   }
-  fs::remove(temporary, ec);
+  fs::remove(pathFromUtf8(temporary), ec);
 }
 
 // The temporary folder, removed unless the report was put in place.
@@ -197,7 +200,7 @@ class TemporaryFolder {
   explicit TemporaryFolder(std::string path) : path_(std::move(path)) {}
   ~TemporaryFolder() {
     std::error_code ec;
-    if (!path_.empty()) fs::remove_all(path_, ec);
+    if (!path_.empty()) fs::remove_all(pathFromUtf8(path_), ec);
   }
   TemporaryFolder(const TemporaryFolder&) = delete;
   TemporaryFolder& operator=(const TemporaryFolder&) = delete;
@@ -213,11 +216,11 @@ class TemporaryFolder {
 // before anything is read.
 bool isSceneArgument(const std::string& path) {
   std::error_code ec;
-  fs::file_status st = fs::status(path, ec);
+  fs::file_status st = fs::status(pathFromUtf8(path), ec);
   if (!fs::exists(st))
     throw IoError("'" + abbreviated(path) + "' does not exist (give a folder of submissions, or a scene file to render)");
   if (fs::is_directory(st)) return false;
-  std::string ext = fs::path(path).extension().string();
+  std::string ext = utf8FromPath(pathFromUtf8(path).extension());
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext != ".test")
     throw UsageError("grade: '" + abbreviated(path) + "' is neither a folder of submissions nor a scene file (.test)");
@@ -341,7 +344,8 @@ void gradeOne(const Job& job, const GradeReference& reference, const GradeThresh
   // any other format as the PNG of its bytes.
   const std::string copy = folder + "/" + entryImagePath(job.submission, job.scene, ReportImage::Submission);
   std::error_code ec;
-  if (job.rendered || !isPngFile(job.path) || !fs::copy_file(job.path, copy, ec)) write(*image, ReportImage::Submission);
+  if (job.rendered || !isPngFile(job.path) || !fs::copy_file(pathFromUtf8(job.path), pathFromUtf8(copy), ec))
+    write(*image, ReportImage::Submission);
   write(thumbnail(*image, kThumbnailWidth, kThumbnailHeight), ReportImage::Thumbnail);
   entry.hasImage = true;
   if (diff.width > 0) {
@@ -415,7 +419,7 @@ int printOutcomes(const GradeOptions& o, const GradeReport& report, int status) 
                counted(report.submissions.size(), "submission", "submissions").c_str(),
                counted(report.scenes.size(), "scene", "scenes").c_str(), report.seconds, n.pass, n.fail, n.missing,
                n.unreadable ? (", " + std::to_string(n.unreadable) + " unreadable").c_str() : "",
-               (fs::path(o.output) / "index.html").string().c_str(), status);
+               utf8FromPath(pathFromUtf8(o.output) / "index.html").c_str(), status);
   return status;
 }
 
@@ -450,10 +454,11 @@ std::optional<SceneGrading> sceneGrading(const std::string& path, std::string& w
 std::map<std::string, std::string> sceneFilesByKey(const std::vector<std::string>& scenes, const std::string& refs) {
   std::map<std::string, std::string> files;
   std::error_code ec;
-  for (fs::directory_iterator it(refs, ec), end; !ec && it != end; it.increment(ec)) {
-    std::string ext = it->path().extension().string();
+  for (fs::directory_iterator it(pathFromUtf8(refs), ec), end; !ec && it != end; it.increment(ec)) {
+    std::string ext = utf8FromPath(it->path().extension());
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".test" && it->is_regular_file(ec)) files[sceneKey(sceneOfFileName(it->path().string()))] = it->path().string();
+    const std::string file = utf8FromPath(it->path());
+    if (ext == ".test" && it->is_regular_file(ec)) files[sceneKey(sceneOfFileName(file))] = file;
   }
   for (const std::string& scene : scenes) files[sceneKey(sceneOfFileName(scene))] = scene;
   return files;
@@ -568,7 +573,8 @@ int gradeCommand(const GradeOptions& o) {
   }
 
   TemporaryFolder folder(temporaryFolderFor(out));
-  for (const std::string& sub : reportImageFolders(submissions.size())) fs::create_directories(folder.path() + "/" + sub);
+  for (const std::string& sub : reportImageFolders(submissions.size()))
+    fs::create_directories(pathFromUtf8(folder.path() + "/" + sub));
   GradeReport report;
   report.references = o.references;
   for (std::size_t c = 0; c < refs.size(); ++c) {

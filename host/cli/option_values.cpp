@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "util/errors.h"             // UsageError
+#include "platform/path_text.h"
 #include "util/text.h"   // echoed, abbreviated
 #include "scene/parse.h"        // kMaxImageEdge
 
@@ -95,8 +96,8 @@ std::string unnamedWarning(const std::string& what, const std::string& path, For
 // (ends in '/', or is one) or a scene file, whose refusal by the write says so alone.
 bool warnsOfItsName(const std::string& path) {
   std::error_code ec;
-  return !hasImageExtension(path) && !endsInSeparator(path) && !std::filesystem::is_directory(path, ec) &&
-         !namedAsSceneFile(path);
+  return !hasImageExtension(path) && !endsInSeparator(path) &&
+         !std::filesystem::is_directory(platform::pathFromUtf8(path), ec) && !namedAsSceneFile(path);
 }
 
 void warnOfItsName(const std::string& what, const std::string& path, FormatsOf which, bool strict,

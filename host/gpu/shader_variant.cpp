@@ -11,6 +11,7 @@
 
 #include "platform/file_changes.h"
 #include "platform/file_io.h"
+#include "platform/path_text.h"
 
 namespace vkrt {
 namespace {
@@ -32,7 +33,7 @@ std::string env(const char* name) {
 
 std::string cacheHome() {
   std::string xdg = env("XDG_CACHE_HOME");
-  if (!xdg.empty() && std::filesystem::path(xdg).is_absolute()) return xdg;
+  if (!xdg.empty() && platform::pathFromUtf8(xdg).is_absolute()) return xdg;
   std::string home = env("HOME");
   return home.empty() ? "" : home + "/.cache";
 }
@@ -101,7 +102,7 @@ void recordVariantCompiled(std::uint64_t key) {
   std::lock_guard lock(indexMutex);
   const std::string path = variantIndexPath();
   if (path.empty() || !keys(path).insert(key).second) return;
-  platform::makeDirectory(std::filesystem::path(path).parent_path().string(), 0755);
+  platform::makeDirectory(platform::utf8FromPath(platform::pathFromUtf8(path).parent_path()), 0755);
   // One short line by one append: whole even when processes add at once. O_NOFOLLOW: never
   // through a link.
   const int fd = platform::openForAppending(path, 0644);

@@ -9,11 +9,14 @@
 
 #include "util/errors.h"
 #include "image/image_file.h"
+#include "platform/path_text.h"
 #include "util/text.h"   // abbreviated
 
 namespace vkrt {
 
 namespace fs = std::filesystem;
+using platform::pathFromUtf8;
+using platform::utf8FromPath;
 
 namespace {
 
@@ -26,14 +29,14 @@ std::string lower(std::string s) {
 
 // Hidden entries, and the folder of resource forks that a zip made on a Mac unpacks into.
 bool hidden(const fs::path& p) {
-  const std::string name = p.filename().string();
+  const std::string name = utf8FromPath(p.filename());
   return (!name.empty() && name[0] == '.') || name == "__MACOSX";
 }
 
 // The entries of `folder` (not hidden), sorted naturally; IoError when it cannot be listed.
 std::vector<fs::directory_entry> entriesOf(const std::string& folder) {
   std::error_code ec;
-  fs::directory_iterator it(folder, ec);
+  fs::directory_iterator it(pathFromUtf8(folder), ec);
   if (ec) throw IoError("cannot read the folder '" + abbreviated(folder) + "': " + ec.message());
   std::vector<fs::directory_entry> entries;
   for (; it != fs::directory_iterator(); it.increment(ec)) {
@@ -42,7 +45,7 @@ std::vector<fs::directory_entry> entriesOf(const std::string& folder) {
   }
   if (ec) throw IoError("cannot read the folder '" + abbreviated(folder) + "': " + ec.message());
   std::sort(entries.begin(), entries.end(), [](const fs::directory_entry& a, const fs::directory_entry& b) {
-    return naturalLess(a.path().filename().string(), b.path().filename().string());
+    return naturalLess(utf8FromPath(a.path().filename()), utf8FromPath(b.path().filename()));
   });
   return entries;
 }
@@ -54,12 +57,12 @@ bool isFolder(const fs::directory_entry& e) {
 
 bool isImageFile(const fs::directory_entry& e) {
   std::error_code ec;
-  return e.is_regular_file(ec) && imageKindByName(e.path().string());
+  return e.is_regular_file(ec) && imageKindByName(utf8FromPath(e.path()));
 }
 
 bool isOtherFile(const fs::directory_entry& e) {
   std::error_code ec;
-  return e.is_regular_file(ec) && !imageKindByName(e.path().string());
+  return e.is_regular_file(ec) && !imageKindByName(utf8FromPath(e.path()));
 }
 
 // The images under `folder` (itself and `depth` levels below), in path order, and the other
@@ -68,12 +71,12 @@ void collectImages(const std::string& folder, int depth, std::vector<std::string
                    std::vector<std::string>& others) {
   const std::vector<fs::directory_entry> entries = entriesOf(folder);
   for (const fs::directory_entry& e : entries) {
-    if (isImageFile(e)) out.push_back(e.path().string());
-    if (isOtherFile(e)) others.push_back(e.path().string());
+    if (isImageFile(e)) out.push_back(utf8FromPath(e.path()));
+    if (isOtherFile(e)) others.push_back(utf8FromPath(e.path()));
   }
   if (depth == 0) return;
   for (const fs::directory_entry& e : entries)
-    if (isFolder(e)) collectImages(e.path().string(), depth - 1, out, others);
+    if (isFolder(e)) collectImages(utf8FromPath(e.path()), depth - 1, out, others);
 }
 
 constexpr std::size_t kOtherFilesNoted = 5;   // per submission; then "and N more"
@@ -106,17 +109,17 @@ Submission matched(const std::string& name, const std::string& folder, const std
 }
 
 std::string baseName(const std::string& folder) {
-  fs::path p = fs::path(folder).lexically_normal();
+  fs::path p = pathFromUtf8(folder).lexically_normal();
   if (p.filename().empty()) p = p.parent_path();
-  std::string name = p.filename().string();
-  if (name.empty() || name == ".") name = fs::absolute(p).lexically_normal().filename().string();
+  std::string name = utf8FromPath(p.filename());
+  if (name.empty() || name == ".") name = utf8FromPath(fs::absolute(p).lexically_normal().filename());
   return name.empty() ? folder : name;
 }
 
 }  // namespace
 
 std::string sceneOfFileName(const std::string& path, bool reference) {
-  std::string stem = fs::path(path).stem().string();
+  std::string stem = utf8FromPath(pathFromUtf8(path).stem());
   if (reference && stem.size() > 4 && (lower(stem.substr(0, 4)) == "ref_" || lower(stem.substr(0, 4)) == "ref-"))
     stem = stem.substr(4);
   return stem;
@@ -152,13 +155,13 @@ bool naturalLess(const std::string& a, const std::string& b) {
 
 std::vector<SceneReference> findReferences(const std::string& folder) {
   std::error_code ec;
-  if (!fs::is_directory(folder, ec))
+  if (!fs::is_directory(pathFromUtf8(folder), ec))
     throw IoError("the references '" + abbreviated(folder) + "' are not a folder (vkrt grade REFS/ SUBMISSIONS/)");
   std::vector<SceneReference> refs;
   std::map<std::string, std::string> byKey;
   for (const fs::directory_entry& e : entriesOf(folder)) {
     if (!isImageFile(e)) continue;
-    SceneReference r{sceneOfFileName(e.path().string(), true), e.path().string()};
+    SceneReference r{sceneOfFileName(utf8FromPath(e.path()), true), utf8FromPath(e.path())};
     if (auto [at, added] = byKey.emplace(sceneKey(r.scene), r.path); !added)
       throw UsageError("two reference images for the scene " + r.scene + ": " + abbreviated(at->second) + " and " +
                        abbreviated(r.path) + " (keep one)");
@@ -177,7 +180,7 @@ std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
   std::vector<Submission> found;
   for (const std::string& folder : folders) {
     std::error_code ec;
-    if (!fs::is_directory(folder, ec))
+    if (!fs::is_directory(pathFromUtf8(folder), ec))
       throw IoError("the submissions '" + abbreviated(folder) + "' are not a folder (a folder per student, or a "
                     "folder of images)");
     if (oneStudentEach) {   // the folder is one student's, whatever its sub-folders are called
@@ -192,8 +195,8 @@ std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
     const std::vector<fs::directory_entry> entries = entriesOf(folder);
     std::vector<std::string> own, ownOthers;
     for (const fs::directory_entry& e : entries) {
-      if (isImageFile(e)) own.push_back(e.path().string());
-      if (isOtherFile(e)) ownOthers.push_back(e.path().string());
+      if (isImageFile(e)) own.push_back(utf8FromPath(e.path()));
+      if (isOtherFile(e)) ownOthers.push_back(utf8FromPath(e.path()));
     }
     std::vector<Submission> here;
     if (!own.empty()) {
@@ -203,9 +206,9 @@ std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
     for (const fs::directory_entry& e : entries) {
       if (!isFolder(e)) continue;
       std::vector<std::string> images, others;
-      collectImages(e.path().string(), kSubmissionDepth - 1, images, others);
-      here.push_back(matched(e.path().filename().string(), e.path().string(), images, keys));
-      if (images.empty()) here.back().notes.push_back("no image in " + abbreviated(e.path().string()));
+      collectImages(utf8FromPath(e.path()), kSubmissionDepth - 1, images, others);
+      here.push_back(matched(utf8FromPath(e.path().filename()), utf8FromPath(e.path()), images, keys));
+      if (images.empty()) here.back().notes.push_back("no image in " + abbreviated(utf8FromPath(e.path())));
       noteOthers(here.back(), others);
     }
     for (Submission& s : here) {

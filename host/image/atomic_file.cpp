@@ -18,6 +18,7 @@
 #include "platform/file_names.h"
 #include "platform/file_permissions.h"
 #include "platform/file_status.h"
+#include "platform/path_text.h"
 #include "util/interrupt.h"
 #include "util/text.h"   // abbreviated
 
@@ -26,10 +27,12 @@ namespace {
 
 using platform::FileKind;
 using platform::FileStatus;
+using platform::pathFromUtf8;
+using platform::utf8FromPath;
 
 std::string directoryOf(const std::string& path) {
-  std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  return parent.empty() ? std::string(".") : parent.string();
+  std::filesystem::path parent = pathFromUtf8(path).parent_path();
+  return parent.empty() ? std::string(".") : utf8FromPath(parent);
 }
 
 // What a file that is not a regular one is, for messages ("a FIFO").
@@ -74,11 +77,12 @@ void checkDirectory(const std::string& dir, const std::string& name) {
   // where POSIX says ENOENT, every folder on the way that is there is a folder.)
   if (error == ENOTDIR || error == ENOENT) {
     std::filesystem::path prefix;
-    for (const auto& part : std::filesystem::path(dir)) {
+    for (const auto& part : pathFromUtf8(dir)) {
       prefix /= part;
-      const FileStatus on = platform::statusOf(prefix.string());
+      const std::string soFar = utf8FromPath(prefix);
+      const FileStatus on = platform::statusOf(soFar);
       if (on.found() && on.kind != FileKind::Directory)
-        throw IoError("output directory '" + abbreviated(dir) + "' cannot exist: '" + abbreviated(prefix.string()) +
+        throw IoError("output directory '" + abbreviated(dir) + "' cannot exist: '" + abbreviated(soFar) +
                       "' is " + whatItIs(on.kind) + ", not a directory");
     }
   }
@@ -108,9 +112,8 @@ OutputFile resolveOutputFile(const std::string& path) {
     }
     if (hops == 40) throw IoError("cannot write '" + name + "': " + std::strerror(ELOOP));
     std::string link = readLink(out.target, name);
-    out.target = std::filesystem::path(link).has_root_path()
-                     ? link
-                     : (std::filesystem::path(directoryOf(out.target)) / link).string();
+    const std::filesystem::path to = pathFromUtf8(link);
+    out.target = to.has_root_path() ? link : utf8FromPath(pathFromUtf8(directoryOf(out.target)) / to);
   }
   const std::string described =
       "'" + name + "'" + (hops > 0 ? " (a symbolic link to '" + abbreviated(out.target) + "')" : std::string());
@@ -123,7 +126,7 @@ OutputFile resolveOutputFile(const std::string& path) {
       throw IoError("cannot write " + described + ": the link leads to a file that has no name vkrt can replace; "
                     "give the file's own name");
     }
-  std::string file = std::filesystem::path(out.target).filename().string();
+  std::string file = utf8FromPath(pathFromUtf8(out.target).filename());
   if (file.empty() || file == "." || file == "..")
     throw IoError("output path " + described + " names a directory, not a file");
   // vkrt's outputs are images and reports, never scenes: an output named as a scene file is
@@ -131,7 +134,7 @@ OutputFile resolveOutputFile(const std::string& path) {
   if (namedAsSceneFile(file))
     throw IoError("cannot write " + described + ": that is a scene file's name (.test), and vkrt writes images, "
                   "never scenes; name the output as what it holds (" +
-                  std::filesystem::path(file).replace_extension(".png").string() + ")");
+                  utf8FromPath(pathFromUtf8(file).replace_extension(".png")) + ")");
   const std::string dir = directoryOf(out.target);
   checkDirectory(dir, name);
   if (out.exists) {
@@ -150,7 +153,7 @@ OutputFile resolveOutputFile(const std::string& path) {
   }
   const std::optional<std::string> real = platform::realPath(dir);
   if (!real) throw IoError("output directory '" + abbreviated(dir) + "': " + std::strerror(errno));
-  out.canonical = (std::filesystem::path(*real) / file).string();
+  out.canonical = utf8FromPath(pathFromUtf8(*real) / pathFromUtf8(file));
   return out;
 }
 
@@ -183,7 +186,7 @@ void checkOutputWritable(const std::string& path) {
     throw IoError("output file '" + abbreviated(out.target) + "' is not writable: " + std::strerror(errno));
   // Creating a file is the only reliable test (permissions, read-only mounts, root).
   std::string dir = directoryOf(out.target);
-  std::string probe = (std::filesystem::path(dir) / ".vkrt-XXXXXX.probe").string();
+  std::string probe = utf8FromPath(pathFromUtf8(dir) / ".vkrt-XXXXXX.probe");
   const int fd = platform::createTemporaryFile(probe, 6);
   if (fd < 0)
     throw IoError("output directory '" + abbreviated(dir) + "' is not writable: " + std::strerror(errno));
@@ -197,7 +200,7 @@ void writeFileAtomic(const std::string& path, const char* suffix, const std::fun
   const OutputFile out = resolveOutputFile(path);
   const std::string name = abbreviated(path);
   const std::string dir = directoryOf(out.target);
-  std::string tmpl = (std::filesystem::path(dir) / (std::string(".vkrt-XXXXXX") + suffix)).string();
+  std::string tmpl = utf8FromPath(pathFromUtf8(dir) / (std::string(".vkrt-XXXXXX") + suffix));
   int fd = platform::createTemporaryFile(tmpl, std::strlen(suffix));
   if (fd < 0) throw IoError("cannot create a temporary file in '" + abbreviated(dir) + "': " + std::strerror(errno));
   registerTemporaryFile(tmpl.c_str());

@@ -18,6 +18,7 @@
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/ppm.h"
+#include "platform/path_text.h"
 #include "util/text.h"   // escapedBytes
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -142,14 +143,14 @@ std::string outputNameProblem(const std::string& name) {
 }
 
 bool namedAsSceneFile(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
+  std::string ext = platform::utf8FromPath(platform::pathFromUtf8(path).extension());
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext == ".test";
 }
 
 std::optional<std::string> imageKindByName(const std::string& path) {
   if (const ImageFormat* format = formatNamed(path)) return std::string(format->name);
-  std::string ext = std::filesystem::path(path).extension().string();
+  std::string ext = platform::utf8FromPath(platform::pathFromUtf8(path).extension());
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext == ".jpg" || ext == ".jpeg") return std::string("JPEG");
   return std::nullopt;

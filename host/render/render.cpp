@@ -24,6 +24,7 @@
 #include "image/row_sink.h"
 #include "image/samples.h"
 #include "util/interrupt.h"
+#include "platform/path_text.h"
 #include "platform/process.h"
 #include "render/backend.h"
 #include "render/progressive.h"
@@ -230,13 +231,14 @@ void applySizeOverride(const RenderRequest& request, SceneDesc& scene) {
 // format's extension.
 std::string pathInOutputDir(const SceneDesc& scene, const std::string& dir) {
   if (scene.outputLine == 0) return defaultOutputIn(dir, scene.sourcePath);
-  return (std::filesystem::path(dir) / std::filesystem::path(scene.output).filename()).string();
+  return platform::utf8FromPath(platform::pathFromUtf8(dir) / platform::pathFromUtf8(scene.output).filename());
 }
 
 }  // namespace
 
 std::string defaultOutputIn(const std::string& dir, const std::string& scenePath) {
-  return (std::filesystem::path(dir) / std::filesystem::path(scenePath).stem().concat(defaultImageExtension())).string();
+  using platform::pathFromUtf8;
+  return platform::utf8FromPath(pathFromUtf8(dir) / pathFromUtf8(scenePath).stem().concat(defaultImageExtension()));
 }
 
 RenderSession::RenderSession() = default;
