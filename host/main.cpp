@@ -23,6 +23,7 @@
 #include "gpu/loader_drivers.h"
 #include "util/interrupt.h"
 #include "platform/arguments.h"
+#include "platform/terminal.h"
 #include "platform/path_text.h"
 
 namespace {
@@ -60,6 +61,7 @@ std::string sceneOf(const vkrt::CommandOptions& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  vkrt::platform::prepareStandardStreams();
   vkrt::CommandOptions command;
   try {
     // (UTF-8 whatever the system's code page: on Windows, from the wide command line.)

@@ -10,4 +10,10 @@ namespace vkrt::platform {
 // this turns on.
 bool isTerminal(std::FILE* stream);
 
+// Makes stderr behave as on Linux wherever it goes: unbuffered, each message out as it is
+// printed (Windows' C library buffers stderr when it is a pipe or a file, so a program
+// reading vkrt's messages, --watch's lines among them, saw them only at its exit). Call it
+// first thing in main().
+void prepareStandardStreams();
+
 }  // namespace vkrt::platform

@@ -7,4 +7,6 @@ namespace vkrt::platform {
 
 bool isTerminal(std::FILE* stream) { return ::isatty(::fileno(stream)) != 0; }
 
+void prepareStandardStreams() {}   // stderr is unbuffered already (C's rule)
+
 }  // namespace vkrt::platform

@@ -18,4 +18,6 @@ bool isTerminal(std::FILE* stream) {
          ::SetConsoleMode(console, mode | ENABLE_VIRTUAL_TERMINAL_PROCESSING) != 0;
 }
 
+void prepareStandardStreams() { std::setvbuf(stderr, nullptr, _IONBF, 0); }
+
 }  // namespace vkrt::platform
