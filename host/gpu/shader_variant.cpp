@@ -12,6 +12,7 @@
 #include "platform/file_changes.h"
 #include "platform/file_io.h"
 #include "platform/path_text.h"
+#include "platform/process.h"
 
 namespace vkrt {
 namespace {
@@ -29,13 +30,6 @@ struct Hash {
 std::string env(const char* name) {
   const char* v = std::getenv(name);
   return v ? v : "";
-}
-
-std::string cacheHome() {
-  std::string xdg = env("XDG_CACHE_HOME");
-  if (!xdg.empty() && platform::pathFromUtf8(xdg).is_absolute()) return xdg;
-  std::string home = env("HOME");
-  return home.empty() ? "" : home + "/.cache";
 }
 
 std::mutex indexMutex;
@@ -82,7 +76,7 @@ std::uint64_t variantKey(const VkPhysicalDeviceProperties& device, const std::ui
 std::string variantIndexPath() {
   const std::string disabled = env("MESA_SHADER_CACHE_DISABLE");
   if (disabled == "1" || disabled == "true" || disabled == "TRUE" || disabled == "yes") return "";
-  const std::string home = cacheHome();
+  const std::string home = platform::userCacheFolder();
   if (home.empty()) return "";
   std::string mesa = env("MESA_SHADER_CACHE_DIR");
   if (mesa.empty()) mesa = home + "/mesa_shader_cache";

@@ -13,6 +13,10 @@ unsigned long long availableMemoryBytes();
 // (POSIX: ulimit -v and -d; Windows: a job object's limit), or "".
 std::string memoryLimitText();
 
+// The folder of the user's caches (UTF-8): POSIX, $XDG_CACHE_HOME when it is absolute, else
+// $HOME/.cache; Windows, %LOCALAPPDATA%. "" when there is none.
+std::string userCacheFolder();
+
 // Sets the environment variable `name` to `value` unless it is set already.
 void setEnvironmentDefault(const std::string& name, const std::string& value);
 

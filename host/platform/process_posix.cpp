@@ -32,6 +32,13 @@ std::string memoryLimitText() {
   return s;
 }
 
+std::string userCacheFolder() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && xdg[0] == '/') return xdg;
+  const char* home = std::getenv("HOME");
+  return home && home[0] != '\0' ? std::string(home) + "/.cache" : "";
+}
+
 void setEnvironmentDefault(const std::string& name, const std::string& value) {
   ::setenv(name.c_str(), value.c_str(), 0);
 }

@@ -28,6 +28,11 @@ std::string memoryLimitText() {
   return "";
 }
 
+std::string userCacheFolder() {
+  const wchar_t* local = ::_wgetenv(L"LOCALAPPDATA");
+  return local ? utf8FromWide(local) : "";
+}
+
 void setEnvironmentDefault(const std::string& name, const std::string& value) {
   const std::wstring wideName = wideFromUtf8(name);
   if (::GetEnvironmentVariableW(wideName.c_str(), nullptr, 0) > 0) return;
