@@ -500,8 +500,8 @@ void writeGradescope(const std::string& path, const GradeReport& report, const T
   std::vector<double> points;
   for (const std::string& key : keys) points.push_back(thresholds.forScene(key).points);
   const std::string json = gradescopeResults(report, points);
-  writeFileAtomic(path, ".json.tmp", [&](int fd) {
-    writeAll(fd, reinterpret_cast<const std::uint8_t*>(json.data()), json.size(), path);
+  writeFileAtomic(path, ".json.tmp", [&](ByteSink& file) {
+    file.write(reinterpret_cast<const std::uint8_t*>(json.data()), json.size());
   });
 }
 

@@ -75,8 +75,8 @@ std::string submissionFolder(std::size_t submission) {
 }
 
 void writeText(const std::string& path, const std::string& text) {
-  writeFileAtomic(path, ".tmp", [&](int fd) {
-    writeAll(fd, reinterpret_cast<const std::uint8_t*>(text.data()), text.size(), path);
+  writeFileAtomic(path, ".tmp", [&](ByteSink& file) {
+    file.write(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
   });
 }
 

@@ -157,29 +157,6 @@ OutputFile resolveOutputFile(const std::string& path) {
   return out;
 }
 
-void writeAll(int fd, const std::uint8_t* data, std::size_t size, const std::string& path) {
-  while (size > 0) {
-    const std::int64_t n = platform::writeSome(fd, data, size);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw IoError("cannot write '" + abbreviated(path) + "': " + std::strerror(errno));
-    }
-    data += n;
-    size -= static_cast<std::size_t>(n);
-  }
-}
-
-void writeAllAt(int fd, const std::uint8_t* data, std::size_t size, std::uint64_t offset, const std::string& path) {
-  while (size > 0) {
-    const std::int64_t n = platform::writeSomeAt(fd, data, size, offset);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw IoError("cannot write '" + path + "': " + (n < 0 ? std::strerror(errno) : "no progress"));
-    data += n;
-    size -= static_cast<std::size_t>(n);
-    offset += static_cast<std::uint64_t>(n);
-  }
-}
-
 void checkOutputWritable(const std::string& path) {
   OutputFile out = resolveOutputFile(path);
   if (out.exists && !platform::isWritable(out.target))
@@ -196,7 +173,7 @@ void checkOutputWritable(const std::string& path) {
   registerTemporaryFile(nullptr);
 }
 
-void writeFileAtomic(const std::string& path, const char* suffix, const std::function<void(int fd)>& write) {
+void writeFileAtomic(const std::string& path, const char* suffix, const std::function<void(ByteSink& file)>& write) {
   const OutputFile out = resolveOutputFile(path);
   const std::string name = abbreviated(path);
   const std::string dir = directoryOf(out.target);
@@ -219,7 +196,8 @@ void writeFileAtomic(const std::string& path, const char* suffix, const std::fun
       platform::setOpenMode(fd, 0666 & ~platform::creationMask());
     }
     waitForSignalIfTesting("write");
-    write(fd);
+    FileSink file(fd, path);
+    write(file);
     if (platform::syncFile(fd) != 0 && errno != EINVAL) throw IoError("cannot write '" + name + "': " + std::strerror(errno));
     const int closed = platform::closeFile(fd);
     fd = -1;

@@ -1,6 +1,7 @@
 // Writing a file whole or not at all (temporary file beside the target, then rename), for
 // every image format, and the one place that decides what an output path names on the file
-// system. Depends on nothing but errors.h, interrupt.h and the platform layer's file functions.
+// system. Depends on nothing but errors.h, interrupt.h, byte_sink.h and the platform layer's
+// file functions.
 //
 // What writing an output does to the user's files:
 //  - a symbolic link is followed (through every link) and its target replaced; the link
@@ -12,11 +13,10 @@
 //  - an existing file that this user may not write is refused, as a plain create would be.
 #pragma once
 
-#include <cstddef>
-#include <cstdint>
 #include <functional>
 #include <string>
 
+#include "image/byte_sink.h"
 #include "platform/file_status.h"
 
 namespace vkrt {
@@ -41,17 +41,12 @@ OutputFile resolveOutputFile(const std::string& path);
 // directory of its target is writable, and an existing file too).
 void checkOutputWritable(const std::string& path);
 
-// Calls `write(fd)` on a temporary file beside the target of `path` (named
-// .vkrt-XXXXXX`suffix`), then renames it over the target, so an existing file is replaced
-// whole or not at all. Throws IoError (and whatever `write` throws, e.g. Interrupted); no
-// temporary file is left behind. A signal caught by interrupt.h's handlers (SIGINT,
-// SIGTERM, SIGHUP) stops the write before the rename: the temporary file is removed.
-void writeFileAtomic(const std::string& path, const char* suffix, const std::function<void(int fd)>& write);
-
-// Writes all of `data` to `fd`, or throws IoError naming `path`.
-void writeAll(int fd, const std::uint8_t* data, std::size_t size, const std::string& path);
-// The same at `offset` (pwrite), the file's own position left alone: for formats whose rows
-// or tables are placed. Throws IoError naming `path` as given.
-void writeAllAt(int fd, const std::uint8_t* data, std::size_t size, std::uint64_t offset, const std::string& path);
+// Calls `write` with a FileSink (image/byte_sink.h; its errors name `path`) over a temporary
+// file beside the target of `path` (named .vkrt-XXXXXX`suffix`), then renames it over the
+// target, so an existing file is replaced whole or not at all. Throws IoError (and whatever
+// `write` throws, e.g. Interrupted); no temporary file is left behind. A signal caught by
+// interrupt.h's handlers (SIGINT, SIGTERM, SIGHUP) stops the write before the rename: the
+// temporary file is removed.
+void writeFileAtomic(const std::string& path, const char* suffix, const std::function<void(ByteSink& file)>& write);
 
 }  // namespace vkrt

@@ -16,7 +16,6 @@
 #include <string_view>
 
 #include "util/errors.h"
-#include "image/atomic_file.h"
 #include "util/interrupt.h"
 
 namespace vkrt {
@@ -36,16 +35,16 @@ char* frameBase(const float* first, std::int64_t x0, std::int64_t y0, std::int64
   return reinterpret_cast<char*>(reinterpret_cast<std::uintptr_t>(first) - static_cast<std::uintptr_t>(offset));
 }
 
-// An OpenEXR output stream over an open file, written at the stream's place (the library
+// An OpenEXR output stream over a ByteSink, written at the stream's place (the library
 // seeks back to fill in the line offsets). A failed write is kept and reported again by
 // check(): OpenEXR also writes from its destructor, which swallows what it throws.
-class FdStream : public Imf::OStream {
+class SinkStream : public Imf::OStream {
  public:
-  FdStream(int fd, const std::string& path) : Imf::OStream(path.c_str()), fd_(fd), path_(path) {}
+  SinkStream(ByteSink& sink, const std::string& path) : Imf::OStream(path.c_str()), sink_(sink) {}
   void write(const char c[], int n) override {
     check();
     try {
-      writeAllAt(fd_, reinterpret_cast<const std::uint8_t*>(c), static_cast<std::size_t>(n), place_, path_);
+      sink_.writeAt(reinterpret_cast<const std::uint8_t*>(c), static_cast<std::size_t>(n), place_);
     } catch (const IoError& e) {
       error_ = e.what();
       throw;
@@ -59,8 +58,7 @@ class FdStream : public Imf::OStream {
   }
 
  private:
-  int fd_;
-  std::string path_;
+  ByteSink& sink_;
   std::uint64_t place_ = 0;
   std::string error_;   // the first failed write's message
 };
@@ -100,21 +98,22 @@ RadianceImage infoOf(const Imf::InputFile& file, const std::string& path) {
 }  // namespace
 
 struct ExrRowWriter::State {
-  State(int fd, const std::string& name, const Imf::Header& header)
-      : stream(fd, name), file(std::make_unique<Imf::OutputFile>(stream, header)), path(name) {}
-  FdStream stream;                        // outlives the file, which writes to it as it closes
+  State(ByteSink& sink, const std::string& name, const Imf::Header& header)
+      : stream(sink, name), file(std::make_unique<Imf::OutputFile>(stream, header)), path(name) {}
+  SinkStream stream;                      // outlives the file, which writes to it as it closes
   std::unique_ptr<Imf::OutputFile> file;
   int width = 0, height = 0, next = 0;
   std::string path;
 };
 
-ExrRowWriter::ExrRowWriter(int fd, int width, int height, const ImageRecords& records, const std::string& path) {
+ExrRowWriter::ExrRowWriter(ByteSink& sink, int width, int height, const ImageRecords& records,
+                           const std::string& path) {
   try {
     Imf::Header header(width, height);
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const char* c : kChannels) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
     for (const auto& [keyword, text] : records) header.insert(keyword, Imf::StringAttribute(text));
-    state_ = std::make_unique<State>(fd, path, header);
+    state_ = std::make_unique<State>(sink, path, header);
   } catch (const IoError&) {
     throw;
   } catch (const std::exception& e) {
@@ -157,9 +156,9 @@ void ExrRowWriter::finish() {
   state_->stream.check();
 }
 
-std::unique_ptr<RowWriter> openExrRows(int fd, int width, int height, const ImageRecords& records,
+std::unique_ptr<RowWriter> openExrRows(ByteSink& sink, int width, int height, const ImageRecords& records,
                                        const std::string& path) {
-  return std::make_unique<ExrRowWriter>(fd, width, height, records, path);
+  return std::make_unique<ExrRowWriter>(sink, width, height, records, path);
 }
 
 RadianceImage readExr(const std::string& path) {

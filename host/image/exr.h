@@ -10,17 +10,18 @@
 #include <utility>
 #include <vector>
 
+#include "image/byte_sink.h"
 #include "image/image_file.h"
 #include "image/radiance_image.h"
 
 namespace vkrt {
 
-// An EXR written into an open file as its rows come, in order from the top: the header at
+// An EXR written into `sink` as its rows come, in order from the top: the header at
 // construction, each band's rows as they come, the line offsets at finish(). Memory: what
 // OpenEXR buffers of one band. Throws IoError, Interrupted, InternalError for rows out of order.
 class ExrRowWriter : public RowWriter {
  public:
-  ExrRowWriter(int fd, int width, int height, const ImageRecords& records, const std::string& path);
+  ExrRowWriter(ByteSink& sink, int width, int height, const ImageRecords& records, const std::string& path);
   ~ExrRowWriter() override;
   // Rows [y0, y0 + band.height) of the image (band.width == width), after those before them.
   void radianceRows(int y0, const RadianceImage& band) override;
@@ -32,7 +33,7 @@ class ExrRowWriter : public RowWriter {
 };
 
 // An ExrRowWriter, as the table's openRows (image/image_file.h, ImageFormat).
-std::unique_ptr<RowWriter> openExrRows(int fd, int width, int height, const ImageRecords& records,
+std::unique_ptr<RowWriter> openExrRows(ByteSink& sink, int width, int height, const ImageRecords& records,
                                        const std::string& path);
 
 // Reads an EXR's R, G and B channels as float (a missing channel is 0; a file with only Y, a

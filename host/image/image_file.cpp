@@ -194,8 +194,8 @@ std::string bytesAsFloatMessage(const std::string& path) {
 void writeRowsAtomic(const std::string& path, const ImageFormat& format, int width, int height,
                      const ImageRecords& records, const std::function<void(RowWriter&)>& write) {
   const std::string suffix = firstExtension(format) + ".tmp";
-  writeFileAtomic(path, suffix.c_str(), [&](int fd) {
-    std::unique_ptr<RowWriter> writer = format.openRows(fd, width, height, records, path);
+  writeFileAtomic(path, suffix.c_str(), [&](ByteSink& file) {
+    std::unique_ptr<RowWriter> writer = format.openRows(file, width, height, records, path);
     write(*writer);
     writer->finish();
   });

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "util/errors.h"
+#include "image/byte_sink.h"
 #include "image/image.h"
 #include "image/radiance_image.h"
 
@@ -23,7 +24,7 @@ namespace vkrt {
 
 using ImageRecords = std::vector<std::pair<std::string, std::string>>;
 
-// A format's writer over an open file (writeFileAtomic's temporary file: seekable), made by
+// A format's writer into a ByteSink (writeFileAtomic's temporary file, or memory), made by
 // its ImageFormat::openRows, which writes the header. Rows come top first, each once, as
 // bands of whole rows; then finish(). A linear-float format takes radiance rows, an 8-bit one
 // byte rows: callers ask ImageFormat::linearFloat, and the other kind is an InternalError.
@@ -46,8 +47,8 @@ struct ImageFormat {
   std::string_view description;              // after "FILE.ppm writes" in --help: "binary PPM"
   // Whether the file at `path` starts as one (by its first bytes, whatever its name).
   bool (*isFile)(const std::string& path) = nullptr;
-  // The writer of a width x height image with `records` into `fd` (`path` for messages).
-  std::unique_ptr<RowWriter> (*openRows)(int fd, int width, int height, const ImageRecords& records,
+  // The writer of a width x height image with `records` into `sink` (`path` for messages).
+  std::unique_ptr<RowWriter> (*openRows)(ByteSink& sink, int width, int height, const ImageRecords& records,
                                          const std::string& path) = nullptr;
   // The records of a file that isFile. Throws IoError for one that cannot be read or is cut short.
   ImageRecords (*readText)(const std::string& path) = nullptr;

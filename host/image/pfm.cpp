@@ -69,17 +69,13 @@ Header readHeader(std::istream& in, const std::string& path) {
 
 }  // namespace
 
-PfmRowWriter::PfmRowWriter(int fd, int width, int height,
-                           const std::vector<std::pair<std::string, std::string>>& records, const std::string& path)
-    : fd_(fd), width_(width), height_(height), path_(path), records_(records) {
+PfmRowWriter::PfmRowWriter(ByteSink& sink, int width, int height,
+                           const std::vector<std::pair<std::string, std::string>>& records)
+    : sink_(sink), width_(width), height_(height), records_(records) {
   static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559);
   std::string header = "PF\n" + std::to_string(width) + " " + std::to_string(height) + "\n-1.0\n";
-  writeAll(fd, reinterpret_cast<const std::uint8_t*>(header.data()), header.size(), path);
+  sink.write(reinterpret_cast<const std::uint8_t*>(header.data()), header.size());
   headerBytes_ = header.size();
-}
-
-void PfmRowWriter::writeAt(const std::uint8_t* data, std::size_t size, std::uint64_t offset) {
-  writeAllAt(fd_, data, size, offset, path_);
 }
 
 void PfmRowWriter::radianceRows(int y0, const RadianceImage& band) {
@@ -95,8 +91,8 @@ void PfmRowWriter::radianceRows(int y0, const RadianceImage& band) {
       for (std::uint32_t& v : row_) v = byteSwap(v);
     // Image row y0 + y is file row height - 1 - (y0 + y): the raster is bottom row first.
     const auto fileRow = static_cast<std::uint64_t>(height_ - 1 - (y0 + y));
-    writeAt(reinterpret_cast<const std::uint8_t*>(row_.data()), rowFloats * 4,
-            headerBytes_ + fileRow * rowFloats * 4);
+    sink_.writeAt(reinterpret_cast<const std::uint8_t*>(row_.data()), rowFloats * 4,
+                  headerBytes_ + fileRow * rowFloats * 4);
   }
   written_ += static_cast<std::uint64_t>(band.height);
 }
@@ -108,17 +104,17 @@ void PfmRowWriter::finish() {
   std::string trailer = kTrailer;
   for (const auto& [keyword, value] : records_) trailer += keyword + " " + value + "\n";
   const std::uint64_t end = headerBytes_ + static_cast<std::uint64_t>(width_) * 12 * static_cast<std::uint64_t>(height_);
-  writeAt(reinterpret_cast<const std::uint8_t*>(trailer.data()), trailer.size(), end);
+  sink_.writeAt(reinterpret_cast<const std::uint8_t*>(trailer.data()), trailer.size(), end);
 }
 
-std::unique_ptr<RowWriter> openPfmRows(int fd, int width, int height, const ImageRecords& records,
-                                       const std::string& path) {
-  return std::make_unique<PfmRowWriter>(fd, width, height, records, path);
+std::unique_ptr<RowWriter> openPfmRows(ByteSink& sink, int width, int height, const ImageRecords& records,
+                                       const std::string&) {
+  return std::make_unique<PfmRowWriter>(sink, width, height, records);
 }
 
 void writePfmAtomic(const RadianceImage& image, const std::string& path) {
-  writeFileAtomic(path, ".pfm.tmp", [&](int fd) {
-    PfmRowWriter pfm(fd, image.width, image.height, image.text, path);
+  writeFileAtomic(path, ".pfm.tmp", [&](ByteSink& file) {
+    PfmRowWriter pfm(file, image.width, image.height, image.text);
     pfm.radianceRows(0, image);
     pfm.finish();
   });

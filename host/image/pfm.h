@@ -16,34 +16,34 @@
 #include <utility>
 #include <vector>
 
+#include "image/byte_sink.h"
 #include "image/image_file.h"   // RowWriter
 #include "image/radiance_image.h"
 
 namespace vkrt {
 
-// A PFM written into an open (fixed-size, seekable) file as its rows come, top rows first:
-// the header at construction, each band at its place with pwrite (the raster is the bottom
-// row first, so the top band goes at the end), the records' trailer at finish(). Memory: a
-// row. Throws IoError, Interrupted, InternalError for rows outside the image or missing.
+// A PFM written into `sink` as its rows come, top rows first: the header at construction,
+// each band at its place with ByteSink::writeAt (the raster is the bottom row first, so the
+// top band goes at the end), the records' trailer at finish(). Memory: a row. Throws IoError
+// (the sink's), Interrupted, InternalError for rows outside the image or missing.
 class PfmRowWriter : public RowWriter {
  public:
-  PfmRowWriter(int fd, int width, int height, const std::vector<std::pair<std::string, std::string>>& records,
-               const std::string& path);
+  PfmRowWriter(ByteSink& sink, int width, int height,
+               const std::vector<std::pair<std::string, std::string>>& records);
   // Rows [y0, y0 + band.height) of the image (band.width == width).
   void radianceRows(int y0, const RadianceImage& band) override;
   void finish() override;
 
  private:
-  void writeAt(const std::uint8_t* data, std::size_t size, std::uint64_t offset);
-  int fd_, width_, height_;
-  std::string path_;
+  ByteSink& sink_;
+  int width_, height_;
   std::vector<std::pair<std::string, std::string>> records_;
   std::uint64_t headerBytes_ = 0, written_ = 0;
   std::vector<std::uint32_t> row_;
 };
 
 // A PfmRowWriter, as the table's openRows (image/image_file.h, ImageFormat).
-std::unique_ptr<RowWriter> openPfmRows(int fd, int width, int height, const ImageRecords& records,
+std::unique_ptr<RowWriter> openPfmRows(ByteSink& sink, int width, int height, const ImageRecords& records,
                                        const std::string& path);
 
 // Writes `image` (and its records) atomically. Throws IoError (and Interrupted).

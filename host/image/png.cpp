@@ -17,8 +17,6 @@
 
 #include "image/atomic_file.h"
 #include "image/encode.h"
-#include "platform/file_io.h"
-#include "platform/file_status.h"
 #include "util/interrupt.h"
 
 namespace vkrt {
@@ -35,17 +33,17 @@ void putBigEndian(std::vector<std::uint8_t>& out, std::uint32_t v) {
 }
 
 // One PNG chunk: length, type, data, CRC of type and data.
-void writeChunk(int fd, const char type[4], const std::uint8_t* data, std::size_t size, const std::string& path) {
+void writeChunk(ByteSink& sink, const char type[4], const std::uint8_t* data, std::size_t size) {
   std::vector<std::uint8_t> head;
   putBigEndian(head, static_cast<std::uint32_t>(size));
   head.insert(head.end(), type, type + 4);
   uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(type), 4);
   if (size > 0) crc = crc32(crc, data, static_cast<uInt>(size));
-  writeAll(fd, head.data(), head.size(), path);
-  writeAll(fd, data, size, path);
+  sink.write(head.data(), head.size());
+  sink.write(data, size);
   std::vector<std::uint8_t> tail;
   putBigEndian(tail, static_cast<std::uint32_t>(crc));
-  writeAll(fd, tail.data(), tail.size(), path);
+  sink.write(tail.data(), tail.size());
 }
 
 constexpr std::size_t kBpp = 3;   // bytes per pixel: 8-bit RGB
@@ -102,21 +100,21 @@ struct PngRowEncoder::State {
   std::vector<std::uint8_t> above;   // the row before; zeros before the first
 };
 
-PngRowEncoder::PngRowEncoder(int fd, int width, int height,
+PngRowEncoder::PngRowEncoder(ByteSink& sink, int width, int height,
                              const std::vector<std::pair<std::string, std::string>>& records, const std::string& path)
-    : fd_(fd), height_(height), rowBytes_(static_cast<std::size_t>(width) * 3), path_(path),
+    : sink_(sink), height_(height), rowBytes_(static_cast<std::size_t>(width) * 3), path_(path),
       state_(std::make_unique<State>()) {
-  writeAll(fd, kSignature, sizeof kSignature, path);
+  sink.write(kSignature, sizeof kSignature);
   std::vector<std::uint8_t> header;
   putBigEndian(header, static_cast<std::uint32_t>(width));
   putBigEndian(header, static_cast<std::uint32_t>(height));
   header.insert(header.end(), {8, 2, 0, 0, 0});   // 8 bits, RGB, deflate, filters, no interlace
-  writeChunk(fd, "IHDR", header.data(), header.size(), path);
+  writeChunk(sink, "IHDR", header.data(), header.size());
   for (const auto& [keyword, value] : records) {
     std::vector<std::uint8_t> text(keyword.begin(), keyword.end());
     text.push_back(0);
     text.insert(text.end(), value.begin(), value.end());
-    writeChunk(fd, "tEXt", text.data(), text.size(), path);
+    writeChunk(sink, "tEXt", text.data(), text.size());
   }
   if (int rc = deflateInit(&state_->z, 1); rc != Z_OK) {
     if (rc == Z_MEM_ERROR) throw OutOfMemory("no memory for the PNG compressor writing '" + path + "'");
@@ -141,7 +139,7 @@ void PngRowEncoder::pump(int flush) {
     int rc = deflate(&z, flush);
     if (rc == Z_STREAM_ERROR) throw IoError("cannot write '" + path_ + "': zlib failed");
     std::size_t produced = state_->compressed.size() - z.avail_out;
-    if (produced > 0) writeChunk(fd_, "IDAT", state_->compressed.data(), produced, path_);
+    if (produced > 0) writeChunk(sink_, "IDAT", state_->compressed.data(), produced);
   } while (z.avail_out == 0);
 }
 
@@ -160,20 +158,20 @@ void PngRowEncoder::finish() {
   if (rows_ != height_)
     throw InternalError("PngRowEncoder: " + std::to_string(rows_) + " rows of " + std::to_string(height_));
   pump(Z_FINISH);
-  writeChunk(fd_, "IEND", nullptr, 0, path_);
+  writeChunk(sink_, "IEND", nullptr, 0);
 }
 
 void writePngAtomic(const Image& image, const std::string& path) {
-  writeFileAtomic(path, ".png.tmp", [&](int fd) {
-    PngRowEncoder png(fd, image.width, image.height, image.text, path);
+  writeFileAtomic(path, ".png.tmp", [&](ByteSink& file) {
+    PngRowEncoder png(file, image.width, image.height, image.text, path);
     for (int y = 0; y < image.height; ++y) png.row(image.pixel(0, y));
     png.finish();
   });
 }
 
 void writePngAtomic(const RadianceImage& image, double gamma, const std::string& path) {
-  writeFileAtomic(path, ".png.tmp", [&](int fd) {
-    PngRowEncoder png(fd, image.width, image.height, image.text, path);
+  writeFileAtomic(path, ".png.tmp", [&](ByteSink& file) {
+    PngRowEncoder png(file, image.width, image.height, image.text, path);
     std::vector<std::uint8_t> bytes(static_cast<std::size_t>(image.width) * 3);
     for (int y = 0; y < image.height; ++y) {
       encodeRow(image.pixel(0, y), bytes.size(), gamma, bytes.data());
@@ -184,35 +182,24 @@ void writePngAtomic(const RadianceImage& image, double gamma, const std::string&
 }
 
 std::string pngBytes(const RadianceImage& image, double gamma) {
-  const int fd = platform::openMemoryFile();
-  if (fd < 0) throw IoError(std::string("cannot encode a PNG in memory: ") + std::strerror(errno));
-  std::unique_ptr<int, void (*)(int*)> closer(new int(fd), [](int* f) {
-    platform::closeFile(*f);
-    delete f;
-  });
-  const std::string name = "(a PNG in memory)";
-  PngRowEncoder png(fd, image.width, image.height, {}, name);
+  MemorySink sink;
+  PngRowEncoder png(sink, image.width, image.height, {}, "(a PNG in memory)");
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(image.width) * 3);
   for (int y = 0; y < image.height; ++y) {
     encodeRow(image.pixel(0, y), bytes.size(), gamma, bytes.data());
     png.row(bytes.data());
   }
   png.finish();
-  const platform::FileStatus st = platform::statusOfOpen(fd);
-  if (!st.found()) errno = st.error;
-  std::string out(static_cast<std::size_t>(st.size), '\0');
-  if (!st.found() || platform::readSomeAt(fd, out.data(), out.size(), 0) != static_cast<std::int64_t>(st.size))
-    throw IoError(std::string("cannot read back a PNG encoded in memory: ") + std::strerror(errno));
-  return out;
+  return sink.take();
 }
 
 void PngRowEncoder::byteRows(int, const Image& band) {
   for (int y = 0; y < band.height; ++y) row(band.pixel(0, y));
 }
 
-std::unique_ptr<RowWriter> openPngRows(int fd, int width, int height, const ImageRecords& records,
+std::unique_ptr<RowWriter> openPngRows(ByteSink& sink, int width, int height, const ImageRecords& records,
                                        const std::string& path) {
-  return std::make_unique<PngRowEncoder>(fd, width, height, records, path);
+  return std::make_unique<PngRowEncoder>(sink, width, height, records, path);
 }
 
 bool isPngFile(const std::string& path) {

@@ -11,20 +11,21 @@
 
 #include "util/errors.h"
 #include "image/atomic_file.h"   // checkOutputWritable
+#include "image/byte_sink.h"
 #include "image/image.h"
 #include "image/image_file.h"   // RowWriter; readImage, which reads PNG
 #include "image/radiance_image.h"
 
 namespace vkrt {
 
-// A PNG written into an open file row by row, top first: the header and the records (tEXt
+// A PNG written into `sink` row by row, top first: the header and the records (tEXt
 // chunks) at construction, each row (width * 3 bytes) filtered and deflated as it comes, the
 // end at finish(). Memory: a few rows and zlib's state. Throws IoError, OutOfMemory,
 // Interrupted (polled per row), InternalError for more or fewer rows than `height`.
 class PngRowEncoder : public RowWriter {
  public:
-  PngRowEncoder(int fd, int width, int height, const std::vector<std::pair<std::string, std::string>>& records,
-                const std::string& path);
+  PngRowEncoder(ByteSink& sink, int width, int height,
+                const std::vector<std::pair<std::string, std::string>>& records, const std::string& path);
   ~PngRowEncoder() override;
   PngRowEncoder(const PngRowEncoder&) = delete;
   PngRowEncoder& operator=(const PngRowEncoder&) = delete;
@@ -36,7 +37,8 @@ class PngRowEncoder : public RowWriter {
  private:
   struct State;
   void pump(int flush);
-  int fd_, height_, rows_ = 0;
+  ByteSink& sink_;
+  int height_, rows_ = 0;
   std::size_t rowBytes_;
   std::string path_;
   std::unique_ptr<State> state_;
@@ -50,14 +52,15 @@ void writePngAtomic(const Image& image, const std::string& path);
 // 8-bit copy of the image is made.
 void writePngAtomic(const RadianceImage& image, double gamma, const std::string& path);
 
-// The PNG file of a render (each row encoded with `gamma`), in memory: for `vkrt view`'s
-// page. Throws IoError, OutOfMemory, Interrupted.
+// The PNG file of a render (each row encoded with `gamma`) for `vkrt view`'s page, made in
+// memory (a MemorySink): the bytes writePngAtomic writes for the image without its records.
+// Throws IoError, OutOfMemory, Interrupted.
 std::string pngBytes(const RadianceImage& image, double gamma);
 
 // The table's functions (image/image_file.h, ImageFormat): a PngRowEncoder; whether the file
 // starts with the PNG signature; its tEXt chunks, read without decoding the image. readPngText
 // throws IoError for a file that cannot be read or ends before its IEND chunk.
-std::unique_ptr<RowWriter> openPngRows(int fd, int width, int height, const ImageRecords& records,
+std::unique_ptr<RowWriter> openPngRows(ByteSink& sink, int width, int height, const ImageRecords& records,
                                        const std::string& path);
 bool isPngFile(const std::string& path);
 ImageRecords readPngText(const std::string& path);

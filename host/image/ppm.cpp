@@ -22,12 +22,11 @@ namespace {
 
 class PpmRowWriter : public RowWriter {
  public:
-  PpmRowWriter(int fd, int width, int height, const ImageRecords& records, const std::string& path)
-      : fd_(fd), height_(height), path_(path) {
+  PpmRowWriter(ByteSink& sink, int width, int height, const ImageRecords& records) : sink_(sink), height_(height) {
     std::string header = "P6\n";
     for (const auto& [keyword, value] : records) header += "# " + keyword + " " + value + "\n";
     header += std::to_string(width) + " " + std::to_string(height) + "\n255\n";
-    writeAll(fd, reinterpret_cast<const std::uint8_t*>(header.data()), header.size(), path);
+    sink.write(reinterpret_cast<const std::uint8_t*>(header.data()), header.size());
   }
 
   void byteRows(int, const Image& band) override {
@@ -35,8 +34,7 @@ class PpmRowWriter : public RowWriter {
     for (int y = 0; y < band.height; y += kRowsPerWrite) {
       throwIfInterrupted();
       int rows = std::min(kRowsPerWrite, band.height - y);
-      writeAll(fd_, band.pixel(0, y), static_cast<std::size_t>(rows) * static_cast<std::size_t>(band.width) * 3,
-               path_);
+      sink_.write(band.pixel(0, y), static_cast<std::size_t>(rows) * static_cast<std::size_t>(band.width) * 3);
     }
     rows_ += band.height;
   }
@@ -47,20 +45,20 @@ class PpmRowWriter : public RowWriter {
   }
 
  private:
-  int fd_, height_, rows_ = 0;
-  std::string path_;
+  ByteSink& sink_;
+  int height_, rows_ = 0;
 };
 
 }  // namespace
 
-std::unique_ptr<RowWriter> openPpmRows(int fd, int width, int height, const ImageRecords& records,
-                                       const std::string& path) {
-  return std::make_unique<PpmRowWriter>(fd, width, height, records, path);
+std::unique_ptr<RowWriter> openPpmRows(ByteSink& sink, int width, int height, const ImageRecords& records,
+                                       const std::string&) {
+  return std::make_unique<PpmRowWriter>(sink, width, height, records);
 }
 
 void writePpmAtomic(const Image& image, const std::string& path) {
-  writeFileAtomic(path, ".ppm.tmp", [&](int fd) {
-    PpmRowWriter ppm(fd, image.width, image.height, image.text, path);
+  writeFileAtomic(path, ".ppm.tmp", [&](ByteSink& file) {
+    PpmRowWriter ppm(file, image.width, image.height, image.text);
     ppm.byteRows(0, image);
     ppm.finish();
   });

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "image/byte_sink.h"
 #include "image/image.h"
 #include "image/image_file.h"   // RowWriter
 
@@ -22,7 +23,7 @@ void writePpmAtomic(const Image& image, const std::string& path);
 // ("P6", a "# KEYWORD TEXT" line per record, "W H", "255") and returns the writer of the
 // rows as they are. isPpmFile: the file starts with "P6". readPpmText: the header's comment
 // lines, after checking that the raster is all there; throws IoError.
-std::unique_ptr<RowWriter> openPpmRows(int fd, int width, int height, const ImageRecords& records,
+std::unique_ptr<RowWriter> openPpmRows(ByteSink& sink, int width, int height, const ImageRecords& records,
                                        const std::string& path);
 bool isPpmFile(const std::string& path);
 ImageRecords readPpmText(const std::string& path);

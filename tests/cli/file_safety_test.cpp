@@ -421,10 +421,10 @@ TEST(FileSafety, AFailedWriteLeavesNoTemporaryFile) {
   const std::string target = dir + "/o.png";
   writeFile(target, kPrecious);
   bool sawTemporary = false;
-  auto replaceByDirectory = [&](int fd) {
+  auto replaceByDirectory = [&](ByteSink& file) {
     sawTemporary = leftovers(dir).size() == 1;
     const std::uint8_t bytes[] = {1, 2, 3};
-    writeAll(fd, bytes, sizeof bytes, target);
+    file.write(bytes, sizeof bytes);
     fs::remove(target);
     fs::create_directory(target);
     writeFile(target + "/inside", "x");   // a non-empty directory: rename onto it fails
@@ -435,7 +435,7 @@ TEST(FileSafety, AFailedWriteLeavesNoTemporaryFile) {
   EXPECT_TRUE(fileExists(target + "/inside"));
   fs::remove_all(target);
   writeFile(target, kPrecious);
-  EXPECT_THROW(writeFileAtomic(target, ".png.tmp", [](int) { throw IoError("disk full (test)"); }), IoError);
+  EXPECT_THROW(writeFileAtomic(target, ".png.tmp", [](ByteSink&) { throw IoError("disk full (test)"); }), IoError);
   EXPECT_TRUE(leftovers(dir).empty());
   EXPECT_EQ(readFile(target), kPrecious);
 }

@@ -29,8 +29,8 @@ std::string readBytes(const std::string& path) {
 }
 
 void writeAtomic(const std::string& path, const std::string& bytes) {
-  writeFileAtomic(path, ".bin.tmp", [&](int fd) {
-    writeAll(fd, reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), path);
+  writeFileAtomic(path, ".bin.tmp", [&](ByteSink& file) {
+    file.write(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
   });
 }
 

@@ -94,8 +94,8 @@ TEST(PathText, AnOutputInANonAsciiFolderIsWrittenThere) {
   const vkrt::OutputFile resolved = vkrt::resolveOutputFile(out);
   EXPECT_FALSE(resolved.exists);
   EXPECT_EQ(utf8FromPath(pathFromUtf8(resolved.canonical).filename()), kFile);
-  vkrt::writeFileAtomic(out, ".txt.tmp", [&](int fd) {
-    vkrt::writeAll(fd, reinterpret_cast<const std::uint8_t*>("written"), 7, out);
+  vkrt::writeFileAtomic(out, ".txt.tmp", [&](vkrt::ByteSink& file) {
+    file.write(reinterpret_cast<const std::uint8_t*>("written"), 7);
   });
   EXPECT_EQ(readBytes(folder / pathFromUtf8(kFile)), "written");
   std::vector<std::string> names;
