@@ -18,10 +18,6 @@ int openForReading(const std::string& path);
 // is not there; never through a symbolic link at the end (O_NOFOLLOW: the open fails).
 int openForAppending(const std::string& path, unsigned mode);
 
-// An anonymous file for bytes made in memory: deleted when closed (memfd_create; Windows: a
-// temporary file that the system deletes on close).
-int openMemoryFile();
-
 // Up to `size` bytes read (read): the count, 0 at the end, -1 with errno set (EINTR: a signal).
 std::int64_t readSome(int fd, void* data, std::size_t size);
 // The same at `offset`, the file's position left alone (pread).

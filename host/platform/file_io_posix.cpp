@@ -4,7 +4,6 @@
 #include <cerrno>
 
 #include <fcntl.h>
-#include <sys/mman.h>   // memfd_create
 #include <unistd.h>
 
 namespace vkrt::platform {
@@ -13,17 +12,6 @@ int openForReading(const std::string& path) { return ::open(path.c_str(), O_RDON
 
 int openForAppending(const std::string& path, unsigned mode) {
   return ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC, static_cast<mode_t>(mode));
-}
-
-int openMemoryFile() {
-#ifdef __linux__
-  return ::memfd_create("vkrt", MFD_CLOEXEC);
-#else   // macOS: a file in the temporary folder, its name removed at once
-  char name[] = "/tmp/vkrt-memory-XXXXXX";
-  const int fd = ::mkstemp(name);
-  if (fd >= 0) ::unlink(name);
-  return fd;
-#endif
 }
 
 std::int64_t readSome(int fd, void* data, std::size_t size) { return ::read(fd, data, size); }

@@ -6,18 +6,12 @@
 #include <cerrno>
 #include <climits>
 
-#define WIN32_LEAN_AND_MEAN
-#ifndef NOMINMAX
-#  define NOMINMAX   // std::min and std::max, not windows.h's macros
-#endif
-#include <windows.h>
 #include <fcntl.h>
 #include <io.h>
 #include <sys/stat.h>
 
 #include "platform/file_status.h"
 #include "platform/utf8.h"
-#include "platform/win32_errors.h"
 
 namespace vkrt::platform {
 namespace {
@@ -49,24 +43,6 @@ int openForAppending(const std::string& path, unsigned mode) {
   // Windows has no O_NOFOLLOW; a symbolic link there needs an administrator or developer mode.
   return ::_wopen(wideFromUtf8(path).c_str(), _O_WRONLY | _O_APPEND | _O_CREAT | _O_BINARY | _O_NOINHERIT,
                   (mode & 0200) != 0 ? _S_IREAD | _S_IWRITE : _S_IREAD);
-}
-
-int openMemoryFile() {
-  wchar_t folder[MAX_PATH + 1] = {};
-  wchar_t name[MAX_PATH + 1] = {};
-  if (::GetTempPathW(MAX_PATH + 1, folder) == 0 || ::GetTempFileNameW(folder, L"vkr", 0, name) == 0)
-    return failWithLastError();
-  // Kept in memory as long as the cache allows (FILE_ATTRIBUTE_TEMPORARY), gone when closed.
-  HANDLE h = ::CreateFileW(name, GENERIC_READ | GENERIC_WRITE, 0, nullptr, CREATE_ALWAYS,
-                           FILE_ATTRIBUTE_TEMPORARY | FILE_FLAG_DELETE_ON_CLOSE, nullptr);
-  if (h == INVALID_HANDLE_VALUE) {
-    const int result = failWithLastError();
-    ::DeleteFileW(name);
-    return result;
-  }
-  const int fd = ::_open_osfhandle(reinterpret_cast<intptr_t>(h), _O_BINARY);
-  if (fd < 0) ::CloseHandle(h);
-  return fd;
 }
 
 std::int64_t readSome(int fd, void* data, std::size_t size) { return ::_read(fd, data, chunk(size)); }

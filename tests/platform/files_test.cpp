@@ -274,19 +274,6 @@ TEST(PlatformFiles, SymbolicLinksAreReadAndFollowed) {
             (fs::path(realFolder) / "x" / "z.png").string());
 }
 
-// Bytes made in memory are read back whole from the start.
-TEST(PlatformFiles, AMemoryFileGivesBackWhatWasWritten) {
-  const int fd = openMemoryFile();
-  ASSERT_GE(fd, 0) << errno;
-  const std::string bytes("\x89PNG\r\n\x1A\n and more", 18);
-  EXPECT_EQ(writeSome(fd, bytes.data(), bytes.size()), 18);
-  EXPECT_EQ(statusOfOpen(fd).size, 18u);
-  std::string back(18, '\0');
-  EXPECT_EQ(readSomeAt(fd, back.data(), back.size(), 0), 18);
-  EXPECT_EQ(back, bytes);
-  EXPECT_EQ(closeFile(fd), 0);
-}
-
 // Permission bits as the system keeps them: all of them on POSIX, the write bit alone on
 // Windows (the read-only attribute).
 TEST(PlatformFiles, PermissionBits) {
