@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <string_view>
 
 #include "util/errors.h"             // UsageError
 #include "platform/path_text.h"
@@ -81,8 +82,7 @@ void refuseStandardOutput(const std::string& option, const std::string& path) {
 }
 
 bool endsInSeparator(const std::string& path) {
-  return !path.empty() &&
-         (path.back() == '/' || path.back() == static_cast<char>(std::filesystem::path::preferred_separator));
+  return !path.empty() && std::string_view(platform::kPathSeparators).find(path.back()) != std::string_view::npos;
 }
 
 // "output file 'x.bmp' is not named .png, .ppm or .pfm: vkrt writes PNG, under that name":

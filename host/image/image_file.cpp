@@ -39,7 +39,7 @@ namespace {
 
 // The extension of the last path component, lower-cased, without the dot ("" when none).
 std::string extensionOf(const std::string& path) {
-  std::size_t slash = path.find_last_of('/');
+  std::size_t slash = path.find_last_of(platform::kPathSeparators);
   std::size_t start = slash == std::string::npos ? 0 : slash + 1;
   std::size_t dot = path.rfind('.');
   if (dot == std::string::npos || dot < start) return {};

@@ -13,6 +13,14 @@
 
 namespace vkrt::platform {
 
+// The characters that end a folder's name in a path: the slash (POSIX, where a backslash may
+// be part of a name), the slash and the backslash (Windows).
+#ifdef _WIN32
+inline constexpr const char* kPathSeparators = "/\\";
+#else
+inline constexpr const char* kPathSeparators = "/";
+#endif
+
 // The path that the UTF-8 name `text` stands for. On Windows invalid UTF-8 becomes U+FFFD,
 // as for every other file function of this layer (utf8.h), so both name the same file.
 std::filesystem::path pathFromUtf8(const std::string& text);
