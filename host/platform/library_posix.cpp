@@ -1,6 +1,8 @@
 // Libraries opened at run time on POSIX: dlopen (library.h).
 #include "platform/library.h"
 
+#include <cstddef>
+
 #include <dlfcn.h>
 #if defined(VKRT_SANITIZE_BUILD) && defined(__linux__)
 #  include <link.h>
