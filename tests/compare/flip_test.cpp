@@ -128,6 +128,12 @@ TEST(Flip, PercentilesAreNearestRank) {
   map.width = 3, map.error = {0.3f, 0.1f, 0.2f};
   EXPECT_FLOAT_EQ(static_cast<float>(flipStats(map).median), 0.2f);
   EXPECT_FLOAT_EQ(static_cast<float>(flipStats(map).p95), 0.3f);
+  // 11 values, where rounding the rank would differ: p95's rank is ceil(10.45) = 11, the
+  // largest, not the 10th; the median's ceil(5.5) = 6.
+  map.width = 11, map.error.clear();
+  for (int i = 11; i >= 1; --i) map.error.push_back(static_cast<float>(i) / 100.0f);
+  EXPECT_FLOAT_EQ(static_cast<float>(flipStats(map).p95), 0.11f);
+  EXPECT_FLOAT_EQ(static_cast<float>(flipStats(map).median), 0.06f);
 }
 
 TEST(Flip, MagmaRunsFromNearBlackToPaleYellow) {

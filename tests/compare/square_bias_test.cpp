@@ -157,6 +157,49 @@ TEST(SquareBias, ASquareThatDrewNoBrightSampleIsJudgedByItsNeighboursSpread) {
   EXPECT_GT(biasTest(image(20), ref).worst.z, kDefaultMaxBiasZ);
 }
 
+namespace {
+
+// A grey image of 16-pixel squares: each square's 256 pixels 240 a little dark and 16 bright
+// (mean difference 0 against a reference of 100: correct, skewed noise), but for the square at
+// (calmX, calmY), which drew no bright sample: darker by `darkness`, and calm.
+Image skewedSquaresWithACalmOne(int width, int height, int calmX, int calmY, int darkness) {
+  Image img(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const bool calm = x >= calmX && x < calmX + 16 && y >= calmY && y < calmY + 16;
+      const int i = (y % 16) * 16 + x % 16;
+      const int v = calm ? 100 - darkness + (i % 3) - 1 : (i % 16 == 0 ? 175 : 95);
+      for (int c = 0; c < 3; ++c) img.pixel(x, y)[c] = static_cast<std::uint8_t>(v);
+    }
+  return img;
+}
+
+Image grey(int width, int height) {
+  Image ref(width, height);
+  std::fill(ref.rgb.begin(), ref.rgb.end(), std::uint8_t{100});
+  return ref;
+}
+
+}  // namespace
+
+// The spread a calm square is judged by comes from every side of it: here from the row of
+// squares below alone (a grid one square wide, the calm square on top), and from the column to
+// its right alone (a grid one square high, the calm square first). Either way the calm square passes, weighed (z over
+// 1), and fails darker by 20.
+TEST(SquareBias, TheSpreadAroundASquareComesFromBelowAndFromBesideIt) {
+  const BiasTest onTop = biasTest(skewedSquaresWithACalmOne(16, 32, 0, 0, 5), grey(16, 32));
+  EXPECT_LT(onTop.worst.z, kDefaultMaxBiasZ);
+  EXPECT_GT(onTop.worst.z, 1.0);
+  EXPECT_EQ(onTop.worst.square.y0, 0);
+  EXPECT_GT(biasTest(skewedSquaresWithACalmOne(16, 32, 0, 0, 20), grey(16, 32)).worst.z, kDefaultMaxBiasZ);
+  const BiasTest inARow = biasTest(skewedSquaresWithACalmOne(32, 16, 0, 0, 5), grey(32, 16));
+  EXPECT_EQ(inARow.squares, 2);
+  EXPECT_LT(inARow.worst.z, kDefaultMaxBiasZ);
+  EXPECT_GT(inARow.worst.z, 1.0);
+  EXPECT_EQ(inARow.worst.square.x0, 0);
+  EXPECT_GT(biasTest(skewedSquaresWithACalmOne(32, 16, 0, 0, 20), grey(32, 16)).worst.z, kDefaultMaxBiasZ);
+}
+
 TEST(SquareBias, ImagesOfTwoSizesAreRefused) {
   EXPECT_THROW(biasTest(Image(16, 16), Image(16, 17)), std::invalid_argument);
 }
