@@ -269,7 +269,7 @@ struct Rendered {
 };
 
 Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& scenes,
-                      const std::vector<SceneReference>& refs, int& status) {
+                      const std::vector<SceneReference>& refs, const std::vector<TeachersFile>& teachers, int& status) {
   Rendered r;
   r.submission.name = "vkrt";
   r.submission.folder = "rendered by this run";
@@ -288,6 +288,13 @@ Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& sce
       continue;
     }
     r.submission.images[key] = scene;
+    // A scene file given is the student's when it is not the teacher's, nor a link out of its folder.
+    fs::path folder = pathFromUtf8(scene).parent_path();
+    if (folder.empty()) folder = ".";
+    if (std::string why = notStudentsOwn(scene, utf8FromPath(folder), teachers); !why.empty()) {
+      r.errors[key] = {why, 0};
+      continue;
+    }
     RenderRequest request = o.request;
     request.scenePath = scene;
     request.onWarnings = warningPrinter(o.quiet);
@@ -494,6 +501,20 @@ void applySceneFiles(ThresholdTable& thresholds, const std::vector<std::string>&
   }
 }
 
+// The teacher's files that no submitted file may be: the reference images, the scene files
+// beside them, the thresholds file.
+std::vector<TeachersFile> teachersFiles(const std::vector<SceneReference>& refs, const std::string& references,
+                                        const std::optional<std::string>& thresholdsFile) {
+  std::vector<TeachersFile> files;
+  auto add = [&](const std::string& path, const std::string& role) {
+    if (std::optional<TeachersFile> f = teachersFile(path, role)) files.push_back(std::move(*f));
+  };
+  for (const SceneReference& r : refs) add(r.path, "the reference image");
+  for (const auto& [key, file] : sceneFilesByKey({}, references)) add(file, "the reference scene file");
+  if (thresholdsFile) add(*thresholdsFile, "the thresholds file");
+  return files;
+}
+
 // Gradescope's results.json of the report, written whole (--gradescope).
 void writeGradescope(const std::string& path, const GradeReport& report, const ThresholdTable& thresholds,
                      const std::vector<std::string>& keys) {
@@ -518,6 +539,11 @@ std::vector<Job> listJobs(const std::vector<Submission>& submissions, const std:
       auto at = s.images.find(keys[c]);
       if (at == s.images.end()) continue;   // missing
       rs.entries[c].source = at->second;
+      if (auto why = s.refused.find(keys[c]); why != s.refused.end()) {   // not the student's own file
+        rs.entries[c].grade.outcome = GradeOutcome::Unreadable;
+        rs.entries[c].grade.failures.push_back(why->second);
+        continue;
+      }
       if (rendered && i == 0) {
         if (auto err = rendered->errors.find(keys[c]); err != rendered->errors.end()) {
           rs.entries[c].grade.outcome = GradeOutcome::Unreadable;
@@ -554,8 +580,9 @@ int gradeCommand(const GradeOptions& o) {
   thresholds.all = o.thresholds;
   if (o.thresholdsFile) thresholds = readThresholdFile(*o.thresholdsFile, o.thresholds, keys);
   applySceneFiles(thresholds, keys, scenes, o.references, o.quiet);
+  const std::vector<TeachersFile> teachers = teachersFiles(refs, o.references, o.thresholdsFile);
   std::vector<Submission> submissions;
-  if (!folders.empty()) submissions = findSubmissions(folders, refs, o.oneStudent);
+  if (!folders.empty()) submissions = findSubmissions(folders, refs, o.oneStudent, teachers);
 
   // The references, read before anything is rendered: one that cannot be read stops the run.
   std::vector<GradeReference> references;
@@ -568,7 +595,7 @@ int gradeCommand(const GradeOptions& o) {
   int status = kExitOk;
   std::optional<Rendered> rendered;
   if (!scenes.empty()) {
-    rendered = renderScenes(o, scenes, refs, status);
+    rendered = renderScenes(o, scenes, refs, teachers, status);
     submissions.insert(submissions.begin(), rendered->submission);
   }
 

@@ -2,6 +2,7 @@
 #include "grade/grade_inputs.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cctype>
 #include <filesystem>
 #include <set>
@@ -9,6 +10,8 @@
 
 #include "util/errors.h"
 #include "image/image_file.h"
+#include "platform/error_text.h"
+#include "platform/file_names.h"
 #include "platform/path_text.h"
 #include "util/text.h"   // abbreviated
 
@@ -90,9 +93,16 @@ void noteOthers(Submission& s, const std::vector<std::string>& others) {
     s.notes.push_back("and " + std::to_string(others.size() - kOtherFilesNoted) + " more files that are not images");
 }
 
-// The submission made of `images`, matched to `references` (by key).
+// Whether `inner` is `outer` or lies in it, by their components.
+bool inside(const fs::path& inner, const fs::path& outer) {
+  auto [o, i] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+  return o == outer.end();
+}
+
+// The submission made of `images` in the student's folder `folder`, matched to `references`
+// (by key); an image not the student's own is refused.
 Submission matched(const std::string& name, const std::string& folder, const std::vector<std::string>& images,
-                   const std::set<std::string>& keys) {
+                   const std::set<std::string>& keys, const std::vector<TeachersFile>& teachers) {
   Submission s;
   s.name = name;
   s.folder = folder;
@@ -103,6 +113,8 @@ Submission matched(const std::string& name, const std::string& folder, const std
     } else if (auto [at, added] = s.images.emplace(key, image); !added) {
       s.notes.push_back(abbreviated(image) + ": a second image for " + sceneOfFileName(image) + " (" +
                         abbreviated(at->second) + " is graded)");
+    } else if (std::string why = notStudentsOwn(image, folder, teachers); !why.empty()) {
+      s.refused[key] = why;
     }
   }
   return s;
@@ -117,6 +129,28 @@ std::string baseName(const std::string& folder) {
 }
 
 }  // namespace
+
+std::optional<TeachersFile> teachersFile(const std::string& path, const std::string& role) {
+  const platform::FileStatus st = platform::statusOf(path);
+  if (!st.found()) return std::nullopt;
+  return TeachersFile{path, role, st.identity};
+}
+
+std::string notStudentsOwn(const std::string& path, const std::string& folder, const std::vector<TeachersFile>& teachers) {
+  const std::string graded = "; only the student's own files are graded";
+  if (const platform::FileStatus st = platform::statusOf(path); st.found())
+    for (const TeachersFile& t : teachers)
+      if (st.identity == t.identity)
+        return "'" + abbreviated(path) + "' is the same file as " + t.role + " '" + abbreviated(t.path) +
+               "' (a link to it)" + graded;
+  const std::optional<std::string> real = platform::realPath(path), root = platform::realPath(folder);
+  if (!real || !root)
+    return "'" + abbreviated(path) + "': where it leads cannot be told (" + platform::errorText(errno) + ")" + graded;
+  if (!inside(pathFromUtf8(*real), pathFromUtf8(*root)))
+    return "'" + abbreviated(path) + "' is a link to a file outside the submission ('" + abbreviated(*real) + "')" +
+           graded;
+  return "";
+}
 
 std::string sceneOfFileName(const std::string& path, bool reference) {
   std::string stem = utf8FromPath(pathFromUtf8(path).stem());
@@ -174,7 +208,8 @@ std::vector<SceneReference> findReferences(const std::string& folder) {
 }
 
 std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
-                                        const std::vector<SceneReference>& references, bool oneStudentEach) {
+                                        const std::vector<SceneReference>& references, bool oneStudentEach,
+                                        const std::vector<TeachersFile>& teachers) {
   std::set<std::string> keys;
   for (const SceneReference& r : references) keys.insert(sceneKey(r.scene));
   std::vector<Submission> found;
@@ -186,7 +221,7 @@ std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
     if (oneStudentEach) {   // the folder is one student's, whatever its sub-folders are called
       std::vector<std::string> images, others;
       collectImages(folder, kSubmissionDepth, images, others);
-      Submission s = matched(baseName(folder), folder, images, keys);
+      Submission s = matched(baseName(folder), folder, images, keys, teachers);
       if (images.empty()) s.notes.push_back("no image in " + abbreviated(folder));
       noteOthers(s, others);
       found.push_back(std::move(s));
@@ -200,14 +235,14 @@ std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
     }
     std::vector<Submission> here;
     if (!own.empty()) {
-      here.push_back(matched(baseName(folder), folder, own, keys));
+      here.push_back(matched(baseName(folder), folder, own, keys, teachers));
       noteOthers(here.back(), ownOthers);
     }
     for (const fs::directory_entry& e : entries) {
       if (!isFolder(e)) continue;
       std::vector<std::string> images, others;
       collectImages(utf8FromPath(e.path()), kSubmissionDepth - 1, images, others);
-      here.push_back(matched(utf8FromPath(e.path().filename()), utf8FromPath(e.path()), images, keys));
+      here.push_back(matched(utf8FromPath(e.path().filename()), utf8FromPath(e.path()), images, keys, teachers));
       if (images.empty()) here.back().notes.push_back("no image in " + abbreviated(utf8FromPath(e.path())));
       noteOthers(here.back(), others);
     }

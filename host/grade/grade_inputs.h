@@ -4,8 +4,11 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "platform/file_status.h"
 
 namespace vkrt {
 
@@ -29,11 +32,29 @@ std::string sceneKey(const std::string& scene);
 // no image or two images for one scene.
 std::vector<SceneReference> findReferences(const std::string& folder);
 
+// A file of the teacher's that no submission may be: a reference image, a reference scene
+// file, the thresholds file. A student's link to one would be graded as the student's work.
+struct TeachersFile {
+  std::string path;
+  std::string role;                  // "the reference image", "the thresholds file"...
+  platform::FileIdentity identity;
+};
+// The teacher's file `path`, by its identity (through links); nothing when it is not there.
+std::optional<TeachersFile> teachersFile(const std::string& path, const std::string& role);
+
+// Why the submitted file `path`, found in the student's folder `folder`, is not the student's
+// own: it is the same file as one of `teachers` (a hard link, or a symbolic link, to it), or
+// a symbolic link on its way down from `folder` leads out of that folder (to another student's
+// file, to anything). Empty when it is the student's. `folder` may itself be a link (a class
+// folder of links to the students' folders): the files must lie in the folder it leads to.
+std::string notStudentsOwn(const std::string& path, const std::string& folder, const std::vector<TeachersFile>& teachers);
+
 // One student's images (or one render's, for scene files), by scene key.
 struct Submission {
   std::string name;                             // the student's folder name
   std::string folder;                           // as found, for the report
   std::map<std::string, std::string> images;    // sceneKey -> image path
+  std::map<std::string, std::string> refused;   // sceneKey -> why its image is not graded (notStudentsOwn)
   std::vector<std::string> notes;               // images left out, and why
 };
 
@@ -46,8 +67,11 @@ struct Submission {
 // cannot be listed, UsageError when no submission is found. With `oneStudentEach` each folder
 // is one student's submission, its images looked for down to four levels, and one without an
 // image is a submission with every image missing (as Gradescope hands a submission over).
+// An image that is not the student's own (notStudentsOwn, against `teachers`) is in `refused`
+// too: its scene fails with that reason.
 std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
-                                        const std::vector<SceneReference>& references, bool oneStudentEach = false);
+                                        const std::vector<SceneReference>& references, bool oneStudentEach = false,
+                                        const std::vector<TeachersFile>& teachers = {});
 
 // a < b in the order people count: runs of digits compared as numbers ("scene2" < "scene10").
 bool naturalLess(const std::string& a, const std::string& b);

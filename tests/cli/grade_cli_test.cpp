@@ -411,3 +411,84 @@ TEST(GradeCli, ASceneFileBesideTheReferencesThatCannotBeReadIsSaid) {
   EXPECT_EQ(fine.exitCode, 0) << fine.output;
   EXPECT_FALSE(contains(fine.output, "warning")) << fine.output;
 }
+
+// Only the student's own bytes are graded: a link (symbolic, absolute or relative, or hard) to
+// a reference, a link out of the student's folder (to another student's image, through a
+// linked folder) fails its scene saying what it is, in the report, the summaries and
+// Gradescope's results; the student's own files beside them, and links inside the student's
+// folder, are graded as before.
+TEST(GradeCli, ALinkToAFileOutsideTheSubmissionFailsItsScene) {
+  Class k = makeClass("grade/links");
+  const std::string mallory = k.subs + "/mallory", trudy = k.subs + "/trudy";
+  fs::create_directories(mallory);
+  fs::create_directories(trudy + "/work");
+  fs::create_symlink(k.refs + "/a.png", mallory + "/a.png");         // absolute, to the reference
+  fs::create_symlink("../../refs/b.png", mallory + "/b.png");        // relative, to the reference
+  writePngAtomic(k.c, mallory + "/C.png");                             // her own
+  fs::create_symlink("../alice/d.png", mallory + "/d.png");          // another student's image
+  fs::create_hard_link(k.refs + "/a.png", trudy + "/a.png");           // a hard link to the reference
+  fs::create_symlink(k.subs + "/alice/hw", trudy + "/hw");             // a folder of another student's (b.png)
+  writePngAtomic(k.c, trudy + "/C.png");                               // his own
+  writePngAtomic(k.d, trudy + "/work/final.png");
+  fs::create_symlink("work/final.png", trudy + "/d.png");            // a link inside his folder: his own
+  const std::string report = k.dir + "/report", results = k.dir + "/results.json";
+  RunResult r = runVkrt("grade " + k.refs + " " + k.subs + " -o " + report + " --gradescope " + results);
+  EXPECT_EQ(r.exitCode, 5) << r.output;
+  EXPECT_TRUE(contains(r.output, "vkrt: alice                4/4 pass\n")) << r.output;
+  EXPECT_TRUE(contains(r.output, "vkrt: mallory              1/4 pass; unreadable: a, b, d\n")) << r.output;
+  EXPECT_TRUE(contains(r.output, "vkrt: trudy                2/4 pass; unreadable: a, b\n")) << r.output;
+  const std::string json = readFile(report + "/summary.json");
+  const std::string own = "; only the student's own files are graded";
+  for (const std::string& why :
+       {"'" + mallory + "/a.png' is the same file as the reference image '" + k.refs + "/a.png' (a link to it)" + own,
+        "'" + mallory + "/b.png' is the same file as the reference image '" + k.refs + "/b.png' (a link to it)" + own,
+        "'" + mallory + "/d.png' is a link to a file outside the submission ('" + k.subs + "/alice/d.png')" + own,
+        "'" + trudy + "/a.png' is the same file as the reference image '" + k.refs + "/a.png' (a link to it)" + own,
+        "'" + trudy + "/hw/b.png' is a link to a file outside the submission ('" + k.subs + "/alice/hw/b.png')" + own}) {
+    EXPECT_TRUE(contains(json, "\"status\": \"unreadable\", \"image\": ")) << json;
+    EXPECT_TRUE(contains(json, "\"failures\": [\"" + why + "\"]")) << why << "\n" << json;
+    EXPECT_TRUE(contains(readFile(report + "/summary.csv"), why)) << why;
+    EXPECT_TRUE(contains(readFile(results), why)) << why;
+  }
+  EXPECT_TRUE(contains(readFile(results), "{\"name\": \"mallory: a\", \"score\": 0, \"max_score\": 1, \"status\": \"failed\""))
+      << readFile(results);
+  bool paged = false;   // the reason on the scene's page too
+  for (const auto& e : fs::directory_iterator(report + "/pages"))
+    paged = paged || contains(readFile(e.path().string()), "is a link to a file outside the submission");
+  EXPECT_TRUE(paged);
+
+  // A class folder of links to the students' folders grades as before, and so does a link to
+  // one student's folder given alone.
+  fs::create_directories(k.dir + "/linked");
+  fs::create_symlink("../subs/alice", k.dir + "/linked/alice");
+  fs::create_symlink(k.subs + "/trudy", k.dir + "/linked/trudy");
+  RunResult linked = runVkrt("grade " + k.refs + " " + k.dir + "/linked -o " + report);
+  EXPECT_EQ(linked.exitCode, 4) << linked.output;   // trudy's links: 4 over 5 when nothing else fails
+  EXPECT_TRUE(contains(linked.output, "vkrt: alice                4/4 pass\n")) << linked.output;
+  EXPECT_TRUE(contains(linked.output, "vkrt: trudy                2/4 pass; unreadable: a, b\n")) << linked.output;
+  RunResult one = runVkrt("grade -q --one-student " + k.refs + " " + k.dir + "/linked/alice -o " + report);
+  EXPECT_EQ(one.exitCode, 0) << one.output;
+}
+
+// A scene file given to render that is the teacher's (a hard link to the scene file beside the
+// references) or a link out of its folder is not rendered: its scene fails saying so.
+TEST(GradeCli, ASceneFileThatIsNotTheStudentsIsNotRendered) {
+  std::string dir = freshDir("grade/scene-links");
+  for (const char* f : {"refs", "student", "elsewhere"}) fs::create_directories(dir + "/" + f);
+  writePngAtomic(solid(8, 6, 10, 20, 30), dir + "/refs/box.png");
+  writePngAtomic(solid(8, 6, 10, 20, 30), dir + "/refs/ball.png");
+  writeFile(dir + "/refs/box.test", "size 8 6\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 0 0 0 1\n");
+  writeFile(dir + "/elsewhere/ball.test", "size 8 6\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 0 0 0 1\n");
+  fs::create_hard_link(dir + "/refs/box.test", dir + "/student/box.test");
+  fs::create_symlink("../elsewhere/ball.test", dir + "/student/ball.test");
+  RunResult r = runVkrt("grade --backend cpu " + dir + "/refs " + dir + "/student/box.test " + dir +
+                        "/student/ball.test -o " + dir + "/report");
+  EXPECT_EQ(r.exitCode, 4) << r.output;
+  EXPECT_TRUE(contains(r.output, "vkrt: vkrt                 0/2 pass; unreadable: ball, box\n")) << r.output;
+  EXPECT_FALSE(contains(r.output, "vkrt: rendered")) << r.output;
+  const std::string json = readFile(dir + "/report/summary.json");
+  EXPECT_TRUE(contains(json, "'" + dir + "/student/box.test' is the same file as the reference scene file '" + dir +
+                             "/refs/box.test' (a link to it)")) << json;
+  EXPECT_TRUE(contains(json, "'" + dir + "/student/ball.test' is a link to a file outside the submission ('" + dir +
+                             "/elsewhere/ball.test')")) << json;
+}
