@@ -421,7 +421,7 @@ TEST(GradeCli, ALinkToAFileOutsideTheSubmissionFailsItsScene) {
   Class k = makeClass("grade/links");
   const std::string mallory = k.subs + "/mallory", trudy = k.subs + "/trudy";
   fs::create_directories(mallory);
-  fs::create_directories(trudy + "/work");
+  fs::create_directories(trudy + "/drafts");
   fs::create_symlink(k.refs + "/a.png", mallory + "/a.png");         // absolute, to the reference
   fs::create_symlink("../../refs/b.png", mallory + "/b.png");        // relative, to the reference
   writePngAtomic(k.c, mallory + "/C.png");                             // her own
@@ -429,8 +429,8 @@ TEST(GradeCli, ALinkToAFileOutsideTheSubmissionFailsItsScene) {
   fs::create_hard_link(k.refs + "/a.png", trudy + "/a.png");           // a hard link to the reference
   fs::create_symlink(k.subs + "/alice/hw", trudy + "/hw");             // a folder of another student's (b.png)
   writePngAtomic(k.c, trudy + "/C.png");                               // his own
-  writePngAtomic(k.d, trudy + "/work/final.png");
-  fs::create_symlink("work/final.png", trudy + "/d.png");            // a link inside his folder: his own
+  writePngAtomic(k.d, trudy + "/drafts/final.png");
+  fs::create_symlink("drafts/final.png", trudy + "/d.png");            // a link inside his folder: his own
   const std::string report = k.dir + "/report", results = k.dir + "/results.json";
   RunResult r = runVkrt("grade " + k.refs + " " + k.subs + " -o " + report + " --gradescope " + results);
   EXPECT_EQ(r.exitCode, 5) << r.output;

@@ -84,8 +84,8 @@ TEST(PathText, AFolderAndAFileInNonAsciiLettersAreFoundByTheirUtf8Names) {
   EXPECT_EQ(top, std::set<std::string>{kFolder});
 }
 
-// An output in such a folder is resolved and written there (on Windows vkrt said that the
-// folder, its name spelled in twice the letters, does not exist: issue 53).
+// An output in such a folder is resolved and written there (a name read as Latin-1 and
+// written back as UTF-8 would name a folder that does not exist).
 TEST(PathText, AnOutputInANonAsciiFolderIsWrittenThere) {
   const fs::path root = pathFromUtf8(vkrt::test::freshFolder("path-text-output"));
   const fs::path folder = root / pathFromUtf8(kFolder);
