@@ -95,8 +95,7 @@ void noteOthers(Submission& s, const std::vector<std::string>& others) {
 
 // Whether `inner` is `outer` or lies in it, by their components.
 bool inside(const fs::path& inner, const fs::path& outer) {
-  auto [o, i] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
-  return o == outer.end();
+  return std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end()).first == outer.end();
 }
 
 // The submission made of `images` in the student's folder `folder`, matched to `references`
