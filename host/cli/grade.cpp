@@ -60,11 +60,6 @@ fs::path canonicalFolder(const std::string& path) {
   return pathFromUtf8(platform::canonicalName(utf8FromPath(p)));
 }
 
-bool inside(const fs::path& inner, const fs::path& outer) {
-  auto [o, i] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
-  return o == outer.end();
-}
-
 // Whether `folder` may take a new report: it is empty, or it holds a report this command
 // wrote (its summary.json says so) and nothing else, at any depth (a file someone added is
 // kept by refusing).
@@ -92,9 +87,9 @@ fs::path checkReportFolder(const std::string& output, const std::vector<std::str
   const fs::path out = canonicalFolder(output);
   for (const std::string& in : inputs) {
     const fs::path p = canonicalFolder(in);
-    if (inside(p, out) || inside(out, p))
+    if (pathInside(p, out) || pathInside(out, p))
       throw RefusedOutput("-o " + abbreviated(output) + ": the report folder " +
-                          (inside(out, p) && out != p ? "lies in" : inside(p, out) && out != p ? "holds" : "is") +
+                          (out == p ? "is" : pathInside(out, p) ? "lies in" : "holds") +
                           " '" + abbreviated(in) + "', which this run reads; name a folder apart from them");
   }
   std::error_code ec;
@@ -121,7 +116,7 @@ void checkGradescopeFile(const std::string& path, const std::vector<std::string>
   std::vector<std::string> around = inputs;
   around.push_back(utf8FromPath(report));
   for (const std::string& in : around)
-    if (inside(file, canonicalFolder(in)))
+    if (pathInside(file, canonicalFolder(in)))
       throw RefusedOutput("--gradescope " + abbreviated(path) + ": " +
                           (file == canonicalFolder(in) ? "is" : "lies in") + " '" + abbreviated(in) +
                           "', which this run " + (in == utf8FromPath(report) ? "writes whole" : "reads") +

@@ -93,11 +93,6 @@ void noteOthers(Submission& s, const std::vector<std::string>& others) {
     s.notes.push_back("and " + std::to_string(others.size() - kOtherFilesNoted) + " more files that are not images");
 }
 
-// Whether `inner` is `outer` or lies in it, by their components.
-bool inside(const fs::path& inner, const fs::path& outer) {
-  return std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end()).first == outer.end();
-}
-
 // The submission made of `images` in the student's folder `folder`, matched to `references`
 // (by key); an image not the student's own is refused.
 Submission matched(const std::string& name, const std::string& folder, const std::vector<std::string>& images,
@@ -129,6 +124,10 @@ std::string baseName(const std::string& folder) {
 
 }  // namespace
 
+bool pathInside(const fs::path& inner, const fs::path& outer) {
+  return std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end()).first == outer.end();
+}
+
 std::optional<TeachersFile> teachersFile(const std::string& path, const std::string& role) {
   const platform::FileStatus st = platform::statusOf(path);
   if (!st.found()) return std::nullopt;
@@ -145,7 +144,7 @@ std::string notStudentsOwn(const std::string& path, const std::string& folder, c
   const std::optional<std::string> real = platform::realPath(path), root = platform::realPath(folder);
   if (!real || !root)
     return "'" + abbreviated(path) + "': where it leads cannot be told (" + platform::errorText(errno) + ")" + graded;
-  if (!inside(pathFromUtf8(*real), pathFromUtf8(*root)))
+  if (!pathInside(pathFromUtf8(*real), pathFromUtf8(*root)))
     return "'" + abbreviated(path) + "' is a link to a file outside the submission ('" + abbreviated(*real) + "')" +
            graded;
   return "";

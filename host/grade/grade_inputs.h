@@ -3,6 +3,7 @@
 // references by name. Reads folders only; no image is decoded here.
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -39,6 +40,10 @@ struct TeachersFile {
   std::string role;                  // "the reference image", "the thresholds file"...
   platform::FileIdentity identity;
 };
+// Whether the path `inner` is `outer` or lies in it, by their components (both absolute and
+// normal, or both alike).
+bool pathInside(const std::filesystem::path& inner, const std::filesystem::path& outer);
+
 // The teacher's file `path`, by its identity (through links); nothing when it is not there.
 std::optional<TeachersFile> teachersFile(const std::string& path, const std::string& role);
 
