@@ -15,7 +15,6 @@
 #include <map>
 #include <mutex>
 #include <optional>
-#include <set>
 #include <thread>
 
 #include "cli/exit_status.h"
@@ -261,19 +260,46 @@ struct Rendered {
   std::map<std::string, Image> images;                       // sceneKey -> image
   std::map<std::string, RadianceImage> linear;               // sceneKey -> its linear image
   std::map<std::string, std::pair<std::string, int>> errors;   // sceneKey -> what went wrong, its status
+  std::map<std::string, std::string> pastLimit;              // sceneKey -> the limit it went past (it fails)
 };
 
+// The render's bounds for a scene of the thresholds `t` whose reference has `referencePixels`
+// pixels: those given, else the defaults (grade/grade_thresholds.h); 0 given is no limit.
+RenderLimits renderLimits(const GradeLimits& given, std::uint64_t referencePixels) {
+  RenderLimits r;
+  r.seconds = given.seconds.value_or(kDefaultLimitSeconds);
+  r.spp = given.spp.value_or(kDefaultLimitSpp);
+  r.pixels = given.pixels.value_or(referencePixels);
+  const int depth = given.depth.value_or(kDefaultLimitDepth);
+  r.depth = depth > 0 ? depth : -1;
+  return r;
+}
+
+// The option that sets a limit, for the reason a scene past it fails.
+const char* limitOption(LimitExceeded::Which which) {
+  switch (which) {
+    case LimitExceeded::Which::Seconds: return "--limit-time";
+    case LimitExceeded::Which::Spp: return "--limit-spp";
+    case LimitExceeded::Which::Pixels: return "--limit-pixels";
+    case LimitExceeded::Which::Depth: return "--limit-depth";
+  }
+  return "";
+}
+
 Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& scenes,
-                      const std::vector<SceneReference>& refs, const std::vector<TeachersFile>& teachers, int& status) {
+                      const std::vector<SceneReference>& refs, const std::vector<GradeReference>& references,
+                      const ThresholdTable& thresholds, const std::vector<TeachersFile>& teachers, int& status) {
   Rendered r;
   r.submission.name = "vkrt";
   r.submission.folder = "rendered by this run";
-  std::set<std::string> keys;
-  for (const SceneReference& ref : refs) keys.insert(sceneKey(ref.scene));
+  std::map<std::string, std::uint64_t> referencePixels;   // by scene key
+  for (std::size_t c = 0; c < refs.size(); ++c)
+    referencePixels[sceneKey(refs[c].scene)] = static_cast<std::uint64_t>(references[c].bytes.width) *
+                                                static_cast<std::uint64_t>(references[c].bytes.height);
   RenderSession session;
   for (const std::string& scene : scenes) {
     const std::string key = sceneKey(sceneOfFileName(scene));
-    if (!keys.count(key)) {
+    if (!referencePixels.count(key)) {
       r.submission.notes.push_back(abbreviated(scene) + ": no reference image is named for this scene; not rendered");
       continue;
     }
@@ -294,6 +320,7 @@ Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& sce
     request.scenePath = scene;
     request.onWarnings = warningPrinter(o.quiet);
     request.onOptionWarning = optionWarningPrinter(o.quiet);
+    request.limits = renderLimits(thresholds.forScene(key).limits, referencePixels[key]);
     try {
       ProgressBar progress(!o.quiet);
       RenderReport report;
@@ -303,6 +330,10 @@ Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& sce
       if (!o.quiet)
         std::fprintf(stderr, "vkrt: rendered %s (%dx%d) in %.2f s\n", scene.c_str(), report.width, report.height,
                      report.parseSeconds + report.buildSeconds + report.renderSeconds);
+    } catch (const LimitExceeded& e) {
+      // Not an error of the scene's or of the run's: the submission fails this scene.
+      if (!o.quiet) std::fprintf(stderr, "vkrt: %s (%s)\n", e.what(), limitOption(e.which()));
+      r.pastLimit[key] = std::string(e.what()) + " (" + limitOption(e.which()) + ")";
     } catch (...) {
       std::exception_ptr e = std::current_exception();
       if (int signal = pendingInterrupt()) throw Interrupted(signal);
@@ -540,6 +571,11 @@ std::vector<Job> listJobs(const std::vector<Submission>& submissions, const std:
         continue;
       }
       if (rendered && i == 0) {
+        if (auto past = rendered->pastLimit.find(keys[c]); past != rendered->pastLimit.end()) {
+          rs.entries[c].grade.outcome = GradeOutcome::Fail;
+          rs.entries[c].grade.failures.push_back(past->second);
+          continue;
+        }
         if (auto err = rendered->errors.find(keys[c]); err != rendered->errors.end()) {
           rs.entries[c].grade.outcome = GradeOutcome::Unreadable;
           rs.entries[c].grade.failures.push_back(err->second.first);
@@ -590,7 +626,7 @@ int gradeCommand(const GradeOptions& o) {
   int status = kExitOk;
   std::optional<Rendered> rendered;
   if (!scenes.empty()) {
-    rendered = renderScenes(o, scenes, refs, teachers, status);
+    rendered = renderScenes(o, scenes, refs, references, thresholds, teachers, status);
     submissions.insert(submissions.begin(), rendered->submission);
   }
 

@@ -354,6 +354,9 @@ double analyticQuadFactor(const QuadLight& light, const dvec3& x, const dvec3& n
   return 0.5 * glm::dot(phi, n);
 }
 
+// How many camera samples of a pixel are taken between polls of PathOptions::stop.
+constexpr std::uint32_t kSamplesPerPoll = 64;
+
 RadianceImage renderPathReference(const SceneDesc& scene, const Bvh& bvh, const PathOptions& options,
                                   RayCounts* counts) {
   if (scene.path.integrator == Integrator::Raytracer)
@@ -380,6 +383,8 @@ RadianceImage renderPathReference(const SceneDesc& scene, const Bvh& bvh, const 
           const double u = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelX);
           const double v = totalSpp == 1 ? 0.5 : rng.at(gpu::kRngPixelY);
           sum += integrator.sampleRadiance(x + u, y + v, rng, local);
+          // A batch of many samples stops within a pixel too (the image is then incomplete).
+          if ((s - first) % kSamplesPerPoll == kSamplesPerPoll - 1 && options.stop && options.stop()) break;
         }
         return count > 0 ? sum / static_cast<double>(count) : dvec3(0.0);
       },

@@ -24,8 +24,21 @@ double nonNegative(const std::string& name, const std::string& v) {
   auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
   if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(f) || f < 0)
     throw UsageError(name + " expects a number of 0 or more (" +
-                     (name == "--max-bias-z" ? "standard errors" : name == "--points" ? "points" : "8-bit units") + "), got '" + echoed(v) + "'");
+                     (name == "--max-bias-z"   ? "standard errors"
+                      : name == "--points"     ? "points"
+                      : name == "--limit-time" ? "seconds; 0: no limit"
+                                               : "8-bit units") + "), got '" + echoed(v) + "'");
   return f;
+}
+
+// A whole number from 0 to `most` for a limit option.
+std::uint64_t limitCount(const std::string& name, const std::string& v, std::uint64_t most) {
+  std::uint64_t n = 0;
+  auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+  if (ec != std::errc() || end != v.data() + v.size() || n > most)
+    throw UsageError(name + " expects a whole number from 0 (no limit) to " + std::to_string(most) + ", got '" +
+                     echoed(v) + "'");
+  return n;
 }
 
 std::string number(double v) {
@@ -76,6 +89,14 @@ bool applyThresholdOption(const std::string& name, const std::string& value, Gra
     t.maxBiasZ = nonNegative(name, value);
   } else if (name == "--points") {
     t.points = nonNegative(name, value);
+  } else if (name == "--limit-time") {
+    t.limits.seconds = nonNegative(name, value);
+  } else if (name == "--limit-spp") {
+    t.limits.spp = limitCount(name, value, std::uint64_t{1} << 40);
+  } else if (name == "--limit-pixels") {
+    t.limits.pixels = limitCount(name, value, std::uint64_t{1} << 40);
+  } else if (name == "--limit-depth") {
+    t.limits.depth = static_cast<int>(limitCount(name, value, 1'000'000));
   } else {
     return false;
   }
@@ -118,6 +139,8 @@ ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds&
     if (table.byScene.count(key))
       throw fail("the scene '" + echoed(scene) + "' was given on line " + std::to_string(table.lineOf[key]));
     GradeThresholds t;
+    t.limits = commandLine.limits;
+    bool judges = false;   // a threshold or --points on the line (not only limits)
     std::vector<std::string> rest;
     for (std::string w; words >> w;) rest.push_back(w);
     if (rest.empty()) throw fail("no threshold for " + echoed(scene) + " (e.g. --max-pixels-over 2:0.1%)");
@@ -131,14 +154,21 @@ ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds&
       } else {
         throw fail("'" + echoed(name) + "' needs a value");
       }
+      if (name.rfind("--limit-", 0) != 0) judges = true;
       try {
         if (!applyThresholdOption(name, value, t))
-          throw fail("unknown threshold '" + echoed(name) +
-                     "' (expected --max-pixels-over, --max-diff, --max-flip, --max-bias, --max-variance, --max-bias-z, --pixels-per-degree or --points)");
+          throw fail("unknown threshold or limit '" + echoed(name) +
+                     "' (expected --max-pixels-over, --max-diff, --max-flip, --max-bias, --max-variance, --max-bias-z, "
+                     "--pixels-per-degree, --points, --limit-time, --limit-spp, --limit-pixels or --limit-depth)");
       } catch (const UsageError& e) {
         if (std::string(e.what()).rfind(abbreviated(path) + ":", 0) == 0) throw;
         throw fail(e.what());
       }
+    }
+    if (!judges) {   // limits alone: the command line's thresholds, with these limits
+      const GradeLimits limits = t.limits;
+      t = commandLine;
+      t.limits = limits;
     }
     table.byScene.emplace(key, t);
     table.lineOf[key] = lineNumber;

@@ -4,6 +4,7 @@
 // file (doc/usage.md, "Grading").
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -12,6 +13,21 @@
 #include "compare/image_check.h"
 
 namespace vkrt {
+
+// The bounds on rendering a submitted scene file (cli/grade.cpp makes them the render's
+// RenderLimits, render/render_limits.h), each settable on
+// the command line and per scene: --limit-time S, --limit-spp N, --limit-pixels N and
+// --limit-depth D (0 for none). Unset, the defaults: 40 s (a class of 9 scenes that all run
+// into it takes 6 minutes, within Gradescope's default timeout of 10), 16384 samples per
+// pixel, the reference's own pixel count (a render of another size fails anyway), maxdepth 100.
+struct GradeLimits {
+  std::optional<double> seconds;
+  std::optional<std::uint64_t> spp, pixels;
+  std::optional<int> depth;
+};
+constexpr double kDefaultLimitSeconds = 40;
+constexpr std::uint64_t kDefaultLimitSpp = 16384;
+constexpr int kDefaultLimitDepth = 100;
 
 struct GradeThresholds {
   CheckThresholds pixels;              // --max-pixels-over, --max-diff, --max-flip
@@ -23,6 +39,7 @@ struct GradeThresholds {
   bool monteCarloDefault = false;   // maxBiasZ is the default of a path-traced scene (text() says so)
   double gamma = 1.0;               // the images' encoding, which maxBiasZ's test decodes (the scene's `gamma`)
   double points = 1.0;              // --points: what passing is worth (Gradescope's max_score); no threshold
+  GradeLimits limits;               // --limit-*: for a submitted scene file's render; no threshold
   // None at all: any difference fails, as in `vkrt diff`.
   bool any() const { return pixels.any() || maxBias || maxVariance || maxBiasZ; }
   // The options that give these thresholds ("--max-pixels-over 2:0.1% --max-bias 1"), or
@@ -38,14 +55,16 @@ struct ThresholdTable {
   const GradeThresholds& forScene(const std::string& key) const;
 };
 
-// Applies one threshold option to `t`: `name` ("--max-bias") and its value. Returns false
-// for a name that is not a threshold option; throws UsageError for a bad value.
+// Applies one threshold or limit option to `t`: `name` ("--max-bias", "--limit-time") and its
+// value. Returns false for a name that is neither; throws UsageError for a bad value.
 bool applyThresholdOption(const std::string& name, const std::string& value, GradeThresholds& t);
 
 // A thresholds file: one scene per line, its name (in double quotes when it holds a space)
 // then its options, '#' to the end of the line a comment:
 //     scene7      --max-pixels-over 2:0.1%
-//     cornellNEE  --max-bias 0.5 --max-variance 250
+//     cornellNEE  --max-bias 0.5 --max-variance 250 --limit-time 120
+// A line's thresholds (and --points) replace the command line's; its limits replace only the
+// limits it names, and a line of limits alone keeps the command line's thresholds.
 // Throws IoError when the file cannot be read, UsageError naming the file and line for a bad
 // line, a scene named twice, or a scene that has no reference (`knownKeys`).
 ThresholdTable readThresholdFile(const std::string& path, const GradeThresholds& commandLine,

@@ -4,6 +4,7 @@
 #include "render/cpu_backend.h"
 #include "render/vulkan_backend.h"
 #include "render/progress.h"
+#include "util/interrupt.h"
 
 namespace vkrt {
 

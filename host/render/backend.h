@@ -11,7 +11,6 @@
 
 #include "image/radiance_image.h"
 #include "image/row_sink.h"
-#include "util/interrupt.h"
 #include "render/progressive.h"
 #include "render/render.h"
 #include "scene/scene_desc.h"
@@ -67,7 +66,8 @@ std::unique_ptr<RenderBackend> makeBackend(const RenderRequest& request, Progres
 void validateForBackend(const RenderRequest& request, const SceneDesc& scene);
 
 // The settings every renderer's options share (CpuOptions, PathOptions, VulkanOptions,
-// VulkanPathOptions), set for one batch: its samples, the seed, the crop, progress and Ctrl-C.
+// VulkanPathOptions), set for one batch: its samples, the seed, the crop, progress, and the plan's
+// stop (Ctrl-C, or a time limit).
 template <class Options>
 void setBatch(Options& o, const RenderRequest& request, const SamplePlan& plan, const SampleBatch& batch,
               PixelProgress progress) {
@@ -76,7 +76,7 @@ void setBatch(Options& o, const RenderRequest& request, const SamplePlan& plan, 
   o.sampleCount = batch.count;
   o.crop = request.crop;
   o.progress = std::move(progress);
-  o.stop = [] { return pendingInterrupt() != 0; };
+  o.stop = plan.progressive.stop;   // a signal, or the request's time limit (render.cpp)
 }
 
 // One batch's progress on the bar: a Whitted render (one batch) shows pixels, a progressive

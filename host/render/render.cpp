@@ -305,7 +305,13 @@ struct PreparedRender {
   SamplePlan plan;
   bool streamed = false;                  // the rows go to the file as they are rendered
   std::optional<std::uint64_t> identity;  // for the records of a crop or a path integrator's image
+  std::optional<std::chrono::steady_clock::time_point> deadline;   // RenderLimits::seconds after parsing began
 };
+
+// Whether the render has run past its time limit.
+bool pastDeadline(const PreparedRender& prepared) {
+  return prepared.deadline && std::chrono::steady_clock::now() >= *prepared.deadline;
+}
 
 // Parses the scene, applies the overrides, resolves the output (when `checkOutput`), checks
 // the crop and the memory, fills the report's facts of the scene, and plans the samples. The
@@ -314,9 +320,13 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
                    bool mayStream, RenderSession& vulkan, PreparedRender& prepared) {
   if (request.backend == Backend::Vulkan && !request.dryRun) vulkan.prepare(request);
   auto t0 = std::chrono::steady_clock::now();
+  if (request.limits.seconds > 0)
+    prepared.deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                 std::chrono::duration<double>(request.limits.seconds));
   prepared.parsed = parseSceneFileWithWarnings(request.scenePath, ParseOptions{request.strict, request.output.has_value(), outputNameProblem});
   SceneDesc& scene = prepared.parsed.scene;
   report.parseSeconds = secondsSince(t0);
+  if (pastDeadline(prepared)) throw timeLimitExceeded(request.limits, scene);
   if (!prepared.parsed.warnings.empty() && request.onWarnings) request.onWarnings(prepared.parsed.warnings);
   if (request.maxDepth >= 0) scene.maxDepth = request.maxDepth;
   applySizeOverride(request, scene);
@@ -338,7 +348,6 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   // The image written: the whole, or the crop.
   report.width = request.crop ? request.crop->width() : scene.width;
   report.height = request.crop ? request.crop->height() : scene.height;
-  checkImageFitsInMemory(scene, report.width, report.height, prepared.streamed);
   report.maxDepth = scene.maxDepth;
   for (std::uint32_t kind = 0; kind < shapes::kKinds; ++kind) report.primitives[kind] = shapes::count(scene, kind);
   report.lights = countLights(scene);
@@ -349,6 +358,12 @@ void prepareRender(const RenderRequest& request, ProgressBar& progress, RenderRe
   report.gamma = report.pathIntegrator ? scene.path.gamma : 1.0;
   prepared.plan = samplePlan(request, scene, report.pathIntegrator, progress);
   const SamplePlan& plan = prepared.plan;
+  checkRenderLimits(request.limits, scene, report.pathIntegrator, plan.progressive.spp);
+  checkImageFitsInMemory(scene, report.width, report.height, prepared.streamed);
+  if (prepared.deadline)
+    prepared.plan.progressive.stop = [deadline = *prepared.deadline] {
+      return pendingInterrupt() != 0 || std::chrono::steady_clock::now() >= deadline;
+    };
   // The render's total decides the camera rule (gpu_types.h: spp 1 samples pixel centres):
   // --spp N renders as a scene of spp N, and --time alone as one of unbounded spp.
   if (report.pathIntegrator)
@@ -374,6 +389,7 @@ RadianceImage renderPrepared(const RenderRequest& request, PreparedRender& prepa
   backend.reset();   // (the BVH, the GPU's arrays and buffers: nothing after this reads them)
   progress.finish();
   throwIfInterrupted();   // a stopped render is incomplete: write nothing
+  if (pastDeadline(prepared)) throw timeLimitExceeded(request.limits, scene);
   checkFinite(request, scene, report);
   keepFinite(image);
   return image;

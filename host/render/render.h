@@ -17,6 +17,7 @@
 #include "image/image.h"
 #include "image/radiance_image.h"
 #include "render/progress.h"
+#include "render/render_limits.h"
 #include "util/ray_counts.h"
 #include "scene/diagnostic.h"
 #include "scene/scene_desc.h"
@@ -85,6 +86,9 @@ struct RenderRequest {
   // Every warning is an error: the scene's (doc/scene-format.md, "Warnings and errors"), and pixels whose colour came
   // out NaN or infinite (then no image is written).
   bool strict = false;
+  // Bounds on the render's work (render/render_limits.h: `vkrt grade`'s, for the students'
+  // scene files): past one, LimitExceeded, and nothing written. None by default.
+  RenderLimits limits;
   // Called with the output path once it is resolved, before it is checked for writing (so
   // that a file the run reads is refused as such, whatever else is wrong with replacing it)
   // and before the render starts; it may throw to refuse the path (a batch refuses a path an

@@ -492,3 +492,51 @@ TEST(GradeCli, ASceneFileThatIsNotTheStudentsIsNotRendered) {
   EXPECT_TRUE(contains(json, "'" + dir + "/student/ball.test' is a link to a file outside the submission ('" + dir +
                              "/elsewhere/ball.test')")) << json;
 }
+
+// Scene files that ask for more than a grader can give, among a good one: each fails its scene
+// with a reason naming its limit, the good one passes, and the report and Gradescope's
+// results are written. The runaway (a billion samples a pixel, the samples limit lifted for
+// it in the thresholds file) is stopped by its time limit; the others are refused before they
+// render: samples by the default limit, a size past the reference's, a maxdepth past 100.
+TEST(GradeCli, ARunawaySceneFailsAtItsLimitAndTheOthersAreGraded) {
+  std::string dir = freshDir("grade/limits");
+  fs::create_directories(dir + "/refs");
+  fs::create_directories(dir + "/student");
+  const std::string box = "camera 0 -3 1 0 0 0.5 0 0 1 45\nquadLight -0.5 -0.5 2 1 0 0 0 1 0 4 4 4\ndiffuse 0.7 0.5 0.3\n"
+                          "vertex -3 -3 0\nvertex 3 -3 0\nvertex 3 3 0\nvertex -3 3 0\ntri 0 1 2\ntri 0 2 3\n";
+  writeFile(dir + "/student/ball.test", "size 40 30\ncamera 0 0 5 0 0 0 0 1 0 45\nambient 0.2 0.4 0.6\nsphere 0 0 0 1\n");
+  ASSERT_EQ(runVkrt("-q --backend cpu -o " + dir + "/refs/ball.png " + dir + "/student/ball.test").exitCode, 0);
+  writeFile(dir + "/student/runaway.test", "size 40 30\nintegrator pathtracer\nspp 1000000000\nnexteventestimation on\n" + box);
+  writeFile(dir + "/student/greedy.test", "size 40 30\nintegrator pathtracer\nspp 100000000\n" + box);
+  const std::string whitted = "camera 0 -3 1 0 0 0.5 0 0 1 45\npoint 0 0 2 1 1 1\nspecular 0.5 0.5 0.5\nsphere 0 0 0 1\n";
+  writeFile(dir + "/student/huge.test", "size 4000 3000\n" + whitted);
+  writeFile(dir + "/student/deep.test", "size 40 30\nmaxdepth 1000000\n" + whitted);
+  for (const char* scene : {"runaway", "greedy", "huge", "deep"})
+    writePngAtomic(solid(40, 30, 1, 2, 3), dir + "/refs/" + scene + ".png");
+  writeFile(dir + "/t.txt", "runaway --limit-time 1 --limit-spp 0\n");
+  std::string scenes;
+  for (const char* scene : {"ball", "runaway", "greedy", "huge", "deep"}) scenes += " " + dir + "/student/" + scene + ".test";
+  for (const char* backend : {"vulkan", "cpu"}) {
+    SCOPED_TRACE(backend);
+    fs::remove_all(dir + "/report");
+    fs::remove(dir + "/results.json");
+    RunResult r = runVkrt("grade --backend " + std::string(backend) + " " + dir + "/refs" + scenes + " --thresholds " +
+                          dir + "/t.txt --gradescope " + dir + "/results.json -o " + dir + "/report");
+    EXPECT_EQ(r.exitCode, 5) << "fails, as a failing image does: " << r.output;
+    EXPECT_TRUE(contains(r.output, "vkrt: vkrt                 1/5 pass; fail: deep, greedy, huge, runaway\n")) << r.output;
+    const std::string json = readFile(dir + "/report/summary.json");
+    for (const std::string& reason :
+         {dir + "/student/runaway.test: not rendered within the time limit of 1 s (--limit-time)",
+          dir + "/student/greedy.test: 100000000 samples per pixel, past the limit of 16384 (--limit-spp)",
+          dir + "/student/huge.test: a 4000x3000 image (12000000 pixels) is past the limit of 1200 pixels (--limit-pixels)",
+          dir + "/student/deep.test: maxdepth 1000000 is past the limit of 100 (--limit-depth)"}) {
+      EXPECT_TRUE(contains(r.output, reason)) << reason << "\n" << r.output;
+      EXPECT_TRUE(contains(json, reason)) << reason << "\n" << json;
+    }
+    const std::string results = readFile(dir + "/results.json");
+    EXPECT_TRUE(contains(results, "{\"name\": \"ball\", \"score\": 1, \"max_score\": 1, \"status\": \"passed\"")) << results;
+    EXPECT_TRUE(contains(results, "{\"name\": \"runaway\", \"score\": 0, \"max_score\": 1, \"status\": \"failed\", "
+                                  "\"output\": \"fail")) << results;
+    EXPECT_TRUE(contains(results, "time limit of 1 s (--limit-time)")) << results;
+  }
+}

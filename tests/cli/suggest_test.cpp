@@ -194,7 +194,7 @@ TEST(Suggest, EveryLongOptionOfHelpIsSuggested) {
     const std::string typo = option.substr(0, option.size() - 1);
     const bool gradeOnly = option == "--max-bias" || option == "--max-variance" || option == "--max-bias-z" ||
                            option == "--thresholds" || option == "--gradescope" || option == "--points" ||
-                           option == "--one-student";
+                           option == "--one-student" || option.rfind("--limit-", 0) == 0;
     std::vector<std::string> args = option == "--allow-gaps" ? std::vector<std::string>{"merge", typo}
                                     : gradeOnly              ? std::vector<std::string>{"grade", typo}
                                                              : std::vector<std::string>{typo, "x.test"};

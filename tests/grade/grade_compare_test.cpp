@@ -171,6 +171,29 @@ TEST(GradeThresholdFile, EachSceneItsOwnLineElseTheCommandLine) {
   EXPECT_EQ(GradeThresholds{}.text(), "any difference fails");
 }
 
+// The limits on a scene file's render: the command line's, and a line's replacing only those
+// it names; a line of limits alone keeps the command line's thresholds (and a line of
+// thresholds the command line's limits).
+TEST(GradeThresholdFile, ALinesLimitsReplaceOnlyThoseItNames) {
+  std::string dir = freshDir("grade/thresholds-limits");
+  writeFile(dir + "/t.txt", "scene7 --limit-time 90 --limit-depth 0\ncornellNEE --max-bias 0.5 --limit-spp 64\nscene5 --max-diff 1\n");
+  GradeThresholds all = thresholds({{"--max-diff", "4"}, {"--limit-time", "10"}, {"--limit-pixels", "5000"}});
+  ThresholdTable table = readThresholdFile(dir + "/t.txt", all, {"scene7", "cornellnee", "scene5", "scene6"});
+  const GradeThresholds& s7 = table.forScene("scene7");
+  EXPECT_EQ(s7.text(), "--max-diff 4");   // the command line's
+  EXPECT_EQ(s7.limits.seconds, 90.0);
+  EXPECT_EQ(s7.limits.depth, 0);
+  EXPECT_EQ(s7.limits.pixels, 5000u);
+  EXPECT_FALSE(s7.limits.spp);
+  const GradeThresholds& nee = table.forScene("cornellnee");
+  EXPECT_EQ(nee.text(), "--max-bias 0.5");
+  EXPECT_EQ(nee.limits.seconds, 10.0);
+  EXPECT_EQ(nee.limits.spp, 64u);
+  EXPECT_EQ(table.forScene("scene5").limits.seconds, 10.0);
+  EXPECT_EQ(table.forScene("scene6").limits.pixels, 5000u);
+  EXPECT_FALSE(table.forScene("scene6").limits.depth);
+}
+
 TEST(GradeThresholdFile, AByteOrderMarkIsNotPartOfTheFirstScene) {
   std::string dir = freshDir("grade/thresholds-bom");
   writeFile(dir + "/t.txt", "\xEF\xBB\xBFscene6 --max-diff 2\r\n");
@@ -240,8 +263,15 @@ TEST(GradeThresholdFile, ABadLineIsAnErrorAtItsLine) {
   EXPECT_EQ(error("scene7 --max-diff 300\n"), at + "1: --max-diff expects an integer from 0 to 255, got '300'");
   EXPECT_EQ(error("scene7 --max-bias -1\n"), at + "1: --max-bias expects a number of 0 or more (8-bit units), got '-1'");
   EXPECT_EQ(error("scene7 --max-pixel 2:1\n"),
-            at + "1: unknown threshold '--max-pixel' (expected --max-pixels-over, --max-diff, --max-flip, --max-bias, "
-                 "--max-variance, --max-bias-z, --pixels-per-degree or --points)");
+            at + "1: unknown threshold or limit '--max-pixel' (expected --max-pixels-over, --max-diff, --max-flip, "
+                 "--max-bias, --max-variance, --max-bias-z, --pixels-per-degree, --points, --limit-time, --limit-spp, "
+                 "--limit-pixels or --limit-depth)");
+  EXPECT_EQ(error("scene7 --limit-spp -3\n"),
+            at + "1: --limit-spp expects a whole number from 0 (no limit) to 1099511627776, got '-3'");
+  EXPECT_EQ(error("scene7 --limit-depth 1e3\n"),
+            at + "1: --limit-depth expects a whole number from 0 (no limit) to 1000000, got '1e3'");
+  EXPECT_EQ(error("scene7 --limit-time soon\n"),
+            at + "1: --limit-time expects a number of 0 or more (seconds; 0: no limit), got 'soon'");
   EXPECT_EQ(error("scene7 --max-bias-z x\n"), at + "1: --max-bias-z expects a number of 0 or more (standard errors), got 'x'");
   EXPECT_EQ(error("scene7 --max-diff\n"), at + "1: '--max-diff' needs a value");
   EXPECT_EQ(error("scene7\n"), at + "1: no threshold for scene7 (e.g. --max-pixels-over 2:0.1%)");
