@@ -464,15 +464,17 @@ struct SceneGrading {
   bool monteCarlo = false;
   double gamma = 1.0;
 };
-// A file that cannot be read as a scene: none, and `why` says why (its first error).
-std::optional<SceneGrading> sceneGrading(const std::string& path, std::string& why) {
+// A file that cannot be read as a scene: none, and `why` says why (its first error's message,
+// at `line`: 0 for the file as a whole).
+std::optional<SceneGrading> sceneGrading(const std::string& path, std::string& why, int& line) {
   try {
     const PathSettings p = parseSceneFile(path).path;
     return SceneGrading{p.integrator == Integrator::Direct || p.integrator == Integrator::PathTracer, p.gamma};
   } catch (const SceneError& e) {
     for (const Diagnostic& d : e.diagnostics())
       if (d.isError()) {
-        why = d.format();
+        why = d.message;
+        line = d.line;
         break;
       }
   } catch (const std::exception& e) {
@@ -501,20 +503,21 @@ std::map<std::string, std::string> sceneFilesByKey(const std::vector<std::string
 // their images' gamma, which the bias test decodes, and for a path-traced scene that nothing
 // else judges, judgement by its noise: square by square, bias against its own standard error
 // (compare/bias_test.h), not "any difference fails".
-// A scene file beside a reference that cannot be read is said in a warning (the scene is then
-// judged without it); one given to render says its errors when it is rendered.
-void applySceneFiles(ThresholdTable& thresholds, const std::vector<std::string>& keys,
-                     const std::vector<std::string>& scenes, const std::string& references, bool quiet) {
+// Returns the scene files beside the references that cannot be read, set aside (the scene is
+// then judged without it); one given to render says its errors when it is rendered.
+std::vector<SetAside> applySceneFiles(ThresholdTable& thresholds, const std::vector<std::string>& keys,
+                                      const std::vector<std::string>& scenes, const std::string& references) {
+  std::vector<SetAside> setAside;
   for (const auto& [key, file] : sceneFilesByKey(scenes, references)) {
     if (std::find(keys.begin(), keys.end(), key) == keys.end()) continue;
     std::string why;
-    const std::optional<SceneGrading> g = sceneGrading(file, why);
+    int line = 0;
+    const std::optional<SceneGrading> g = sceneGrading(file, why, line);
     if (!g) {
-      if (!quiet && std::find(scenes.begin(), scenes.end(), file) == scenes.end())
-        std::fprintf(stderr,
-                     "vkrt: warning: grade: %s, beside the references, cannot be read as a scene (%s); its scene "
-                     "is graded without it (not as path-traced, gamma 1)\n",
-                     file.c_str(), why.c_str());
+      if (std::find(scenes.begin(), scenes.end(), file) == scenes.end())
+        setAside.push_back({file, line,
+                            "a scene file beside the references that cannot be read (" + why +
+                                "); its scene is graded without it (not as path-traced, gamma 1)"});
       continue;
     }
     GradeThresholds t = thresholds.forScene(key);
@@ -525,6 +528,21 @@ void applySceneFiles(ThresholdTable& thresholds, const std::vector<std::string>&
     t.gamma = g->gamma;
     thresholds.byScene[key] = t;
   }
+  return setAside;
+}
+
+// The teacher's inputs set aside: on the terminal (but with -q), or with --strict an error
+// (UsageError) naming the first and counting the rest.
+void sayOrRefuseSetAside(const GradeOptions& o, const std::vector<SetAside>& setAside) {
+  if (setAside.empty()) return;
+  if (o.strict)
+    throw UsageError("grade --strict: " + setAside[0].text() +
+                     (setAside.size() > 1 ? " (and " + counted(setAside.size() - 1, "more input", "more inputs") +
+                                                " set aside)"
+                                          : ""));
+  if (o.quiet) return;
+  for (const SetAside& a : setAside)
+    std::fprintf(stderr, "vkrt: warning: grade: set aside: %s\n", printable(a.text()).c_str());
 }
 
 // The teacher's files that no submitted file may be: the reference images, the scene files
@@ -610,8 +628,10 @@ int gradeCommand(const GradeOptions& o) {
   ThresholdTable thresholds;
   thresholds.all = o.thresholds;
   if (o.thresholdsFile) thresholds = readThresholdFile(*o.thresholdsFile, o.thresholds, keys);
-  applySceneFiles(thresholds, keys, scenes, o.references, o.quiet);
   const std::vector<TeachersFile> teachers = teachersFiles(refs, o.references, o.thresholdsFile);
+  std::vector<SetAside> setAside = unusedReferenceEntries(o.references, refs, o.thresholdsFile);
+  for (SetAside& a : applySceneFiles(thresholds, keys, scenes, o.references)) setAside.push_back(std::move(a));
+  sayOrRefuseSetAside(o, setAside);
   std::vector<Submission> submissions;
   if (!folders.empty()) submissions = findSubmissions(folders, refs, o.oneStudent, teachers);
 
@@ -635,6 +655,7 @@ int gradeCommand(const GradeOptions& o) {
     fs::create_directories(pathFromUtf8(folder.path() + "/" + sub));
   GradeReport report;
   report.references = o.references;
+  report.setAside = setAside;
   for (std::size_t c = 0; c < refs.size(); ++c) {
     const GradeThresholds& t = thresholds.forScene(keys[c]);
     report.scenes.push_back({refs[c].scene, refs[c].path, t.text(), keyFigureLabel(t), references[c].bytes.width,

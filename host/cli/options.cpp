@@ -345,6 +345,10 @@ const OptionRow<GradeOptions> kGradeRows[] = {
     {"--one-student", "", "each SUBMISSIONS/ given is one student's, its images looked for\n"
      "four levels down, whatever its folders are named (Gradescope's)",
      [](GradeOptions& o, const V&) { o.oneStudent = true; }, Section::Grade},
+    {"--strict", "", "an input of the teacher's that would be set aside (a scene file\n"
+     "beside the references that cannot be read, a file there that is\n"
+     "not used) is an error, not a warning",
+     [](GradeOptions& o, const V&) { o.strict = true; }, Section::Grade},
     {"--diff-scale", "N",
      "as for diff; --backend, --device, --spp, --seed, --threads: for\n"
      "the scenes rendered (--threads also grades on that many)",

@@ -84,6 +84,7 @@ struct GradeOptions : CommonOptions {
   std::optional<std::string> thresholdsFile;   // --thresholds FILE: per scene
   std::optional<std::string> gradescopePath;   // --gradescope FILE: Gradescope's results.json
   bool oneStudent = false;                      // --one-student: each folder given is one student's
+  bool strict = false;                          // --strict: a teacher's input set aside is an error
   GradeThresholds thresholds;                  // given once on the command line
   int heatmapScale = 16;
 };

@@ -205,6 +205,46 @@ std::vector<SceneReference> findReferences(const std::string& folder) {
   return refs;
 }
 
+std::string SetAside::text() const {
+  return abbreviated(file) + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + reason;
+}
+
+std::vector<SetAside> unusedReferenceEntries(const std::string& folder, const std::vector<SceneReference>& references,
+                                             const std::optional<std::string>& thresholdsFile) {
+  const std::optional<TeachersFile> thresholds =
+      thresholdsFile ? teachersFile(*thresholdsFile, "the thresholds file") : std::nullopt;
+  std::set<std::string> keys, used;
+  for (const SceneReference& r : references) {
+    keys.insert(sceneKey(r.scene));
+    used.insert(r.path);
+  }
+  std::vector<SetAside> unused;
+  for (const fs::directory_entry& e : entriesOf(folder)) {
+    const std::string path = utf8FromPath(e.path());
+    if (used.count(path)) continue;
+    const platform::FileStatus st = platform::statusOf(path);
+    if (thresholds && st.found() && st.identity == thresholds->identity) continue;
+    const bool sceneFile = lower(utf8FromPath(e.path().extension())) == ".test";
+    std::string why;
+    if (st.is(platform::FileKind::Directory)) {
+      why = "a folder: the references are the images directly in '" + abbreviated(folder) + "'; not searched";
+    } else if (!st.is(platform::FileKind::Regular)) {
+      why = std::string(st.found() ? "not a regular file" : "a link to nothing") + "; not read";
+    } else if (sceneFile && keys.count(sceneKey(sceneOfFileName(path)))) {
+      continue;   // the scene file of a reference (read by the caller)
+    } else if (sceneFile) {
+      why = "a scene file whose scene has no reference image (" + sceneOfFileName(path) + defaultImageExtension() +
+            ", or another format vkrt reads); not used";
+    } else if (imageKindByName(path)) {
+      continue;   // (a second image of a scene is refused by findReferences)
+    } else {
+      why = "neither an image vkrt reads (" + imageExtensionsText() + ", .jpg) nor a scene file; not used";
+    }
+    unused.push_back({path, 0, why});
+  }
+  return unused;
+}
+
 std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
                                         const std::vector<SceneReference>& references, bool oneStudentEach,
                                         const std::vector<TeachersFile>& teachers) {

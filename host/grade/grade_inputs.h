@@ -54,6 +54,24 @@ std::optional<TeachersFile> teachersFile(const std::string& path, const std::str
 // folder of links to the students' folders): the files must lie in the folder it leads to.
 std::string notStudentsOwn(const std::string& path, const std::string& folder, const std::vector<TeachersFile>& teachers);
 
+// An input of the teacher's that grading sets aside: a scene file beside the references that
+// cannot be read (its scene is then graded without it), one whose scene has no reference, a
+// file or folder there that is neither. Said on the terminal, in the report, summary.json and
+// Gradescope's results; with --strict, an error.
+struct SetAside {
+  std::string file;
+  int line = 0;         // 0: the file as a whole
+  std::string reason;
+  // "refs/box.test:3: a scene file ... (why); its scene is graded without it"
+  std::string text() const;
+};
+
+// The entries of the references' folder `folder` that grading does not use: neither a
+// reference image (`references`) nor a scene file for one, nor the thresholds file (kept
+// there, perhaps). Hidden entries are passed over.
+std::vector<SetAside> unusedReferenceEntries(const std::string& folder, const std::vector<SceneReference>& references,
+                                             const std::optional<std::string>& thresholdsFile);
+
 // One student's images (or one render's, for scene files), by scene key.
 struct Submission {
   std::string name;                             // the student's folder name

@@ -131,6 +131,12 @@ std::string indexPage(const GradeReport& r) {
        VKRT_VERSION + format(" in %.1f s.", r.seconds) +
        " Click a column's heading to sort by it; a cell opens its comparison. The figures for scripts: "
        "<a href=\"summary.json\">summary.json</a>, <a href=\"summary.csv\">summary.csv</a>.</p>\n";
+  if (!r.setAside.empty()) {   // the teacher's inputs not used: before anything graded without them
+    s += "<section class=\"set-aside\">\n<h2>Set aside: " +
+         counted(r.setAside.size(), "input", "inputs") + " of yours not used</h2>\n<ul>\n";
+    for (const SetAside& a : r.setAside) s += "<li><code>" + escaped(a.text()) + "</code></li>\n";
+    s += "</ul>\n</section>\n";
+  }
   s += "<table class=\"sortable\" id=\"overview\">\n<thead><tr><th>submission</th><th>passed</th>";
   for (const ReportScene& sc : r.scenes)
     s += "<th>" + escaped(sc.name) + "<br><span class=\"key\">" + escaped(sc.keyLabel) + "</span></th>";
@@ -289,7 +295,12 @@ std::string entryPage(const GradeReport& r, std::size_t i, std::size_t c) {
 std::string summaryJson(const GradeReport& r) {
   const OutcomeCounts n = countOutcomes(r);
   std::string s = kSummaryJsonStart + jsonQuoted(VKRT_VERSION) + ",\n\"references\": " + jsonQuoted(r.references) +
-                  ",\n\"counts\": {\"pass\": " + std::to_string(n.pass) + ", \"fail\": " + std::to_string(n.fail) +
+                  ",\n\"set_aside\": [";
+  for (std::size_t k = 0; k < r.setAside.size(); ++k)
+    s += std::string(k ? "," : "") + "\n  {\"file\": " + jsonQuoted(r.setAside[k].file) +
+         ", \"line\": " + std::to_string(r.setAside[k].line) + ", \"reason\": " + jsonQuoted(r.setAside[k].reason) + "}";
+  s += std::string(r.setAside.empty() ? "" : "\n") + "]" +
+       ",\n\"counts\": {\"pass\": " + std::to_string(n.pass) + ", \"fail\": " + std::to_string(n.fail) +
                   ", \"missing\": " + std::to_string(n.missing) + ", \"unreadable\": " + std::to_string(n.unreadable) +
                   "},\n\"scenes\": [";
   for (std::size_t c = 0; c < r.scenes.size(); ++c) {

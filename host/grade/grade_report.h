@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "grade/grade_compare.h"
+#include "grade/grade_inputs.h"   // SetAside
 
 namespace vkrt {
 
@@ -38,6 +39,7 @@ struct GradeReport {
   std::string references;   // the folder given
   std::vector<ReportScene> scenes;
   std::vector<ReportSubmission> submissions;
+  std::vector<SetAside> setAside;   // the teacher's inputs not used, and why
   double seconds = 0;       // how long the grading took
 };
 

@@ -398,8 +398,8 @@ TEST(GradeCli, ASceneFileBesideTheReferencesThatCannotBeReadIsSaid) {
   writeFile(dir + "/refs/box.test", "size 8 6\nintegrator pathtracer\nsphere 0 0\n");
   RunResult r = runVkrt("grade " + dir + "/refs " + dir + "/class -o " + dir + "/report");
   EXPECT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_TRUE(contains(r.output, "vkrt: warning: grade: " + dir + "/refs/box.test, beside the references, cannot be "
-                                 "read as a scene (" + dir + "/refs/box.test:3: error: 'sphere' expects 4 arguments"))
+  EXPECT_TRUE(contains(r.output, "vkrt: warning: grade: set aside: " + dir + "/refs/box.test:3: a scene file beside "
+                                 "the references that cannot be read ('sphere' expects 4 arguments"))
       << r.output;
   EXPECT_TRUE(contains(r.output, "its scene is graded without it")) << r.output;
   RunResult quiet = runVkrt("grade -q " + dir + "/refs " + dir + "/class -o " + dir + "/report");
@@ -410,6 +410,65 @@ TEST(GradeCli, ASceneFileBesideTheReferencesThatCannotBeReadIsSaid) {
   RunResult fine = runVkrt("grade " + dir + "/refs " + dir + "/class -o " + dir + "/report");
   EXPECT_EQ(fine.exitCode, 0) << fine.output;
   EXPECT_FALSE(contains(fine.output, "warning")) << fine.output;
+}
+
+// Every input of the teacher's that grading does not use (a scene file beside the references
+// that cannot be read, one with no reference, a file or folder there that is neither) is named
+// where the teacher looks: on the terminal, at the top of the report, in summary.json (file,
+// line, reason) and in Gradescope's results as a test only the staff see, worth nothing. With
+// --strict the first is an error and nothing is graded or written.
+TEST(GradeCli, TheTeachersInputsSetAsideAreNamedWhereTheTeacherLooks) {
+  std::string dir = freshDir("grade/set-aside");
+  for (const char* f : {"refs/extra", "class/s1"}) fs::create_directories(dir + "/" + f);
+  for (const char* scene : {"box", "ball"}) {
+    writePngAtomic(solid(8, 6, 10, 20, 30), dir + "/refs/" + scene + ".png");
+    writePngAtomic(solid(8, 6, 10, 20, 30), dir + "/class/s1/" + scene + ".png");
+  }
+  writeFile(dir + "/refs/box.test", "size 8 6\nintegrator pathtracer\nsphere 0 0\n");   // line 3: an error
+  writeFile(dir + "/refs/cornell.test", "size 8 6\n");   // no reference of its name
+  writeFile(dir + "/refs/notes.txt", "my notes\n");
+  writeFile(dir + "/refs/t.txt", "ball --max-diff 1\n");   // the thresholds file, kept here: used
+  const std::string args = dir + "/refs " + dir + "/class --thresholds " + dir + "/refs/t.txt --gradescope " + dir +
+                           "/results.json -o " + dir + "/report";
+  RunResult r = runVkrt("grade " + args);
+  EXPECT_EQ(r.exitCode, 0) << "set aside, graded without them: " << r.output;
+  const std::string reasons[] = {
+      dir + "/refs/box.test:3: a scene file beside the references that cannot be read ('sphere' expects 4 arguments",
+      dir + "/refs/cornell.test: a scene file whose scene has no reference image (cornell.png, or another format",
+      dir + "/refs/extra: a folder: the references are the images directly in '" + dir + "/refs'; not searched",
+      dir + "/refs/notes.txt: neither an image vkrt reads"};
+  for (const std::string& reason : reasons) EXPECT_TRUE(contains(r.output, "vkrt: warning: grade: set aside: " + reason)) << r.output;
+  EXPECT_FALSE(contains(r.output, "t.txt: ")) << r.output;
+  const std::string index = readFile(dir + "/report/index.html");
+  EXPECT_TRUE(contains(index, "<h2>Set aside: 4 inputs of yours not used</h2>")) << index;
+  EXPECT_TRUE(contains(index, "<code>" + dir + "/refs/box.test:3: a scene file")) << index;
+  const std::string json = readFile(dir + "/report/summary.json");
+  EXPECT_TRUE(contains(json, "\"set_aside\": [\n  {\"file\": \"" + dir + "/refs/cornell.test\", \"line\": 0, \"reason\": \"a scene file whose")) << json;
+  EXPECT_TRUE(contains(json, "{\"file\": \"" + dir + "/refs/box.test\", \"line\": 3, \"reason\": \"a scene file beside "
+                             "the references that cannot be read ('sphere' expects 4 arguments (x y z radius), got 2)")) << json;
+  const std::string results = readFile(dir + "/results.json");
+  EXPECT_TRUE(contains(results, "{\"score\": 2, ")) << results;
+  EXPECT_TRUE(contains(results, "{\"name\": \"autograder configuration\", \"score\": 0, \"max_score\": 0, \"status\": "
+                                "\"failed\", \"visibility\": \"hidden\", \"output\": \"The autograder's configuration "
+                                "has inputs that were not used:\\u000a" + dir + "/refs/cornell.test: a scene file")) << results;
+
+  // --strict: an error naming the first, nothing written.
+  fs::remove_all(dir + "/report");
+  fs::remove(dir + "/results.json");
+  RunResult strict = runVkrt("grade --strict " + args);
+  EXPECT_EQ(strict.exitCode, 1) << strict.output;
+  EXPECT_TRUE(contains(strict.output, "vkrt: error: grade --strict: " + dir + "/refs/cornell.test: a scene file")) << strict.output;
+  EXPECT_TRUE(contains(strict.output, "(and 3 more inputs set aside)")) << strict.output;
+  EXPECT_FALSE(fs::exists(dir + "/report"));
+  EXPECT_FALSE(fs::exists(dir + "/results.json"));
+  // Mended, --strict grades and says nothing; summary.json's list is empty.
+  for (const char* f : {"extra", "cornell.test", "notes.txt"}) fs::remove_all(dir + "/refs/" + f);
+  writeFile(dir + "/refs/box.test", "size 8 6\ncamera 0 0 5 0 0 0 0 1 0 45\nintegrator pathtracer\nsphere 0 0 0 1\n");
+  RunResult mended = runVkrt("grade --strict " + args);
+  EXPECT_EQ(mended.exitCode, 0) << mended.output;
+  EXPECT_FALSE(contains(mended.output, "set aside")) << mended.output;
+  EXPECT_TRUE(contains(readFile(dir + "/report/summary.json"), "\"set_aside\": [],")) << readFile(dir + "/report/summary.json");
+  EXPECT_FALSE(contains(readFile(dir + "/results.json"), "autograder configuration"));
 }
 
 // Only the student's own bytes are graded: a link (symbolic, absolute or relative, or hard) to
