@@ -22,6 +22,7 @@
 #include "cli/warning_printers.h"
 #include "util/counted.h"
 #include "util/errors.h"
+#include "grade/grade_guard.h"
 #include "grade/grade_inputs.h"
 #include "grade/grade_report.h"
 #include "grade/gradescope.h"
@@ -221,23 +222,6 @@ bool isSceneArgument(const std::string& path) {
   return true;
 }
 
-// A name for the terminal: its control bytes escaped (a folder name may hold any byte), the
-// rest, UTF-8 included, as it is.
-std::string printable(const std::string& name) {
-  std::string s;
-  for (char ch : name) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    if (c < 0x20 || c == 0x7F) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", c);
-      s += buf;
-    } else {
-      s += ch;
-    }
-  }
-  return s;
-}
-
 // One comparison to make: a submission's image of a scene (a file, or a render held here).
 // A reference: its 8-bit image, and its linear one when it is a float file (HDR-FLIP).
 struct GradeReference {
@@ -316,6 +300,12 @@ Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& sce
       r.errors[key] = {why, 0};
       continue;
     }
+    if (std::string why = submittedSceneProblem(scene); !why.empty()) {
+      r.errors[key] = {why, kExitIo};
+      status = worseExitStatus(status, kExitIo);
+      if (!o.quiet) std::fprintf(stderr, "vkrt: %s\n", controlsEscaped(why).c_str());
+      continue;
+    }
     RenderRequest request = o.request;
     request.scenePath = scene;
     request.onWarnings = warningPrinter(o.quiet);
@@ -328,11 +318,11 @@ Rendered renderScenes(const GradeOptions& o, const std::vector<std::string>& sce
       r.images[key] = encodeImage(image, report.gamma);
       r.linear[key] = std::move(image);
       if (!o.quiet)
-        std::fprintf(stderr, "vkrt: rendered %s (%dx%d) in %.2f s\n", scene.c_str(), report.width, report.height,
+        std::fprintf(stderr, "vkrt: rendered %s (%dx%d) in %.2f s\n", abbreviated(scene).c_str(), report.width, report.height,
                      report.parseSeconds + report.buildSeconds + report.renderSeconds);
     } catch (const LimitExceeded& e) {
       // Not an error of the scene's or of the run's: the submission fails this scene.
-      if (!o.quiet) std::fprintf(stderr, "vkrt: %s (%s)\n", e.what(), limitOption(e.which()));
+      if (!o.quiet) std::fprintf(stderr, "vkrt: %s (%s)\n", controlsEscaped(e.what()).c_str(), limitOption(e.which()));
       r.pastLimit[key] = std::string(e.what()) + " (" + limitOption(e.which()) + ")";
     } catch (...) {
       std::exception_ptr e = std::current_exception();
@@ -355,6 +345,19 @@ void gradeOne(const Job& job, const GradeReference& reference, const GradeThresh
   const Image* image = job.rendered;
   const RadianceImage* linear = job.renderedLinear;
   if (!image) {
+    // Nothing is decoded that cannot be graded: a file that is not a regular one, or longer than
+    // an image of the reference's size can be, is not read, and an image of another size is
+    // judged by its header (an image bomb's pixels never reach memory).
+    const SubmittedImage checked = checkSubmittedImage(job.path, reference.bytes.width, reference.bytes.height);
+    if (!checked.problem.empty()) {
+      entry.grade.outcome = GradeOutcome::Unreadable;
+      entry.grade.failures.push_back(checked.problem);
+      return;
+    }
+    if (checked.width != reference.bytes.width || checked.height != reference.bytes.height) {
+      entry.grade = sizeDiffers(checked.width, checked.height, reference.bytes.width, reference.bytes.height, t);
+      return;
+    }
     try {
       loaded = readAnyImage(job.path);
     } catch (const IoError& e) {
@@ -407,7 +410,7 @@ void runJobs(std::size_t count, unsigned threads, const std::function<void(std::
 
 std::string joined(const std::vector<std::string>& names) {
   std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + printable(n);
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + controlsEscaped(n);
   return s;
 }
 
@@ -430,14 +433,14 @@ int printOutcomes(const GradeOptions& o, const GradeReport& report, int status) 
           // A scene that could not be rendered has its status (in `status` already) and
           // printed its messages; an image that cannot be read is an I/O error.
           if (s.entries[c].renderStatus == 0) status = worseExitStatus(status, kExitIo);
-          std::fprintf(stderr, "vkrt: %s: %s: %s\n", printable(s.name).c_str(), printable(scene).c_str(),
-                       s.entries[c].grade.failures.empty() ? "unreadable" : s.entries[c].grade.failures[0].c_str());
+          std::fprintf(stderr, "vkrt: %s: %s: %s\n", controlsEscaped(s.name).c_str(), controlsEscaped(scene).c_str(),
+                       s.entries[c].grade.failures.empty() ? "unreadable" : controlsEscaped(s.entries[c].grade.failures[0]).c_str());
           break;
       }
     }
     if (!fail.empty() || !missing.empty()) status = worseExitStatus(status, kExitDiffers);
     if (!o.quiet)
-      std::fprintf(stderr, "vkrt: %-20s %zu/%zu pass%s%s%s\n", printable(s.name).c_str(), pass, s.entries.size(),
+      std::fprintf(stderr, "vkrt: %-20s %zu/%zu pass%s%s%s\n", controlsEscaped(s.name).c_str(), pass, s.entries.size(),
                    fail.empty() ? "" : ("; fail: " + joined(fail)).c_str(),
                    missing.empty() ? "" : ("; missing: " + joined(missing)).c_str(),
                    unreadable.empty() ? "" : ("; unreadable: " + joined(unreadable)).c_str());
@@ -445,7 +448,7 @@ int printOutcomes(const GradeOptions& o, const GradeReport& report, int status) 
   if (!o.quiet)
     for (const ReportSubmission& s : report.submissions)
       for (const std::string& note : s.notes)
-        std::fprintf(stderr, "vkrt: note: %s: %s\n", printable(s.name).c_str(), printable(note).c_str());
+        std::fprintf(stderr, "vkrt: note: %s: %s\n", controlsEscaped(s.name).c_str(), controlsEscaped(note).c_str());
   const OutcomeCounts n = countOutcomes(report);
   if (o.quiet && status == kExitOk) return status;
   std::fprintf(stderr, "vkrt: graded %s x %s in %.2f s: %zu pass, %zu fail, %zu missing%s; report: %s; exit status %d\n",
@@ -510,11 +513,13 @@ std::vector<SetAside> applySceneFiles(ThresholdTable& thresholds, const std::vec
   std::vector<SetAside> setAside;
   for (const auto& [key, file] : sceneFilesByKey(scenes, references)) {
     if (std::find(keys.begin(), keys.end(), key) == keys.end()) continue;
+    const bool given = std::find(scenes.begin(), scenes.end(), file) != scenes.end();
+    if (given && !submittedSceneProblem(file).empty()) continue;   // not read (a FIFO, 2 GB): its render says why
     std::string why;
     int line = 0;
     const std::optional<SceneGrading> g = sceneGrading(file, why, line);
     if (!g) {
-      if (std::find(scenes.begin(), scenes.end(), file) == scenes.end())
+      if (!given)
         setAside.push_back({file, line,
                             "a scene file beside the references that cannot be read (" + why +
                                 "); its scene is graded without it (not as path-traced, gamma 1)"});
@@ -542,7 +547,7 @@ void sayOrRefuseSetAside(const GradeOptions& o, const std::vector<SetAside>& set
                                           : ""));
   if (o.quiet) return;
   for (const SetAside& a : setAside)
-    std::fprintf(stderr, "vkrt: warning: grade: set aside: %s\n", printable(a.text()).c_str());
+    std::fprintf(stderr, "vkrt: warning: grade: set aside: %s\n", controlsEscaped(a.text()).c_str());
 }
 
 // The teacher's files that no submitted file may be: the reference images, the scene files

@@ -93,19 +93,24 @@ std::string keyFigureLabel(const GradeThresholds& t) {
   return "pixels that differ";
 }
 
+Grade sizeDiffers(int width, int height, int referenceWidth, int referenceHeight, const GradeThresholds& t) {
+  Grade g;
+  g.width = width, g.height = height;
+  g.key.label = keyFigureLabel(t);
+  g.outcome = GradeOutcome::Fail;
+  g.failures.push_back("the image is " + std::to_string(width) + "x" + std::to_string(height) + ", the reference " +
+                       std::to_string(referenceWidth) + "x" + std::to_string(referenceHeight));
+  g.key.value = HUGE_VAL, g.key.text = "size differs";
+  return g;
+}
+
 Grade gradeImage(const Image& submission, const Image& reference, const GradeThresholds& t, ImageDiff* diff,
                  FlipMap* flipMap, const RadianceImage* submissionLinear, const RadianceImage* referenceLinear) {
+  if (submission.width != reference.width || submission.height != reference.height)
+    return sizeDiffers(submission.width, submission.height, reference.width, reference.height, t);
   Grade g;
   g.width = submission.width, g.height = submission.height;
   g.key.label = keyFigureLabel(t);
-  if (submission.width != reference.width || submission.height != reference.height) {
-    g.outcome = GradeOutcome::Fail;
-    g.failures.push_back("the image is " + std::to_string(submission.width) + "x" + std::to_string(submission.height) +
-                         ", the reference " + std::to_string(reference.width) + "x" +
-                         std::to_string(reference.height));
-    g.key.value = HUGE_VAL, g.key.text = "size differs";
-    return g;
-  }
   ImageDiff d = compare(submission, reference);
   g.maxDiff = d.maxChannelDiff, g.rmse = d.rmse, g.psnr = d.psnr();
   g.differing = static_cast<long long>(d.differing.size()), g.over1 = d.countOver(1), g.over2 = d.countOver(2);

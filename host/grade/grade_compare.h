@@ -45,6 +45,10 @@ struct Grade {
   long long moreRegions = 0;        // boxes left out of `regions`
 };
 
+// The grade of an image of width x height against a reference of another size: it fails,
+// saying both sizes (its pixels need not be read).
+Grade sizeDiffers(int width, int height, int referenceWidth, int referenceHeight, const GradeThresholds& t);
+
 // The grade of `submission` against `reference` under `t`; `diff` and `flipMap` (each may be
 // null) receive the comparison and FLIP's error map (for the report's images) when the sizes
 // agree. A size that differs fails. With both linear images (a float submission, or one

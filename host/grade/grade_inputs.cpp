@@ -63,23 +63,49 @@ bool isImageFile(const fs::directory_entry& e) {
   return e.is_regular_file(ec) && imageKindByName(utf8FromPath(e.path()));
 }
 
+// A submitted entry named as an image, and not a folder: a regular file, or anything else
+// (a FIFO, a device, a link to nothing) that grading then refuses to read (grade_guard.h),
+// failing its scene rather than leaving it missing without a word.
+bool isImageName(const fs::directory_entry& e) { return imageKindByName(utf8FromPath(e.path())) && !isFolder(e); }
+
 bool isOtherFile(const fs::directory_entry& e) {
   std::error_code ec;
   return e.is_regular_file(ec) && !imageKindByName(utf8FromPath(e.path()));
 }
 
 // The images under `folder` (itself and `depth` levels below), in path order, and the other
-// files there (`others`).
-void collectImages(const std::string& folder, int depth, std::vector<std::string>& out,
-                   std::vector<std::string>& others) {
+// files there (`others`). A link to a folder that leads out of `root` (the student's folder,
+// links resolved) is not searched, and said in `notes`: it would grade what is not the
+// student's, and lead the search anywhere (to '/').
+void collectImages(const std::string& folder, int depth, const std::string& root, std::vector<std::string>& out,
+                   std::vector<std::string>& others, std::vector<std::string>& notes) {
   const std::vector<fs::directory_entry> entries = entriesOf(folder);
   for (const fs::directory_entry& e : entries) {
-    if (isImageFile(e)) out.push_back(utf8FromPath(e.path()));
+    if (isImageName(e)) out.push_back(utf8FromPath(e.path()));
     if (isOtherFile(e)) others.push_back(utf8FromPath(e.path()));
   }
   if (depth == 0) return;
-  for (const fs::directory_entry& e : entries)
-    if (isFolder(e)) collectImages(utf8FromPath(e.path()), depth - 1, out, others);
+  for (const fs::directory_entry& e : entries) {
+    if (!isFolder(e)) continue;
+    const std::string path = utf8FromPath(e.path());
+    std::error_code ec;
+    if (e.is_symlink(ec)) {
+      const std::optional<std::string> real = platform::realPath(path);
+      if (!real || !pathInside(pathFromUtf8(*real), pathFromUtf8(root))) {
+        notes.push_back(abbreviated(path) + ": a link to a folder outside the submission" +
+                        (real ? " ('" + abbreviated(*real) + "')" : std::string()) + "; not searched");
+        continue;
+      }
+    }
+    collectImages(path, depth - 1, root, out, others, notes);
+  }
+}
+
+// The images of the student's folder `folder`, `depth` levels down (collectImages).
+void collectStudentImages(const std::string& folder, int depth, std::vector<std::string>& out,
+                          std::vector<std::string>& others, std::vector<std::string>& notes) {
+  const std::string root = platform::realPath(folder).value_or(folder);
+  collectImages(folder, depth, root, out, others, notes);
 }
 
 constexpr std::size_t kOtherFilesNoted = 5;   // per submission; then "and N more"
@@ -100,10 +126,12 @@ Submission matched(const std::string& name, const std::string& folder, const std
   Submission s;
   s.name = name;
   s.folder = folder;
+  std::size_t ofNoScene = 0;
   for (const std::string& image : images) {
     const std::string key = sceneKey(sceneOfFileName(image));
     if (!keys.count(key)) {
-      s.notes.push_back(abbreviated(image) + ": no reference image is named for this scene; not graded");
+      if (++ofNoScene <= kOtherFilesNoted)
+        s.notes.push_back(abbreviated(image) + ": no reference image is named for this scene; not graded");
     } else if (auto [at, added] = s.images.emplace(key, image); !added) {
       s.notes.push_back(abbreviated(image) + ": a second image for " + sceneOfFileName(image) + " (" +
                         abbreviated(at->second) + " is graded)");
@@ -111,6 +139,8 @@ Submission matched(const std::string& name, const std::string& folder, const std
       s.refused[key] = why;
     }
   }
+  if (ofNoScene > kOtherFilesNoted)
+    s.notes.push_back("and " + std::to_string(ofNoScene - kOtherFilesNoted) + " more images of no scene; not graded");
   return s;
 }
 
@@ -257,9 +287,10 @@ std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
       throw IoError("the submissions '" + abbreviated(folder) + "' are not a folder (a folder per student, or a "
                     "folder of images)");
     if (oneStudentEach) {   // the folder is one student's, whatever its sub-folders are called
-      std::vector<std::string> images, others;
-      collectImages(folder, kSubmissionDepth, images, others);
+      std::vector<std::string> images, others, notes;
+      collectStudentImages(folder, kSubmissionDepth, images, others, notes);
       Submission s = matched(baseName(folder), folder, images, keys, teachers);
+      s.notes.insert(s.notes.end(), notes.begin(), notes.end());
       if (images.empty()) s.notes.push_back("no image in " + abbreviated(folder));
       noteOthers(s, others);
       found.push_back(std::move(s));
@@ -268,7 +299,7 @@ std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
     const std::vector<fs::directory_entry> entries = entriesOf(folder);
     std::vector<std::string> own, ownOthers;
     for (const fs::directory_entry& e : entries) {
-      if (isImageFile(e)) own.push_back(utf8FromPath(e.path()));
+      if (isImageName(e)) own.push_back(utf8FromPath(e.path()));
       if (isOtherFile(e)) ownOthers.push_back(utf8FromPath(e.path()));
     }
     std::vector<Submission> here;
@@ -278,9 +309,10 @@ std::vector<Submission> findSubmissions(const std::vector<std::string>& folders,
     }
     for (const fs::directory_entry& e : entries) {
       if (!isFolder(e)) continue;
-      std::vector<std::string> images, others;
-      collectImages(utf8FromPath(e.path()), kSubmissionDepth - 1, images, others);
+      std::vector<std::string> images, others, notes;
+      collectStudentImages(utf8FromPath(e.path()), kSubmissionDepth - 1, images, others, notes);
       here.push_back(matched(utf8FromPath(e.path().filename()), utf8FromPath(e.path()), images, keys, teachers));
+      here.back().notes.insert(here.back().notes.end(), notes.begin(), notes.end());
       if (images.empty()) here.back().notes.push_back("no image in " + abbreviated(utf8FromPath(e.path())));
       noteOthers(here.back(), others);
     }

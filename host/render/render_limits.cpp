@@ -5,6 +5,7 @@
 
 #include "scene/integrator_table.h"
 #include "scene/scene_desc.h"
+#include "util/text.h"   // abbreviated
 
 namespace vkrt {
 
@@ -19,7 +20,7 @@ std::string seconds(double s) {
 }  // namespace
 
 void checkRenderLimits(const RenderLimits& limits, const SceneDesc& scene, bool sampled, std::uint64_t spp) {
-  const std::string& file = scene.sourcePath;
+  const std::string file = abbreviated(scene.sourcePath);
   const std::uint64_t pixels = static_cast<std::uint64_t>(scene.width) * static_cast<std::uint64_t>(scene.height);
   if (limits.pixels > 0 && pixels > limits.pixels)
     throw LimitExceeded(LimitExceeded::Which::Pixels,
@@ -43,7 +44,7 @@ void checkRenderLimits(const RenderLimits& limits, const SceneDesc& scene, bool 
 }
 
 LimitExceeded timeLimitExceeded(const RenderLimits& limits, const SceneDesc& scene) {
-  return LimitExceeded(LimitExceeded::Which::Seconds, scene.sourcePath + ": not rendered within the time limit of " +
+  return LimitExceeded(LimitExceeded::Which::Seconds, abbreviated(scene.sourcePath) + ": not rendered within the time limit of " +
                                                           seconds(limits.seconds) + " s");
 }
 

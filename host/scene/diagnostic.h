@@ -25,7 +25,7 @@ struct Diagnostic {
   bool isError() const { return severity == Severity::Error; }
   // FILE:LINE: error: MESSAGE (or FILE: warning: MESSAGE for the file as a whole, line 0).
   std::string format() const {
-    return file + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+    return abbreviated(file) + (line > 0 ? ":" + std::to_string(line) : std::string()) +
            (isError() ? ": error: " : ": warning: ") + message;
   }
 };

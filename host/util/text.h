@@ -33,12 +33,33 @@ inline std::string escapedBytes(std::string_view text) {
 // bytes, and for a longer one "... (N bytes)" after them, so that one huge token (a
 // megabyte-long word, a long argument) never fills the terminal.
 inline constexpr std::size_t kEchoedTokenBytes = 200;
+// `text` with its control characters (bytes below 0x20, and 0x7F) written as \xHH, and every
+// other byte (UTF-8 included) as it is: a name that anyone may choose (a student's file) then
+// shows as it reads, and never steers the terminal it is printed on.
+inline std::string controlsEscaped(std::string_view text) {
+  static const char kHex[] = "0123456789ABCDEF";
+  std::string s;
+  s.reserve(text.size());
+  for (char ch : text) {
+    auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c != 0x7F) {
+      s += ch;
+    } else {
+      s += "\\x";
+      s += kHex[c >> 4];
+      s += kHex[c & 15];
+    }
+  }
+  return s;
+}
+
 // A path as a message names it: whole up to kEchoedPathBytes (PATH_MAX: any path the
-// system takes), else cut there with "... (N bytes)"; its bytes as they are.
+// system takes), else cut there with "... (N bytes)"; its bytes as they are but for control
+// characters (controlsEscaped).
 inline constexpr std::size_t kEchoedPathBytes = 4096;
 inline std::string abbreviated(std::string_view text, std::size_t limit = kEchoedPathBytes) {
-  if (text.size() <= limit) return std::string(text);
-  return std::string(text.substr(0, limit)) + "... (" + std::to_string(text.size()) + " bytes)";
+  if (text.size() <= limit) return controlsEscaped(text);
+  return controlsEscaped(text.substr(0, limit)) + "... (" + std::to_string(text.size()) + " bytes)";
 }
 inline std::string echoed(std::string_view text) {
   if (text.size() <= kEchoedTokenBytes) return escapedBytes(text);

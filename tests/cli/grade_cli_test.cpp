@@ -473,9 +473,9 @@ TEST(GradeCli, TheTeachersInputsSetAsideAreNamedWhereTheTeacherLooks) {
 
 // Only the student's own bytes are graded: a link (symbolic, absolute or relative, or hard) to
 // a reference, a link out of the student's folder (to another student's image, through a
-// linked folder) fails its scene saying what it is, in the report, the summaries and
-// Gradescope's results; the student's own files beside them, and links inside the student's
-// folder, are graded as before.
+// linked folder: not searched, and noted) fails its scene saying what it is, in the report, the
+// summaries and Gradescope's results; the student's own files beside them, and links inside
+// the student's folder, are graded as before.
 TEST(GradeCli, ALinkToAFileOutsideTheSubmissionFailsItsScene) {
   Class k = makeClass("grade/links");
   const std::string mallory = k.subs + "/mallory", trudy = k.subs + "/trudy";
@@ -486,7 +486,7 @@ TEST(GradeCli, ALinkToAFileOutsideTheSubmissionFailsItsScene) {
   writePngAtomic(k.c, mallory + "/C.png");                             // her own
   fs::create_symlink("../alice/d.png", mallory + "/d.png");          // another student's image
   fs::create_hard_link(k.refs + "/a.png", trudy + "/a.png");           // a hard link to the reference
-  fs::create_symlink(k.subs + "/alice/hw", trudy + "/hw");             // a folder of another student's (b.png)
+  fs::create_symlink(k.subs + "/alice/hw", trudy + "/hw");             // a folder of another student's (b.png): not searched
   writePngAtomic(k.c, trudy + "/C.png");                               // his own
   writePngAtomic(k.d, trudy + "/drafts/final.png");
   fs::create_symlink("drafts/final.png", trudy + "/d.png");            // a link inside his folder: his own
@@ -495,15 +495,16 @@ TEST(GradeCli, ALinkToAFileOutsideTheSubmissionFailsItsScene) {
   EXPECT_EQ(r.exitCode, 5) << r.output;
   EXPECT_TRUE(contains(r.output, "vkrt: alice                4/4 pass\n")) << r.output;
   EXPECT_TRUE(contains(r.output, "vkrt: mallory              1/4 pass; unreadable: a, b, d\n")) << r.output;
-  EXPECT_TRUE(contains(r.output, "vkrt: trudy                2/4 pass; unreadable: a, b\n")) << r.output;
+  EXPECT_TRUE(contains(r.output, "vkrt: trudy                2/4 pass; missing: b; unreadable: a\n")) << r.output;
+  EXPECT_TRUE(contains(r.output, "vkrt: note: trudy: " + trudy + "/hw: a link to a folder outside the submission ('" +
+                                     k.subs + "/alice/hw'); not searched\n")) << r.output;
   const std::string json = readFile(report + "/summary.json");
   const std::string own = "; only the student's own files are graded";
   for (const std::string& why :
        {"'" + mallory + "/a.png' is the same file as the reference image '" + k.refs + "/a.png' (a link to it)" + own,
         "'" + mallory + "/b.png' is the same file as the reference image '" + k.refs + "/b.png' (a link to it)" + own,
         "'" + mallory + "/d.png' is a link to a file outside the submission ('" + k.subs + "/alice/d.png')" + own,
-        "'" + trudy + "/a.png' is the same file as the reference image '" + k.refs + "/a.png' (a link to it)" + own,
-        "'" + trudy + "/hw/b.png' is a link to a file outside the submission ('" + k.subs + "/alice/hw/b.png')" + own}) {
+        "'" + trudy + "/a.png' is the same file as the reference image '" + k.refs + "/a.png' (a link to it)" + own}) {
     EXPECT_TRUE(contains(json, "\"status\": \"unreadable\", \"image\": ")) << json;
     EXPECT_TRUE(contains(json, "\"failures\": [\"" + why + "\"]")) << why << "\n" << json;
     EXPECT_TRUE(contains(readFile(report + "/summary.csv"), why)) << why;
@@ -522,9 +523,9 @@ TEST(GradeCli, ALinkToAFileOutsideTheSubmissionFailsItsScene) {
   fs::create_symlink("../subs/alice", k.dir + "/linked/alice");
   fs::create_symlink(k.subs + "/trudy", k.dir + "/linked/trudy");
   RunResult linked = runVkrt("grade " + k.refs + " " + k.dir + "/linked -o " + report);
-  EXPECT_EQ(linked.exitCode, 4) << linked.output;   // trudy's links: 4 over 5 when nothing else fails
+  EXPECT_EQ(linked.exitCode, 5) << linked.output;   // trudy's b missing (his link to alice's folder not searched)
   EXPECT_TRUE(contains(linked.output, "vkrt: alice                4/4 pass\n")) << linked.output;
-  EXPECT_TRUE(contains(linked.output, "vkrt: trudy                2/4 pass; unreadable: a, b\n")) << linked.output;
+  EXPECT_TRUE(contains(linked.output, "vkrt: trudy                2/4 pass; missing: b; unreadable: a\n")) << linked.output;
   RunResult one = runVkrt("grade -q --one-student " + k.refs + " " + k.dir + "/linked/alice -o " + report);
   EXPECT_EQ(one.exitCode, 0) << one.output;
 }
