@@ -41,10 +41,6 @@ void writeBytes(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
-std::uint32_t bigEndian(const unsigned char* p) {
-  return std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | p[3];
-}
-
 std::string chunk(const std::string& type, const std::string& data) {
   std::string c(4, '\0');
   const std::uint32_t n = static_cast<std::uint32_t>(data.size());
