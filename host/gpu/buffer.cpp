@@ -50,6 +50,7 @@ Buffer::Buffer(const Context& context, std::size_t bytes, bool readback)
     VK_CHECK(vk::vkAllocateMemory(device_, &alloc, nullptr, &memory_));
     VK_CHECK(vk::vkBindBufferMemory(device_, buffer_, memory_, 0));
     VK_CHECK(vk::vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    filled_ = size_;   // new memory is not known to be zero (fill)
   } catch (...) {
     if (memory_) vk::vkFreeMemory(device_, memory_, nullptr);
     vk::vkDestroyBuffer(device_, buffer_, nullptr);

@@ -27,10 +27,13 @@ class Buffer {
     b.fill(items.data(), items.size() * sizeof(T));
     return b;
   }
-  // `bytes` from `data` at the start; what an earlier fill wrote beyond them is zeroed, so that
-  // a buffer used again (BufferPool) holds what a new one would. (A new buffer's memory is not
-  // touched beyond the data: zeroing it cost a small scene's upload page faults, bench/README.md,
-  // "`--time` against `--spp`, and the scene's buffers".)
+  // `bytes` from `data` at the start, and zeros from there to the end: what an earlier fill
+  // wrote (a buffer used again, BufferPool), and on a new buffer whatever its memory held.
+  // Lavapipe takes a buffer's memory from malloc, which hands back freed memory as it was: the
+  // bytes past a scene array's data, which the path shader reads (the record after the last
+  // triangle), held what the process had freed there, and the denormal floats among them
+  // (pointers' upper halves) slowed every ray, as the heap's layout fell: by the length of the
+  // output's name (bench/README.md, "`--time` against `--spp`, and the scene's buffers").
   void fill(const void* data, std::size_t bytes) {
     if (bytes > 0) std::memcpy(mapped_, data, bytes);
     if (filled_ > bytes) std::memset(static_cast<char*>(mapped_) + bytes, 0, filled_ - bytes);
@@ -49,7 +52,7 @@ class Buffer {
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   std::size_t size_ = 0;
   void* mapped_ = nullptr;
-  std::size_t filled_ = 0;   // the bytes the last fill wrote
+  std::size_t filled_ = 0;   // the bytes that may be other than zero: the last fill's; a new buffer's all
 };
 
 }  // namespace vkrt

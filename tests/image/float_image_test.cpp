@@ -318,6 +318,23 @@ TEST(Progressive, TimeLimitStopsWhenNoSampleFitsAnyMore) {
   EXPECT_FALSE(report.timeUp);
 }
 
+// The time left is filled in as few batches as fit, each costing a backend its set-up (a
+// Vulkan render's buffers, and the pace of its dispatches learnt again): 1/8 s a sample and
+// 3/8 s leave room for 2 samples after the first, and the next batch takes both (twice the
+// first, where that fits), not nine tenths of them (1) and then a third batch for the last.
+TEST(Progressive, TheTimeLeftIsFilledInFewBatches) {
+  FakeIntegrator fake;
+  fake.secondsPerSample = 0.125;
+  ProgressiveOptions o;
+  o.spp = 0;
+  o.timeLimitSeconds = 0.375;
+  ProgressiveReport report;
+  fake.render(o, &report);
+  EXPECT_EQ(report.samples, 3u);
+  ASSERT_EQ(fake.batches.size(), 2u);
+  EXPECT_EQ(fake.batches[1].count, 2u);
+}
+
 // A time limit shorter than one sample per pixel, the least a render takes: that sample is
 // rendered, and the report says how far past the limit it ran (vkrt's output line prints it).
 TEST(Progressive, AFirstBatchLongerThanTheLimitIsReported) {
