@@ -247,8 +247,9 @@ struct Rendered {
   std::map<std::string, std::string> pastLimit;              // sceneKey -> the limit it went past (it fails)
 };
 
-// The render's bounds for a scene of the thresholds `t` whose reference has `referencePixels`
-// pixels: those given, else the defaults (grade/grade_thresholds.h); 0 given is no limit.
+// The render's bounds for a scene whose reference has `referencePixels` pixels: the limits
+// `given` (command line, thresholds file), else the defaults (grade/grade_thresholds.h); 0
+// given is no limit.
 RenderLimits renderLimits(const GradeLimits& given, std::uint64_t referencePixels) {
   RenderLimits r;
   r.seconds = given.seconds.value_or(kDefaultLimitSeconds);
@@ -487,10 +488,12 @@ std::optional<SceneGrading> sceneGrading(const std::string& path, std::string& w
   return std::nullopt;
 }
 
-// The scene files that say which scenes are path-traced, by scene key: those given to render,
-// and those in the references' folder beside their images (REFS/cornellNEE.test).
+// The scene files that say which scenes are path-traced, by scene key: those in the
+// references' folder beside their images (REFS/cornellNEE.test), else those given to render.
+// The teacher's decides: a student's scene file must not choose how its own image is judged.
 std::map<std::string, std::string> sceneFilesByKey(const std::vector<std::string>& scenes, const std::string& refs) {
   std::map<std::string, std::string> files;
+  for (const std::string& scene : scenes) files[sceneKey(sceneOfFileName(scene))] = scene;
   std::error_code ec;
   for (fs::directory_iterator it(pathFromUtf8(refs), ec), end; !ec && it != end; it.increment(ec)) {
     std::string ext = utf8FromPath(it->path().extension());
@@ -498,7 +501,6 @@ std::map<std::string, std::string> sceneFilesByKey(const std::vector<std::string
     const std::string file = utf8FromPath(it->path());
     if (ext == ".test" && it->is_regular_file(ec)) files[sceneKey(sceneOfFileName(file))] = file;
   }
-  for (const std::string& scene : scenes) files[sceneKey(sceneOfFileName(scene))] = scene;
   return files;
 }
 

@@ -251,3 +251,20 @@ TEST(GradeHostile, SceneFilesThatAreSpecialHugeDeepOrWriteElsewhere) {
   EXPECT_EQ(readFile(refs + "/good.png"), before);
   EXPECT_FALSE(fs::exists(dir + "/elsewhere.png"));
 }
+
+// How an image is judged is the teacher's to say: a scene file beside the reference decides
+// whether the scene is path-traced (judged by its noise) and its gamma, whatever the
+// student's scene file of that name declares.
+TEST(GradeHostile, AStudentsSceneFileDoesNotChooseHowItIsJudged) {
+  const std::string dir = freshDir("grade/hostile-judging");
+  const std::string refs = dir + "/refs", sub = dir + "/student";
+  for (const std::string& f : {refs, sub}) fs::create_directories(f);
+  const std::string whitted = "size 8 6\ncamera 0 0 5 0 0 0 0 1 0 45\nambient 0.2 0.4 0.6\nsphere 0 0 0 1\n";
+  writeFile(refs + "/ball.test", whitted);
+  ASSERT_EQ(runVkrt("-q --backend cpu -o " + refs + "/ball.png " + refs + "/ball.test").exitCode, 0);
+  writeFile(sub + "/ball.test", whitted + "integrator pathtracer\nspp 4\ngamma 2.2\n");
+  RunResult r = runVkrt("grade --backend cpu " + refs + " " + sub + "/ball.test -o " + dir + "/report");
+  const std::string json = readFile(dir + "/report/summary.json");
+  EXPECT_TRUE(contains(json, "\"thresholds\": \"any difference fails\"")) << r.output << json;
+  EXPECT_FALSE(contains(json, "max-bias-z")) << json;
+}
