@@ -17,14 +17,21 @@ constexpr int kFewestPixels = 8;
 struct SquareSums {
   int n = 0;
   double sum[3] = {0, 0, 0}, squares[3] = {0, 0, 0}, steps[3] = {0, 0, 0};
-  bool saturated[3] = {false, false, false};
+  int saturated[3] = {0, 0, 0};   // pixels with a byte of 255 in the channel
   // The sum of squared deviations from the square's own mean (never below 0 by rounding).
   double deviations(int c) const { return std::max(0.0, squares[c] - sum[c] * sum[c] / n); }
 };
 
-// z of a square's mean difference against its standard error (SquareBias::z).
-double zScore(double mean, double error, double tolerance, bool saturated) {
-  if (saturated && mean < 0) return 0;   // clamping darkens noise
+// How much light a pixel clamped at 255 may have lost, in multiples of 255 levels: a square
+// darker than its reference is excused when its clamped pixels could hold what it lacks at
+// that much each (a firefly of a few samples), not when one white pixel stands for a square of
+// black ones.
+constexpr double kClampedExcess = 8.0;
+
+// z of a square's mean difference against its standard error (SquareBias::z), over its `n`
+// pixels of which `saturated` are at 255.
+double zScore(double mean, double error, double tolerance, int n, int saturated) {
+  if (mean < 0 && -mean * n <= kClampedExcess * 255.0 * saturated) return 0;   // clamping darkens noise
   const double beyond = std::fabs(mean) - tolerance;
   if (beyond <= 0) return 0;
   return error > 0 ? beyond / error : std::numeric_limits<double>::infinity();
@@ -51,7 +58,7 @@ BiasTest biasTest(const Image& image, const Image& reference, double gamma, doub
         s.sum[c] += d;
         s.squares[c] += d * d;
         s.steps[c] += linear[b[c] + 1] - linear[b[c]];
-        s.saturated[c] = s.saturated[c] || a[c] == 255;
+        s.saturated[c] += a[c] == 255;
       }
     }
   BiasTest t;
@@ -77,8 +84,8 @@ BiasTest biasTest(const Image& image, const Image& reference, double gamma, doub
             freedom += around.n - 1;
           }
         const double variance = std::max(s.deviations(c) / (s.n - 1), freedom > 0 ? deviations / freedom : 0.0);
-        SquareBias b{square, c, s.sum[c] / s.n, std::sqrt(variance / s.n), 0, s.saturated[c]};
-        b.z = zScore(b.mean, b.standardError, kBiasToleranceSteps * s.steps[c] / s.n, b.saturated);
+        SquareBias b{square, c, s.sum[c] / s.n, std::sqrt(variance / s.n), 0, s.saturated[c] > 0};
+        b.z = zScore(b.mean, b.standardError, kBiasToleranceSteps * s.steps[c] / s.n, s.n, s.saturated[c]);
         if ((t.squares == 1 && c == 0) || b.z > t.worst.z) t.worst = b;
         if (b.z > maxZ) t.over.push_back(b);
       }

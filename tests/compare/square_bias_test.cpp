@@ -118,6 +118,25 @@ TEST(SquareBias, ClampingExcusesOnlyDarkness) {
   EXPECT_GT(biasTest(bright, ref).worst.z, kDefaultMaxBiasZ);
 }
 
+// Clamping can hide only so much: a square of black with one white pixel against a grey
+// reference of 128 (that pixel would have had to lose 127 times the brightest byte), or with
+// one in sixteen against 200 (11.5 times each), is no noisy render whose fireflies were
+// clamped, and fails; a square whose clamped pixels could hold what it lacks at a few times
+// 255 each, like the one above, is excused.
+TEST(SquareBias, ClampingDoesNotExcuseASquareOfBlackWithAWhiteDot) {
+  Image ref(16, 16), bright(16, 16), one(16, 16), sixteen(16, 16);
+  for (int i = 0; i < 256; ++i)
+    for (int c = 0; c < 3; ++c) {
+      ref.rgb[3 * i + c] = 128;
+      bright.rgb[3 * i + c] = 200;
+      one.rgb[3 * i + c] = static_cast<std::uint8_t>(i == 136 ? 255 : 0);
+      sixteen.rgb[3 * i + c] = static_cast<std::uint8_t>(i % 16 == 0 ? 255 : 0);
+    }
+  EXPECT_GT(biasTest(one, ref).worst.z, kDefaultMaxBiasZ);
+  EXPECT_GT(biasTest(sixteen, bright).worst.z, kDefaultMaxBiasZ);
+  EXPECT_TRUE(biasTest(sixteen, bright).worst.saturated);
+}
+
 TEST(SquareBias, RoundingOfAFlatColourIsNoBias) {
   // Half a step of rounding: z 0; a whole step and no noise at all (error 0): infinite.
   Image ref(32, 32), half(32, 32), whole(32, 32);
