@@ -18,6 +18,7 @@
 #include "image/pfm.h"
 #include "image/png.h"
 #include "image/ppm.h"
+#include "platform/file_status.h"
 #include "platform/path_text.h"
 #include "util/text.h"   // escapedBytes
 
@@ -375,6 +376,7 @@ Image readImage(const std::string& path) {
   readHead(source, sizeof source.head, path);
   if (isJpegHead(source.head, source.headSize)) return readJpeg(file.get(), source.head, source.headSize, path);
   checkPngHasPixels(source, path);
+  if (platform::isRegularFile(path)) checkPngInflatesToItsPixels(path);   // (a FIFO's bytes can be read once)
   int w = 0, h = 0, channels = 0;
   unsigned char* data = stbi_load_from_callbacks(&kStbCallbacks, &source, &w, &h, &channels, 3);
   if (!data) throw stbFailure(source, path);

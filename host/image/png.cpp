@@ -244,4 +244,67 @@ ImageRecords readPngText(const std::string& path) {
   return text;
 }
 
+void checkPngInflatesToItsPixels(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char head[8];
+  constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (!in.read(reinterpret_cast<char*>(head), 8) || std::memcmp(head, kSignature, 8) != 0) return;
+  auto bigEndian = [](const unsigned char* p) {
+    return std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | std::uint32_t{p[3]};
+  };
+  std::uint64_t bound = 0, width = 0, height = 0;   // 0 until IHDR
+  z_stream z{};
+  if (inflateInit(&z) != Z_OK) return;
+  struct End {
+    z_stream& z;
+    ~End() { inflateEnd(&z); }
+  } end{z};
+  std::vector<unsigned char> input(1 << 16), output(1 << 16);
+  std::uint64_t inflated = 0;
+  bool done = false;
+  for (unsigned char chunk[8]; !done && in.read(reinterpret_cast<char*>(chunk), 8);) {
+    std::uint64_t length = bigEndian(chunk);
+    const std::string type(reinterpret_cast<const char*>(chunk + 4), 4);
+    if (type == "IHDR" && length == 13) {
+      unsigned char h[13];
+      if (!in.read(reinterpret_cast<char*>(h), 13)) return;
+      width = bigEndian(h), height = bigEndian(h + 4);
+      const std::uint64_t depth = h[8];
+      const int channels[7] = {1, 0, 3, 1, 2, 0, 4};   // by colour type: grey, -, RGB, palette, grey+alpha, -, RGBA
+      const std::uint64_t perPixel = h[9] < 7 ? static_cast<std::uint64_t>(channels[h[9]]) : 4;
+      const std::uint64_t rowBytes = (width * perPixel * depth + 7) / 8;
+      // Each row's filter byte and bytes; Adam7 adds at most a filter byte and a partial byte
+      // per row of each of its 7 passes.
+      bound = height * (1 + rowBytes) + 14 * (height + 8) + 1024;
+      in.seekg(4, std::ios::cur);   // its CRC
+      continue;
+    }
+    if (type == "IEND") break;
+    if (type != "IDAT" || bound == 0) {
+      in.seekg(static_cast<std::streamoff>(length) + 4, std::ios::cur);
+      continue;
+    }
+    while (length > 0 && !done) {
+      const std::size_t take = static_cast<std::size_t>(std::min<std::uint64_t>(length, input.size()));
+      if (!in.read(reinterpret_cast<char*>(input.data()), static_cast<std::streamsize>(take))) return;
+      length -= take;
+      z.next_in = input.data();
+      z.avail_in = static_cast<uInt>(take);
+      while (z.avail_in > 0 && !done) {
+        z.next_out = output.data();
+        z.avail_out = static_cast<uInt>(output.size());
+        const int status = inflate(&z, Z_NO_FLUSH);
+        inflated += output.size() - z.avail_out;
+        if (inflated > bound)
+          throw imageReadError(path, "its compressed data inflates past the " + std::to_string(bound) + " bytes its " +
+                                         std::to_string(width) + "x" + std::to_string(height) +
+                                         " pixels take (a decompression bomb)");
+        if (status == Z_STREAM_END || (status != Z_OK && status != Z_BUF_ERROR)) done = true;
+        if (status == Z_BUF_ERROR && z.avail_out != 0) break;
+      }
+    }
+    in.seekg(4, std::ios::cur);   // its CRC
+  }
+}
+
 }  // namespace vkrt

@@ -63,6 +63,12 @@ std::string pngBytes(const RadianceImage& image, double gamma);
 std::unique_ptr<RowWriter> openPngRows(ByteSink& sink, int width, int height, const ImageRecords& records,
                                        const std::string& path);
 bool isPngFile(const std::string& path);
+// Throws IoError (imageReadError) when the PNG at `path` inflates to more bytes than its
+// header's pixels take (a row's filter byte and bytes, Adam7's passes allowed for): a decoder
+// would hold them all, and stb_image grows its buffer up to 2 GB for a 64x48 image with 2 GB of
+// zeros compressed behind it. Inflates into a small buffer, stopping past the bound; a file that
+// is not a PNG, or whose data is damaged, is left to the decoder to say so.
+void checkPngInflatesToItsPixels(const std::string& path);
 ImageRecords readPngText(const std::string& path);
 
 }  // namespace vkrt

@@ -53,27 +53,33 @@ std::string chunk(const std::string& type, const std::string& data) {
   return c;
 }
 
-// A real PNG bomb: `side` x `side` black RGB pixels, every row there, deflated to a few
-// hundred kilobytes (side 8000: 192 MB of pixels).
-std::string pngBomb(int side) {
+// A PNG of `width` x `height` RGB pixels whose compressed data inflates to `inflated` zero
+// bytes: its pixels' share (a real bomb: 8000x8000 black pixels, 192 MB, in about 200 KB), or
+// far more than they take (a small header with 256 MB of zeros behind it).
+std::string pngOf(int width, int height, std::uint64_t inflated) {
   std::string ihdr(13, '\0');
-  for (int i = 0; i < 4; ++i) ihdr[i] = ihdr[4 + i] = static_cast<char>(static_cast<std::uint32_t>(side) >> (24 - 8 * i));
+  for (int i = 0; i < 4; ++i) {
+    ihdr[i] = static_cast<char>(static_cast<std::uint32_t>(width) >> (24 - 8 * i));
+    ihdr[4 + i] = static_cast<char>(static_cast<std::uint32_t>(height) >> (24 - 8 * i));
+  }
   ihdr[8] = 8, ihdr[9] = 2;   // 8 bits, RGB
   z_stream z{};
   deflateInit(&z, 1);
-  const std::string row(1 + 3 * static_cast<std::size_t>(side), '\0');
-  std::string idat;
-  std::string out(1 << 16, '\0');
-  for (int y = 0; y <= side; ++y) {
-    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(row.data()));
-    z.avail_in = y < side ? static_cast<uInt>(row.size()) : 0;
-    const int flush = y < side ? Z_NO_FLUSH : Z_FINISH;
+  const std::string zeros(1 << 16, '\0');
+  std::string idat, out(1 << 16, '\0');
+  for (std::uint64_t left = inflated;;) {
+    const std::size_t take = static_cast<std::size_t>(std::min<std::uint64_t>(left, zeros.size()));
+    left -= take;
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(zeros.data()));
+    z.avail_in = static_cast<uInt>(take);
+    const int flush = left > 0 ? Z_NO_FLUSH : Z_FINISH;
     do {
       z.next_out = reinterpret_cast<Bytef*>(out.data());
       z.avail_out = static_cast<uInt>(out.size());
       deflate(&z, flush);
       idat.append(out.data(), out.size() - z.avail_out);
     } while (z.avail_out == 0);
+    if (left == 0) break;
   }
   deflateEnd(&z);
   return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", idat) + chunk("IEND", "");
@@ -142,7 +148,8 @@ TEST(GradeHostile, EverySubmissionFailsOnlyItsOwnSceneWithAReason) {
     writeBytes(huge, "");
     fs::resize_file(huge, std::uint64_t{2} << 30);
   }
-  writeBytes(student("bomb-png") + "/a.png", pngBomb(8000));
+  writeBytes(student("bomb-png") + "/a.png", pngOf(8000, 8000, 8000ull * (1 + 3 * 8000)));
+  writeBytes(student("bomb-idat") + "/a.png", pngOf(8, 6, std::uint64_t{256} << 20));
   writeBytes(student("bomb-ppm") + "/a.ppm", "P6\n60000 60000\n255\n" + std::string(100, '\0'));
   writeBytes(student("bomb-pfm") + "/a.pfm", "PF\n60000 60000\n-1.0\n" + std::string(100, '\0'));
   writeBytes(student("bomb-exr") + "/a.exr", exrBomb(dir, 60000));
@@ -172,6 +179,7 @@ TEST(GradeHostile, EverySubmissionFailsOnlyItsOwnSceneWithAReason) {
       {"many", "and 9995 more images of no scene; not graded"},
       {"huge", "is 2048 MB, longer than an image of the reference's size can be (64 MB); not read"},
       {"bomb-png", "the image is 8000x8000, the reference 8x6"},
+      {"bomb-idat", "its compressed data inflates past the 1370 bytes its 8x6 pixels take (a decompression bomb)"},
       {"bomb-ppm", "60000"},
       {"bomb-pfm", "60000"},
       {"bomb-exr", "cannot read image"},   // its line offsets, read for 60000 rows, end early
