@@ -247,11 +247,7 @@ ImageRecords readPngText(const std::string& path) {
 void checkPngInflatesToItsPixels(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   unsigned char head[8];
-  constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   if (!in.read(reinterpret_cast<char*>(head), 8) || std::memcmp(head, kSignature, 8) != 0) return;
-  auto bigEndian = [](const unsigned char* p) {
-    return std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | std::uint32_t{p[3]};
-  };
   std::uint64_t bound = 0, width = 0, height = 0;   // 0 until IHDR
   z_stream z{};
   if (inflateInit(&z) != Z_OK) return;
